@@ -1,0 +1,52 @@
+/**
+ * @class   vtkStylizeImageMetrics
+ * @brief   Strict image and buffer measurements for tests and studies.
+ *
+ * VTK 9.1's vtkImageDifference ignores per-channel differences below about 40% and tolerates
+ * shifts, so tone changes pass it unseen. These functions compare per pixel and per channel:
+ * - MaximumDifference(): largest absolute difference of any component (scalar units);
+ * - CountDifferences(): number of pixels with a component differing by more than a tolerance;
+ * - PSNR(): peak signal-to-noise ratio in dB for a given peak value (inf for equal images);
+ * - CountNonFinite(): number of NaN or infinite values in an array.
+ * Images must have the same dimensions and number of components; otherwise the functions return
+ * -1 (differences) or 0 (PSNR).
+ */
+
+#ifndef vtkStylizeImageMetrics_h
+#define vtkStylizeImageMetrics_h
+
+#include "vtkObject.h"
+#include "vtkStylizeFiltersModule.h" // for export macro
+
+class vtkDataArray;
+class vtkImageData;
+
+class VTKSTYLIZEFILTERS_EXPORT vtkStylizeImageMetrics : public vtkObject
+{
+public:
+  static vtkStylizeImageMetrics* New();
+  vtkTypeMacro(vtkStylizeImageMetrics, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Largest absolute difference of any component of the point scalars, or -1. */
+  static double MaximumDifference(vtkImageData* a, vtkImageData* b);
+
+  /** Number of pixels where some component differs by more than tolerance, or -1. */
+  static vtkIdType CountDifferences(vtkImageData* a, vtkImageData* b, double tolerance);
+
+  /** PSNR in dB over all components for the given peak value (255 for 8-bit images). */
+  static double PSNR(vtkImageData* a, vtkImageData* b, double peak);
+
+  /** Number of NaN or infinite values among all components of the array. */
+  static vtkIdType CountNonFinite(vtkDataArray* array);
+
+protected:
+  vtkStylizeImageMetrics() = default;
+  ~vtkStylizeImageMetrics() override = default;
+
+private:
+  vtkStylizeImageMetrics(const vtkStylizeImageMetrics&) = delete;
+  void operator=(const vtkStylizeImageMetrics&) = delete;
+};
+
+#endif

@@ -1,0 +1,15 @@
+// VTK Stylize: copies the G-buffer's colour and depth into the output framebuffer.
+uniform sampler2D stylizeColorTexture;
+uniform sampler2D stylizeDepthTexture;
+uniform int stylizeDiscardBackground; // 1 for layered renderers: keep the layer below
+
+void stylizeComposite()
+{
+  float depth = texture(stylizeDepthTexture, texCoord).r;
+  if (stylizeDiscardBackground == 1 && depth >= 1.0)
+  {
+    discard;
+  }
+  gl_FragData[0] = texture(stylizeColorTexture, texCoord);
+  gl_FragDepth = depth;
+}

@@ -1,0 +1,139 @@
+// VTK Stylize lighting models: declarations (replaces //VTK::Light::Dec).
+//
+// Lights live in a texture buffer, four RGBA32F texels per enabled vtkLight, in view coordinates:
+//   texel 4i+0: colour * intensity (rgb), positional flag (a: 0 or 1)
+//   texel 4i+1: direction the light shines along, unit (xyz), cone angle in degrees (a)
+//   texel 4i+2: position (xyz), spot exponent (a)
+//   texel 4i+3: attenuation constant, linear, quadratic (xyz), unused (a)
+// so the shader is the same for 0, 1 or 1000 lights and is never rebuilt when the count changes.
+uniform samplerBuffer stylizeLights;
+uniform int stylizeLightCount;      // number of enabled lights, >= 0
+uniform int stylizeHeadlightOnly;   // 1 when VTK would use its single-headlight shortcut
+uniform int stylizeModel;           // 0 Standard, 1 Comic, 2 PixelArt
+// Comic (ALGORITHMS.md section 2)
+uniform float stylizeSubjectFactor; // p1 in [0, 1]
+uniform float stylizeLevelsNear;    // gray levels at the near end of the depth range, [0, 100]
+uniform float stylizeLevelsFar;     // gray levels at the far end, [0, 100]
+uniform float stylizeSpecularGain;  // specular multiplier, [0, 100]
+uniform vec2 stylizeDepthRange;     // view depth mapped to 0 and 1 for the level interpolation
+// Pixel art (ALGORITHMS.md section 1)
+uniform float stylizeScattering;    // s in [0, 1]; diffuse scaled by sqrt(s)
+uniform float stylizeOcclusion;     // M in [0, 1]; specular occlusion factor
+
+struct stylizeLight
+{
+  vec3 color;     // colour times intensity
+  vec3 L;         // unit vector from the surface point to the light
+  vec3 incident;  // unit vector from the light to the point (VTK's vertLightDirectionVC)
+  float atten;    // distance attenuation times spot falloff (1 for directional lights)
+};
+
+// Fetches light i and evaluates direction and attenuation at view-space point P exactly as
+// VTK 9.1's vtkOpenGLPolyDataMapper does for positional, spot and directional lights.
+stylizeLight stylizeFetchLight(int i, vec3 P)
+{
+  vec4 t0 = texelFetch(stylizeLights, 4 * i);
+  vec4 t1 = texelFetch(stylizeLights, 4 * i + 1);
+  stylizeLight l;
+  l.color = t0.rgb;
+  l.atten = 1.0;
+  if (t0.a < 0.5)
+  {
+    l.incident = t1.xyz;
+  }
+  else
+  {
+    vec4 t2 = texelFetch(stylizeLights, 4 * i + 2);
+    vec4 t3 = texelFetch(stylizeLights, 4 * i + 3);
+    vec3 d = P - t2.xyz;
+    float dist = length(d);
+    l.incident = stylizeSafeNormalize(d, t1.xyz);
+    float denom = t3.x + t3.y * dist + t3.z * dist * dist;
+    l.atten = denom > 0.0 ? 1.0 / denom : 0.0;
+    if (t1.w < 90.0)
+    {
+      float coneDot = dot(l.incident, t1.xyz);
+      l.atten = coneDot >= cos(radians(t1.w)) ? l.atten * stylizeSafePow(coneDot, t2.w) : 0.0;
+    }
+  }
+  l.L = -l.incident;
+  return l;
+}
+
+// VTK's own Phong model, term for term (vtkOpenGLPolyDataMapper::ReplaceShaderLight, 9.1).
+vec3 stylizeStandard(vec3 N, vec3 P, vec3 ambientC, vec3 diffuseC, vec3 specularC, float specPow)
+{
+  if (stylizeLightCount == 0)
+  {
+    return ambientC + diffuseC; // VTK renders unlit when no light is on
+  }
+  if (stylizeHeadlightOnly == 1)
+  {
+    vec3 lc = texelFetch(stylizeLights, 0).rgb;
+    float df = max(0.0, N.z);
+    float sf = stylizeSafePow(df, specPow);
+    return ambientC + df * diffuseC * lc + sf * specularC * lc;
+  }
+  vec3 V = stylizeSafeNormalize(-P, vec3(0.0, 0.0, 1.0));
+  vec3 diffuse = vec3(0.0);
+  vec3 specular = vec3(0.0);
+  for (int i = 0; i < stylizeLightCount; ++i)
+  {
+    stylizeLight l = stylizeFetchLight(i, P);
+    float df = max(0.0, l.atten * dot(N, l.L));
+    diffuse += df * l.color;
+    float sf = sign(df) * l.atten * stylizeSafePow(max(0.0, dot(reflect(l.incident, N), V)), specPow);
+    specular += sf * l.color;
+  }
+  return ambientC + diffuse * diffuseC + specular * specularC;
+}
+
+// Comic model: La = p1 + I - 2 p1 I; Ld = floor(pd kd D) / pmax with pd interpolated from near to
+// far depth and D the summed light (Ip max(0, N.L)); Blinn-Phong specular times a gain.
+vec3 stylizeComic(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 specularC,
+  float specPow, float ka, float kd)
+{
+  float I = clamp(ka, 0.0, 1.0);
+  float p1 = stylizeSubjectFactor;
+  float La = p1 + I - 2.0 * p1 * I;
+  vec3 diffuseBase = kd > 1e-6 ? diffuseC / kd : vec3(0.0);
+  vec3 ambientBase = ka > 1e-6 ? ambientC / ka : diffuseBase;
+
+  float span = stylizeDepthRange.y - stylizeDepthRange.x;
+  float t = span > 0.0 ? clamp((-P.z - stylizeDepthRange.x) / span, 0.0, 1.0) : 0.0;
+  float pd = mix(stylizeLevelsNear, stylizeLevelsFar, t);
+  float pmax = max(max(stylizeLevelsNear, stylizeLevelsFar), 1.0);
+
+  vec3 D = vec3(0.0);
+  vec3 S = vec3(0.0);
+  for (int i = 0; i < stylizeLightCount; ++i)
+  {
+    stylizeLight l = stylizeFetchLight(i, P);
+    float ndl = dot(N, l.L);
+    D += l.color * (l.atten * max(0.0, ndl));
+    vec3 H = stylizeSafeNormalize(l.L + V, N);
+    S += l.color * (l.atten * step(0.0, ndl) * stylizeSafePow(max(0.0, dot(N, H)), specPow));
+  }
+  float Dmax = max(D.r, max(D.g, D.b));
+  float q = floor(pd * kd * Dmax) / pmax;
+  vec3 tint = Dmax > 0.0 ? D / Dmax : vec3(0.0);
+  return La * ambientBase + q * tint * diffuseBase + stylizeSpecularGain * S * specularC;
+}
+
+// Pixel-art model: Ld = sqrt(s) kd I att max(0, N.L); Ls = M ks Ip max(0, N.H)^beta.
+// att is VTK's attenuation 1/(a0 + a1 r + a2 r^2): 1/r^2 for (0,0,1), 1 for directional lights.
+vec3 stylizePixelArt(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 specularC,
+  float specPow)
+{
+  vec3 D = vec3(0.0);
+  vec3 S = vec3(0.0);
+  for (int i = 0; i < stylizeLightCount; ++i)
+  {
+    stylizeLight l = stylizeFetchLight(i, P);
+    float ndl = dot(N, l.L);
+    D += l.color * (l.atten * max(0.0, ndl));
+    vec3 H = stylizeSafeNormalize(l.L + V, N);
+    S += l.color * (l.atten * step(0.0, ndl) * stylizeSafePow(max(0.0, dot(N, H)), specPow));
+  }
+  return ambientC + sqrt(stylizeScattering) * D * diffuseC + stylizeOcclusion * S * specularC;
+}

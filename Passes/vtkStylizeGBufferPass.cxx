@@ -1,0 +1,603 @@
+#include "vtkStylizeGBufferPass.h"
+
+#include "vtkCamera.h"
+#include "vtkCameraPass.h"
+#include "vtkFloatArray.h"
+#include "vtkLightsPass.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpaquePass.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLState.h"
+#include "vtkOverlayPass.h"
+#include "vtkProp3D.h"
+#include "vtkRenderPassCollection.h"
+#include "vtkRenderState.h"
+#include "vtkSequencePass.h"
+#include "vtkShaderProgram.h"
+#include "vtkStylizeLightingPass.h"
+#include "vtkStylizeShaderUtilities.h"
+#include "vtkTextureObject.h"
+#include "vtkTranslucentPass.h"
+#include "vtkVolumetricPass.h"
+#include "vtk_glew.h"
+
+#include "vtkStylizeCompositeFS.h"
+#include "vtkStylizeGBufferImpl.h"
+
+#include <sstream>
+
+namespace
+{
+const char* const GBufferTag = "//VTK::StylizeGBuffer::Impl";
+
+/**
+ * First step inside the camera pass: clears what vtkRenderer::Clear() leaves alone in the
+ * G-buffer (extra attachments; the colour of layered renderers; everything when the renderer
+ * does not erase), so no value of an earlier frame survives.
+ */
+class vtkStylizeGBufferClearPass : public vtkRenderPass
+{
+public:
+  static vtkStylizeGBufferClearPass* New();
+  vtkTypeMacro(vtkStylizeGBufferClearPass, vtkRenderPass);
+  void Render(const vtkRenderState* s) override
+  {
+    vtkRenderer* ren = s->GetRenderer();
+    vtkOpenGLRenderWindow* win = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+    vtkOpenGLState* ostate = win->GetState();
+    const bool erased = ren->GetRenderWindow()->GetErase() && ren->GetErase();
+    const GLfloat zero[4] = { 0.f, 0.f, 0.f, 0.f };
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (ren->Transparent() || !erased)
+    {
+      glClearBufferfv(GL_COLOR, 0, zero);
+    }
+    if (!erased)
+    {
+      const GLfloat one = 1.f;
+      ostate->vtkglDepthMask(GL_TRUE);
+      glClearBufferfv(GL_DEPTH, 0, &one);
+    }
+    for (unsigned int i = 1; i < this->Attachments; ++i)
+    {
+      glClearBufferfv(GL_COLOR, static_cast<GLint>(i), zero);
+    }
+  }
+  unsigned int Attachments = 1;
+
+protected:
+  vtkStylizeGBufferClearPass() = default;
+  ~vtkStylizeGBufferClearPass() override = default;
+};
+vtkStandardNewMacro(vtkStylizeGBufferClearPass);
+}
+
+class vtkStylizeGBufferPass::vtkInternals
+{
+public:
+  vtkNew<vtkStylizeGBufferClearPass> ClearPass;
+  vtkStylizeShaderUtilities::ScreenQuad CompositeQuad;
+  vtkNew<vtkMatrix4x4> InverseView;
+  vtkNew<vtkMatrix4x4> InverseModel;
+  vtkNew<vtkMatrix4x4> Product;
+};
+
+vtkStandardNewMacro(vtkStylizeGBufferPass);
+vtkCxxSetObjectMacro(vtkStylizeGBufferPass, LightingPass, vtkStylizeLightingPass);
+
+//------------------------------------------------------------------------------
+vtkStylizeGBufferPass::vtkStylizeGBufferPass()
+  : Internals(new vtkInternals)
+{
+  this->GeometryCameraPass = vtkCameraPass::New();
+  this->GeometrySequence = vtkSequencePass::New();
+  vtkNew<vtkRenderPassCollection> geometry;
+  vtkNew<vtkLightsPass> lights;
+  vtkNew<vtkOpaquePass> opaque;
+  geometry->AddItem(this->Internals->ClearPass);
+  geometry->AddItem(lights);
+  geometry->AddItem(opaque);
+  this->GeometrySequence->SetPasses(geometry);
+  this->GeometryCameraPass->SetDelegatePass(this->GeometrySequence);
+
+  this->AfterSequence = vtkSequencePass::New();
+  vtkNew<vtkRenderPassCollection> after;
+  vtkNew<vtkTranslucentPass> translucent;
+  vtkNew<vtkVolumetricPass> volumetric;
+  after->AddItem(translucent);
+  after->AddItem(volumetric);
+  this->AfterSequence->SetPasses(after);
+  this->OverlayPass = vtkOverlayPass::New();
+  this->ShaderStageTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeGBufferPass::~vtkStylizeGBufferPass()
+{
+  this->SetLightingPass(nullptr);
+  this->FreeTextures(nullptr);
+  this->GeometryCameraPass->Delete();
+  this->GeometrySequence->Delete();
+  this->AfterSequence->Delete();
+  this->OverlayPass->Delete();
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Channels: " << ((this->Channels & NORMAL) ? "normal " : "")
+     << ((this->Channels & POSITION) ? "position" : "") << "\n";
+  os << indent << "PositionSpace: " << (this->PositionSpace == VIEW ? "view" : "object") << "\n";
+  os << indent << "Viewport: " << this->Viewport[0] << " " << this->Viewport[1] << " "
+     << this->Viewport[2] << " " << this->Viewport[3] << "\n";
+  os << indent << "LightingPass: " << (this->LightingPass ? "set" : "(none: VTK lighting)")
+     << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int w, int h)
+{
+  auto make = [&](vtkTextureObject*& tex, int internalFormat, bool isDepth) {
+    if (tex && tex->GetContext() != renWin)
+    {
+      tex->Delete();
+      tex = nullptr;
+    }
+    if (!tex)
+    {
+      tex = vtkTextureObject::New();
+      tex->SetContext(renWin);
+      tex->SetMinificationFilter(vtkTextureObject::Nearest);
+      tex->SetMagnificationFilter(vtkTextureObject::Nearest);
+      tex->SetWrapS(vtkTextureObject::ClampToEdge);
+      tex->SetWrapT(vtkTextureObject::ClampToEdge);
+      if (isDepth)
+      {
+        tex->AllocateDepth(w, h, vtkTextureObject::Float32);
+      }
+      else
+      {
+        tex->SetInternalFormat(internalFormat);
+        tex->SetFormat(GL_RGBA);
+        tex->SetDataType(GL_FLOAT);
+        tex->Allocate2D(w, h, 4, VTK_FLOAT);
+      }
+    }
+    else
+    {
+      tex->Resize(w, h);
+    }
+  };
+  auto drop = [&](vtkTextureObject*& tex) {
+    if (tex)
+    {
+      tex->ReleaseGraphicsResources(renWin);
+      tex->Delete();
+      tex = nullptr;
+    }
+  };
+  make(this->ColorTexture, GL_RGBA16F, false);
+  make(this->DepthTexture, 0, true);
+  if (this->Channels & NORMAL)
+  {
+    make(this->NormalTexture, GL_RGBA16F, false);
+  }
+  else
+  {
+    drop(this->NormalTexture);
+  }
+  if (this->Channels & POSITION)
+  {
+    make(this->PositionTexture, GL_RGBA32F, false);
+  }
+  else
+  {
+    drop(this->PositionTexture);
+  }
+  if (!this->FrameBufferObject)
+  {
+    this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
+    this->FrameBufferObject->SetContext(renWin);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::FreeTextures(vtkWindow* w)
+{
+  for (vtkTextureObject** tex :
+    { &this->ColorTexture, &this->NormalTexture, &this->PositionTexture, &this->DepthTexture })
+  {
+    if (*tex)
+    {
+      if (w)
+      {
+        (*tex)->ReleaseGraphicsResources(w);
+      }
+      (*tex)->Delete();
+      *tex = nullptr;
+    }
+  }
+  if (this->FrameBufferObject)
+  {
+    if (w)
+    {
+      this->FrameBufferObject->ReleaseGraphicsResources(w);
+    }
+    this->FrameBufferObject->Delete();
+    this->FrameBufferObject = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!renWin)
+  {
+    return false;
+  }
+  int w, h, x, y;
+  ren->GetTiledSizeAndOrigin(&w, &h, &x, &y);
+  this->Viewport[0] = x;
+  this->Viewport[1] = y;
+  this->Viewport[2] = w;
+  this->Viewport[3] = h;
+  if (w < 1 || h < 1)
+  {
+    return false;
+  }
+  if (this->Channels != this->BuiltChannels || this->PositionSpace != this->BuiltPositionSpace)
+  {
+    this->BuiltChannels = this->Channels;
+    this->BuiltPositionSpace = this->PositionSpace;
+    this->ShaderStageTime.Modified();
+  }
+  this->AllocateTextures(renWin, w, h);
+
+  vtkOpenGLFramebufferObject* fbo = this->FrameBufferObject;
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  const unsigned int n = 1 + (this->NormalTexture ? 1 : 0) + (this->PositionTexture ? 1 : 0);
+  if (n != this->NumberOfAttachments)
+  {
+    fbo->RemoveColorAttachments(4); // the channel set changed: drop the old attachments
+  }
+  unsigned int index = 0;
+  fbo->AddColorAttachment(index++, this->ColorTexture);
+  if (this->NormalTexture)
+  {
+    fbo->AddColorAttachment(index++, this->NormalTexture);
+  }
+  if (this->PositionTexture)
+  {
+    fbo->AddColorAttachment(index++, this->PositionTexture);
+  }
+  this->NumberOfAttachments = n;
+  this->Internals->ClearPass->Attachments = n;
+  fbo->AddDepthAttachment(this->DepthTexture);
+  fbo->ActivateDrawBuffers(n);
+  fbo->StartNonOrtho(w, h);
+
+  vtkMatrix4x4::Invert(
+    ren->GetActiveCamera()->GetModelViewTransformMatrix(), this->Internals->InverseView);
+
+  vtkRenderState sfbo(ren);
+  sfbo.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+  sfbo.SetFrameBuffer(fbo);
+  sfbo.SetRequiredKeys(s->GetRequiredKeys());
+
+  this->PreRender(&sfbo);
+  if (this->LightingPass)
+  {
+    this->LightingPass->RenderWithLighting(&sfbo, this->GeometryCameraPass);
+  }
+  else
+  {
+    this->GeometryCameraPass->Render(&sfbo);
+  }
+  this->NumberOfRenderedProps += this->GeometryCameraPass->GetNumberOfRenderedProps();
+  this->PostRender(&sfbo);
+
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+  vtkOpenGLCheckErrorMacro("failed after vtkStylizeGBufferPass::RenderGeometry");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::CompositeToOutput(const vtkRenderState* s)
+{
+  vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!renWin || !this->ColorTexture || this->Viewport[2] < 1 || this->Viewport[3] < 1)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkShaderProgram* program =
+    this->Internals->CompositeQuad.Prepare(renWin, vtkStylizeCompositeFS, "  stylizeComposite();\n");
+  if (!program)
+  {
+    vtkErrorMacro("Could not build the G-buffer composite shader.");
+    return;
+  }
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  ostate->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
+  ostate->vtkglScissor(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+  this->ColorTexture->Activate();
+  this->DepthTexture->Activate();
+  program->SetUniformi("stylizeColorTexture", this->ColorTexture->GetTextureUnit());
+  program->SetUniformi("stylizeDepthTexture", this->DepthTexture->GetTextureUnit());
+  program->SetUniformi("stylizeDiscardBackground", ren->Transparent() ? 1 : 0);
+  this->Internals->CompositeQuad.Render();
+  this->DepthTexture->Deactivate();
+  this->ColorTexture->Deactivate();
+  vtkOpenGLCheckErrorMacro("failed after vtkStylizeGBufferPass::CompositeToOutput");
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::RenderAfterGeometry(const vtkRenderState* s)
+{
+  vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!renWin)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  int w, h, x, y;
+  ren->GetTiledSizeAndOrigin(&w, &h, &x, &y);
+  ostate->vtkglViewport(x, y, w, h);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  ostate->vtkglScissor(x, y, w, h);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_LEQUAL);
+
+  if (this->LightingPass)
+  {
+    this->LightingPass->RenderWithLighting(s, this->AfterSequence);
+  }
+  else
+  {
+    this->AfterSequence->Render(s);
+  }
+  this->NumberOfRenderedProps += this->AfterSequence->GetNumberOfRenderedProps();
+  this->OverlayPass->Render(s);
+  this->NumberOfRenderedProps += this->OverlayPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::Render(const vtkRenderState* s)
+{
+  int rendered = 0;
+  if (this->RenderGeometry(s))
+  {
+    rendered = this->NumberOfRenderedProps;
+    this->CompositeToOutput(s);
+  }
+  this->RenderAfterGeometry(s);
+  this->NumberOfRenderedProps += rendered;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::DownloadChannel(int buffer, vtkFloatArray* out)
+{
+  vtkTextureObject* tex = nullptr;
+  switch (buffer)
+  {
+    case COLOR_BUFFER:
+      tex = this->ColorTexture;
+      break;
+    case NORMAL_BUFFER:
+      tex = this->NormalTexture;
+      break;
+    case POSITION_BUFFER:
+      tex = this->PositionTexture;
+      break;
+    case DEPTH_BUFFER:
+      tex = this->DepthTexture;
+      break;
+    default:
+      break;
+  }
+  if (!tex || !out || !this->FrameBufferObject)
+  {
+    return false;
+  }
+  const int w = static_cast<int>(tex->GetWidth());
+  const int h = static_cast<int>(tex->GetHeight());
+  const int comps = buffer == DEPTH_BUFFER ? 1 : 4;
+  out->SetNumberOfComponents(comps);
+  out->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+
+  vtkOpenGLFramebufferObject* fbo = this->FrameBufferObject;
+  fbo->SaveCurrentBindingsAndBuffers(GL_READ_FRAMEBUFFER);
+  fbo->Bind(GL_READ_FRAMEBUFFER);
+  if (buffer == DEPTH_BUFFER)
+  {
+    glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, out->GetPointer(0));
+  }
+  else
+  {
+    unsigned int index = 0;
+    if (buffer == NORMAL_BUFFER)
+    {
+      index = 1;
+    }
+    else if (buffer == POSITION_BUFFER)
+    {
+      index = this->NormalTexture ? 2 : 1;
+    }
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + index);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, out->GetPointer(0));
+  }
+  fbo->UnBind(GL_READ_FRAMEBUFFER);
+  fbo->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  this->Internals->CompositeQuad.Release(w);
+  this->FreeTextures(w);
+  this->GeometryCameraPass->ReleaseGraphicsResources(w);
+  this->AfterSequence->ReleaseGraphicsResources(w);
+  this->OverlayPass->ReleaseGraphicsResources(w);
+  if (this->LightingPass)
+  {
+    this->LightingPass->ReleaseGraphicsResources(w);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkStylizeGBufferPass::GetShaderStageMTime()
+{
+  return this->ShaderStageTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+      std::string("//VTK::Light::Impl\n  ") + GBufferTag, false);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  if (fragmentShader.find(GBufferTag) == std::string::npos)
+  {
+    return true;
+  }
+  const bool surface = fragmentShader.find("normalVCVSOutput") != std::string::npos &&
+    fragmentShader.find("vec4 vertexVC =") != std::string::npos;
+  // The lighting pass (when it shades this shader) defines stylizeN, the normal it used.
+  const bool stylizeLit =
+    surface && fragmentShader.find("//VTK::StylizeLight::Impl") != std::string::npos;
+  std::string normalValue, positionValue;
+  if (this->Channels & NORMAL)
+  {
+    if (!surface)
+    {
+      normalValue = "vec4(0.0)";
+    }
+    else if (stylizeLit)
+    {
+      normalValue = "vec4(stylizeN, 1.0)";
+    }
+    else
+    {
+      vtkStylizeShaderUtilities::InjectCommon(fragmentShader);
+      normalValue = "vec4(stylizeShadingNormal(normalVCVSOutput, stylizeFaceN, "
+                    "cameraParallel == 1 ? vec3(0.0, 0.0, 1.0) : -vertexVC.xyz), 1.0)";
+    }
+  }
+  if (this->Channels & POSITION)
+  {
+    if (!surface)
+    {
+      positionValue = "vec4(0.0)";
+    }
+    else if (this->PositionSpace == OBJECT)
+    {
+      vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
+        "//VTK::System::Dec\nuniform mat4 stylizeVCToMC;\n", false);
+      positionValue = "vec4((stylizeVCToMC * vec4(vertexVC.xyz, 1.0)).xyz, 1.0)";
+    }
+    else
+    {
+      positionValue = "vec4(vertexVC.xyz, 1.0)";
+    }
+  }
+  // Keep the template's line for each allocated channel, with its literal attachment index.
+  std::istringstream lines(vtkStylizeGBufferImpl);
+  std::string line, code;
+  int index = 1;
+  while (std::getline(lines, line))
+  {
+    if (line.find("NORMAL_INDEX") != std::string::npos)
+    {
+      if (normalValue.empty())
+      {
+        continue;
+      }
+      vtkShaderProgram::Substitute(line, "NORMAL_INDEX", std::to_string(index++));
+      vtkShaderProgram::Substitute(line, "NORMAL_VALUE", normalValue);
+    }
+    else if (line.find("POSITION_INDEX") != std::string::npos)
+    {
+      if (positionValue.empty())
+      {
+        continue;
+      }
+      vtkShaderProgram::Substitute(line, "POSITION_INDEX", std::to_string(index++));
+      vtkShaderProgram::Substitute(line, "POSITION_VALUE", positionValue);
+    }
+    code += line + "\n";
+  }
+  vtkShaderProgram::Substitute(fragmentShader, GBufferTag, code);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  if (!this->FrameBufferObject)
+  {
+    return true;
+  }
+  if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    this->FrameBufferObject->ActivateDrawBuffers(this->NumberOfAttachments);
+  }
+  else
+  {
+    this->FrameBufferObject->ActivateDrawBuffers(1);
+  }
+  if (program->IsUniformUsed("stylizeVCToMC"))
+  {
+    // view -> world (inverse camera view) -> model (inverse prop matrix), in double precision
+    vtkMatrix4x4* m = this->Internals->Product;
+    m->DeepCopy(this->Internals->InverseView);
+    vtkProp3D* p3 = vtkProp3D::SafeDownCast(prop);
+    if (p3)
+    {
+      vtkMatrix4x4::Invert(p3->GetMatrix(), this->Internals->InverseModel);
+      vtkMatrix4x4::Multiply4x4(this->Internals->InverseModel, m, m);
+    }
+    m->Transpose(); // vtkShaderProgram uploads row-major data as GLSL columns
+    program->SetUniformMatrix("stylizeVCToMC", m);
+  }
+  return true;
+}

@@ -1,0 +1,194 @@
+/**
+ * @class   vtkStylizeGBufferPass
+ * @brief   The shared G-buffer: renders the scene's opaque geometry once into the buffers a
+ *          style needs, then composites it back with its depth.
+ *
+ * In the manner of vtkSSAOPass, the pass renders the opaque geometry into a framebuffer object
+ * whose attachments are only those asked for:
+ *
+ * | channel  | always? | texture                | content                                         |
+ * |----------|---------|------------------------|-------------------------------------------------|
+ * | colour   | yes     | RGBA16F                | the lit colour (background where no geometry)   |
+ * | depth    | yes     | DEPTH32F               | window-space depth, 1 on the background         |
+ * | NORMAL   | request | RGBA16F                | view-space unit shading normal, a = 1 on surfaces|
+ * | POSITION | request | RGBA32F                | view- or object-space position, a = 1 on surfaces|
+ *
+ * Alpha 0 in the normal and position channels marks the background and primitives that have no
+ * surface normal (unlit lines and points). The normal is the one the lighting model shaded with:
+ * zero-length or NaN normals are replaced by the facet normal, so the buffer holds no NaN.
+ *
+ * Render() renders, in order: (1) the opaque geometry into the G-buffer with the lighting pass
+ * (when LightingPass is set; VTK's lighting otherwise), (2) a full-screen quad that writes the
+ * colour and the depth (gl_FragDepth) into the output framebuffer at the renderer's viewport,
+ * (3) the translucent geometry and volumes, lit by the same lighting pass, and (4) the 2D
+ * overlay (text, scalar bars), which is never stylized. Style passes call RenderGeometry(),
+ * process the textures, write their image and depth, then call RenderAfterGeometry().
+ *
+ * Renderers that do not start at the window origin, several renderers, layered renderers
+ * (the background of a layer above 0 is left transparent), tiled rendering
+ * (vtkWindowToImageFilter with a scale) and window resizes are handled. ReleaseGraphicsResources()
+ * frees every texture, the framebuffer and the quad.
+ *
+ * @sa vtkStylizeLightingPass
+ */
+
+#ifndef vtkStylizeGBufferPass_h
+#define vtkStylizeGBufferPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkStylizePassesModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkCameraPass;
+class vtkFloatArray;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkRenderPass;
+class vtkSequencePass;
+class vtkStylizeLightingPass;
+class vtkTextureObject;
+
+class VTKSTYLIZEPASSES_EXPORT vtkStylizeGBufferPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkStylizeGBufferPass* New();
+  vtkTypeMacro(vtkStylizeGBufferPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Optional channels (bit mask). Colour and depth are always allocated. */
+  enum ChannelBits
+  {
+    NORMAL = 1,
+    POSITION = 2
+  };
+
+  /** Buffers that DownloadChannel() can read back. */
+  enum Buffers
+  {
+    COLOR_BUFFER = 0,
+    NORMAL_BUFFER = 1,
+    POSITION_BUFFER = 2,
+    DEPTH_BUFFER = 3
+  };
+
+  /** Spaces for the POSITION channel. */
+  enum PositionSpaces
+  {
+    VIEW = 0,
+    OBJECT = 1
+  };
+
+  ///@{
+  /**
+   * Bit mask of the optional channels to allocate and write (NORMAL, POSITION). Only these are
+   * allocated. Default 0: colour and depth only.
+   */
+  vtkSetClampMacro(Channels, int, 0, NORMAL | POSITION);
+  vtkGetMacro(Channels, int);
+  ///@}
+
+  ///@{
+  /**
+   * Space of the POSITION channel: VIEW (camera coordinates, the default) or OBJECT (each
+   * actor's model coordinates, for textures that stick to the surface).
+   */
+  vtkSetClampMacro(PositionSpace, int, VIEW, OBJECT);
+  vtkGetMacro(PositionSpace, int);
+  ///@}
+
+  ///@{
+  /**
+   * The lighting pass used for the geometry. Default nullptr: VTK's own lighting.
+   * Only its lighting settings are used; its delegate is ignored.
+   */
+  vtkGetObjectMacro(LightingPass, vtkStylizeLightingPass);
+  virtual void SetLightingPass(vtkStylizeLightingPass* pass);
+  ///@}
+
+  /** Geometry, composite, translucent geometry and volumes, overlay. */
+  void Render(const vtkRenderState* s) override;
+
+  /**
+   * Renders the opaque geometry into the G-buffer. Returns false when nothing could be rendered
+   * (zero-sized viewport). Leaves the output framebuffer bound as it was.
+   */
+  bool RenderGeometry(const vtkRenderState* s);
+
+  /** Writes the G-buffer's colour and depth into the output framebuffer at the viewport. */
+  void CompositeToOutput(const vtkRenderState* s);
+
+  /**
+   * Renders translucent geometry and volumes (lit by the lighting pass, depth-tested against the
+   * composited depth), then the 2D overlay, into the output framebuffer.
+   */
+  void RenderAfterGeometry(const vtkRenderState* s);
+
+  ///@{
+  /** The G-buffer textures of the last frame (nullptr for channels not allocated). */
+  vtkGetObjectMacro(ColorTexture, vtkTextureObject);
+  vtkGetObjectMacro(NormalTexture, vtkTextureObject);
+  vtkGetObjectMacro(PositionTexture, vtkTextureObject);
+  vtkGetObjectMacro(DepthTexture, vtkTextureObject);
+  ///@}
+
+  /** Size (width, height) and origin (x, y) in the window of the last frame's viewport. */
+  vtkGetVector4Macro(Viewport, int);
+
+  /**
+   * Reads a buffer of the last frame back as floats (4 components per pixel for colour, normal
+   * and position, 1 for depth), rows bottom to top. The window's context must be current, as it
+   * is right after a render. Returns false when the channel was not allocated.
+   */
+  bool DownloadChannel(int buffer, vtkFloatArray* out);
+
+  /** Frees all textures, the framebuffer, the quad and the internal passes' resources. */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /** vtkOpenGLRenderPass shader hooks: write the requested channels after lighting. */
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+  ///@}
+
+protected:
+  vtkStylizeGBufferPass();
+  ~vtkStylizeGBufferPass() override;
+
+  void AllocateTextures(vtkOpenGLRenderWindow* renWin, int w, int h);
+  void FreeTextures(vtkWindow* w);
+
+  int Channels = 0;
+  int PositionSpace = VIEW;
+  int Viewport[4] = { 0, 0, 0, 0 };
+  unsigned int NumberOfAttachments = 1;
+  vtkTimeStamp ShaderStageTime;
+  int BuiltChannels = -1;
+  int BuiltPositionSpace = -1;
+
+  vtkStylizeLightingPass* LightingPass = nullptr;
+  vtkCameraPass* GeometryCameraPass = nullptr;
+  vtkSequencePass* GeometrySequence = nullptr;
+  vtkSequencePass* AfterSequence = nullptr;
+  vtkRenderPass* OverlayPass = nullptr;
+
+  vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
+  vtkTextureObject* ColorTexture = nullptr;
+  vtkTextureObject* NormalTexture = nullptr;
+  vtkTextureObject* PositionTexture = nullptr;
+  vtkTextureObject* DepthTexture = nullptr;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+
+private:
+  vtkStylizeGBufferPass(const vtkStylizeGBufferPass&) = delete;
+  void operator=(const vtkStylizeGBufferPass&) = delete;
+};
+
+#endif

@@ -1,0 +1,248 @@
+/**
+ * @class   vtkStylizeLightingPass
+ * @brief   Replaces VTK's lighting with a selectable model (Standard, Comic, PixelArt).
+ *
+ * vtkStylizeLightingPass is a vtkOpenGLRenderPass. For every vtkOpenGLPolyDataMapper its delegate
+ * renders, it replaces the `//VTK::Light::Dec` and `//VTK::Light::Impl` parts of the fragment
+ * shader with one of three lighting models:
+ *
+ * - **Standard**: VTK's own Phong model, term for term, so the image equals VTK's to within
+ *   rounding (headlight shortcut, directional, positional and spot lights, attenuation, cone).
+ * - **Comic** (ALGORITHMS.md section 2): ambient `La = p1 + I - 2 p1 I` where I is the
+ *   property's ambient coefficient and p1 the subject factor; diffuse quantized as
+ *   `floor(pd * kd * D) / pmax`, where D is the summed `Ip max(0, N.L)` of the lights, pd varies
+ *   linearly from GrayLevelsNear at the near end of the visible depth range to GrayLevelsFar at
+ *   the far end and pmax = max(GrayLevelsNear, GrayLevelsFar, 1); Blinn-Phong specular times
+ *   SpecularGain.
+ * - **PixelArt** (ALGORITHMS.md section 1): `sqrt(s) kd I att max(0, N.L)` diffuse and
+ *   `M ks Ip max(0, N.H)^beta` specular, with att VTK's attenuation `1/(a0 + a1 r + a2 r^2)`
+ *   (1/r^2 for attenuation (0,0,1), 1 for directional lights).
+ *
+ * It uses the renderer's own vtkLight objects (headlight, camera and scene lights; directional,
+ * positional and spot; colour, intensity, attenuation, cone angle, exponent). The enabled lights
+ * are packed into a texture buffer each frame, four RGBA32F texels per light, so the shader does
+ * not depend on the number of lights: 0, 1, 100 or 1000 lights use the same compiled program and
+ * never hit uniform limits. GetMaximumNumberOfLights() tells the implementation's limit.
+ *
+ * With no enabled light (and the renderer's automatic light creation off), Standard renders
+ * unlit as VTK does, Comic renders its ambient term La and PixelArt the plain ambient term.
+ * Actors with lighting off, and lines or points without normals, stay unlit as in VTK. Actors
+ * with PBR interpolation keep VTK's physically based lighting.
+ *
+ * Per-actor settings: the Comic parameters (subject factor, gray levels near and far, specular
+ * gain) may be set for one actor with the information keys SUBJECT_FACTOR(),
+ * GRAY_LEVELS_NEAR(), GRAY_LEVELS_FAR() and SPECULAR_GAIN() in the actor's property keys; the
+ * static helpers SetActorSubjectFactor() etc. do this and clamp the value. An actor without a
+ * key uses the pass's value.
+ *
+ * No setting and no scene makes the pass produce NaN or Inf: normals that are zero-length or
+ * NaN fall back to the facet normal, pow(0, 0) is defined as 1, attenuation with a zero
+ * denominator gives 0, and the result is clamped to [0, 1] like an 8-bit framebuffer.
+ *
+ * Usage:
+ * @code
+ * vtkNew<vtkStylizeLightingPass> lighting;
+ * lighting->SetModelToComic();
+ * renderer->SetPass(lighting); // the delegate defaults to a vtkRenderStepsPass
+ * vtkStylizeLightingPass::SetActorSubjectFactor(subjectActor, 0.8);
+ * @endcode
+ *
+ * @sa vtkStylizeGBufferPass
+ */
+
+#ifndef vtkStylizeLightingPass_h
+#define vtkStylizeLightingPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkStylizePassesModule.h" // for export macro
+
+#include <vector> // for std::vector
+
+class vtkInformationDoubleKey;
+class vtkLight;
+class vtkOpenGLBufferObject;
+class vtkOpenGLRenderWindow;
+class vtkProp;
+class vtkRenderer;
+class vtkTextureObject;
+
+class VTKSTYLIZEPASSES_EXPORT vtkStylizeLightingPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkStylizeLightingPass* New();
+  vtkTypeMacro(vtkStylizeLightingPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The lighting models. */
+  enum Models
+  {
+    STANDARD = 0,
+    COMIC = 1,
+    PIXEL_ART = 2
+  };
+
+  ///@{
+  /**
+   * The lighting model, one of STANDARD, COMIC and PIXEL_ART. Default STANDARD.
+   * Changing it does not rebuild any shader (it is a uniform).
+   */
+  vtkSetClampMacro(Model, int, STANDARD, PIXEL_ART);
+  vtkGetMacro(Model, int);
+  void SetModelToStandard() { this->SetModel(STANDARD); }
+  void SetModelToComic() { this->SetModel(COMIC); }
+  void SetModelToPixelArt() { this->SetModel(PIXEL_ART); }
+  ///@}
+
+  /** Name of a model ("standard", "comic", "pixelart"), or nullptr when out of range. */
+  static const char* GetModelName(int model);
+  /** Model for a name as GetModelName() spells it (case-insensitive), or -1. */
+  static int GetModelFromName(const char* name);
+
+  ///@{
+  /**
+   * The pass that renders the scene. Default: nullptr, in which case a vtkRenderStepsPass is
+   * created on first use.
+   */
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  virtual void SetDelegatePass(vtkRenderPass* delegatePass);
+  ///@}
+
+  ///@{
+  /**
+   * Comic: subject factor p1 of the ambient term `La = p1 + I - 2 p1 I`, dimensionless, in
+   * [0, 1]. 0 gives La = I (ordinary ambient), 1 gives La = 1 - I (the subject responds inversely
+   * to ambient light). Default 0. Per actor: SUBJECT_FACTOR().
+   */
+  vtkSetClampMacro(SubjectFactor, double, 0.0, 1.0);
+  vtkGetMacro(SubjectFactor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Comic: number of gray levels pd of the quantized diffuse term at the near end (GrayLevelsNear)
+   * and the far end (GrayLevelsFar) of the visible depth range, in [0, 100]; pd varies linearly
+   * in between. 0 gives black diffuse. Defaults 4 and 2. Per actor: GRAY_LEVELS_NEAR(),
+   * GRAY_LEVELS_FAR().
+   */
+  vtkSetClampMacro(GrayLevelsNear, double, 0.0, 100.0);
+  vtkGetMacro(GrayLevelsNear, double);
+  vtkSetClampMacro(GrayLevelsFar, double, 0.0, 100.0);
+  vtkGetMacro(GrayLevelsFar, double);
+  ///@}
+
+  ///@{
+  /**
+   * Comic: gain applied to the Blinn-Phong specular term, dimensionless, in [0, 100].
+   * Default 1.5. Per actor: SPECULAR_GAIN().
+   */
+  vtkSetClampMacro(SpecularGain, double, 0.0, 100.0);
+  vtkGetMacro(SpecularGain, double);
+  ///@}
+
+  ///@{
+  /**
+   * PixelArt: scattering degree s of the lights, in [0, 1]; the diffuse term is scaled by
+   * sqrt(s). The paper finds [0.5, 1] useful. Default 1.
+   */
+  vtkSetClampMacro(Scattering, double, 0.0, 1.0);
+  vtkGetMacro(Scattering, double);
+  ///@}
+
+  ///@{
+  /**
+   * PixelArt: specular occlusion factor M, in [0, 1], a constant for the whole scene (the paper's
+   * M darkens surfaces blocked by neighbours; a screen-space estimate is left to the style pass).
+   * Default 1.
+   */
+  vtkSetClampMacro(SpecularOcclusion, double, 0.0, 1.0);
+  vtkGetMacro(SpecularOcclusion, double);
+  ///@}
+
+  ///@{
+  /**
+   * Per-actor Comic settings, stored in vtkProp::GetPropertyKeys(). Values outside the ranges of
+   * the corresponding pass settings are clamped when used.
+   */
+  static vtkInformationDoubleKey* SUBJECT_FACTOR();
+  static vtkInformationDoubleKey* GRAY_LEVELS_NEAR();
+  static vtkInformationDoubleKey* GRAY_LEVELS_FAR();
+  static vtkInformationDoubleKey* SPECULAR_GAIN();
+  ///@}
+
+  ///@{
+  /**
+   * Set (with clamping) or remove the per-actor Comic settings of a prop. The prop's property
+   * keys are created when it has none.
+   */
+  static void SetActorSubjectFactor(vtkProp* prop, double p1);
+  static void SetActorGrayLevels(vtkProp* prop, double levelsNear, double levelsFar);
+  static void SetActorSpecularGain(vtkProp* prop, double gain);
+  static void RemoveActorSettings(vtkProp* prop);
+  ///@}
+
+  /** Number of enabled lights packed for the last frame. */
+  vtkGetMacro(NumberOfLights, int);
+
+  /**
+   * The largest number of lights the OpenGL implementation can hold (GL_MAX_TEXTURE_BUFFER_SIZE
+   * / 4), or -1 before the first render. Lights beyond it are ignored with a warning.
+   */
+  vtkGetMacro(MaximumNumberOfLights, int);
+
+  /** Renders the delegate with the lighting model. */
+  void Render(const vtkRenderState* s) override;
+
+  /**
+   * Renders an arbitrary pass with the lighting model: packs the lights, installs the shader
+   * hooks on the props of @p s, renders @p delegate and removes the hooks. Used by
+   * vtkStylizeGBufferPass and the style passes to light only some of the render steps.
+   */
+  void RenderWithLighting(const vtkRenderState* s, vtkRenderPass* delegate);
+
+  /** Frees the light buffer and the delegate's resources. */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /** vtkOpenGLRenderPass shader hooks. */
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  ///@}
+
+protected:
+  vtkStylizeLightingPass();
+  ~vtkStylizeLightingPass() override;
+
+  /** Packs the renderer's enabled lights in view coordinates and uploads them when changed. */
+  void UploadLights(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin);
+
+  vtkRenderPass* DelegatePass = nullptr;
+  int Model = STANDARD;
+  double SubjectFactor = 0.0;
+  double GrayLevelsNear = 4.0;
+  double GrayLevelsFar = 2.0;
+  double SpecularGain = 1.5;
+  double Scattering = 1.0;
+  double SpecularOcclusion = 1.0;
+
+  int NumberOfLights = 0;
+  int MaximumNumberOfLights = -1;
+  int HeadlightOnly = 0;
+  double DepthRange[2] = { 0.0, 1.0 };
+
+  vtkOpenGLBufferObject* LightBuffer = nullptr;
+  vtkTextureObject* LightTexture = nullptr;
+  unsigned int LightTextureTexels = 0;
+  std::vector<float> LightData;
+  vtkMTimeType LightSignature = 0;
+  vtkLight* CarrierLight = nullptr;
+
+private:
+  vtkStylizeLightingPass(const vtkStylizeLightingPass&) = delete;
+  void operator=(const vtkStylizeLightingPass&) = delete;
+};
+
+#endif
