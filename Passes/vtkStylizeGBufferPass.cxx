@@ -133,6 +133,7 @@ void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Channels: " << ((this->Channels & NORMAL) ? "normal " : "")
      << ((this->Channels & POSITION) ? "position" : "") << "\n";
+  os << indent << "Precision: " << (this->Precision == FULL ? "full" : "half") << "\n";
   os << indent << "PositionSpace: " << (this->PositionSpace == VIEW ? "view" : "object") << "\n";
   os << indent << "Viewport: " << this->Viewport[0] << " " << this->Viewport[1] << " "
      << this->Viewport[2] << " " << this->Viewport[3] << "\n";
@@ -143,8 +144,11 @@ void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int w, int h)
 {
+  const bool precisionChanged = this->AllocatedPrecision != this->Precision;
+  this->AllocatedPrecision = this->Precision;
+  const int colorFormat = this->Precision == FULL ? GL_RGBA32F : GL_RGBA16F;
   auto make = [&](vtkTextureObject*& tex, int internalFormat, bool isDepth) {
-    if (tex && tex->GetContext() != renWin)
+    if (tex && (tex->GetContext() != renWin || (!isDepth && precisionChanged)))
     {
       tex->Delete();
       tex = nullptr;
@@ -182,11 +186,11 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
       tex = nullptr;
     }
   };
-  make(this->ColorTexture, GL_RGBA16F, false);
+  make(this->ColorTexture, colorFormat, false);
   make(this->DepthTexture, 0, true);
   if (this->Channels & NORMAL)
   {
-    make(this->NormalTexture, GL_RGBA16F, false);
+    make(this->NormalTexture, colorFormat, false);
   }
   else
   {

@@ -8,9 +8,9 @@
  *
  * | channel  | always? | texture                | content                                         |
  * |----------|---------|------------------------|-------------------------------------------------|
- * | colour   | yes     | RGBA16F                | the lit colour (background where no geometry)   |
+ * | colour   | yes     | RGBA16F (or 32F)       | the lit colour (background where no geometry)   |
  * | depth    | yes     | DEPTH32F               | window-space depth, 1 on the background         |
- * | NORMAL   | request | RGBA16F                | view-space unit shading normal, a = 1 on surfaces|
+ * | NORMAL   | request | RGBA16F (or 32F)       | view-space unit shading normal, a = 1 on surfaces|
  * | POSITION | request | RGBA32F                | view- or object-space position, a = 1 on surfaces|
  *
  * Alpha 0 in the normal and position channels marks the background and primitives that have no
@@ -84,7 +84,7 @@ public:
    * Bit mask of the optional channels to allocate and write (NORMAL, POSITION). Only these are
    * allocated. Default 0: colour and depth only.
    */
-  vtkSetClampMacro(Channels, int, 0, NORMAL | POSITION);
+  vtkSetClampMacro(Channels, int, 0, (NORMAL | POSITION));
   vtkGetMacro(Channels, int);
   ///@}
 
@@ -95,6 +95,23 @@ public:
    */
   vtkSetClampMacro(PositionSpace, int, VIEW, OBJECT);
   vtkGetMacro(PositionSpace, int);
+  ///@}
+
+  /** Precision of the colour and normal channels. */
+  enum Precisions
+  {
+    HALF = 0,
+    FULL = 1
+  };
+
+  ///@{
+  /**
+   * Precision of the colour and normal textures: HALF (RGBA16F, the default: about 3 decimal
+   * digits, enough for 8-bit output) or FULL (RGBA32F: for measurement and numeric tests, at
+   * twice the memory traffic). Positions are always RGBA32F and depth DEPTH32F.
+   */
+  vtkSetClampMacro(Precision, int, HALF, FULL);
+  vtkGetMacro(Precision, int);
   ///@}
 
   ///@{
@@ -165,6 +182,8 @@ protected:
 
   int Channels = 0;
   int PositionSpace = VIEW;
+  int Precision = HALF;
+  int AllocatedPrecision = -1;
   int Viewport[4] = { 0, 0, 0, 0 };
   unsigned int NumberOfAttachments = 1;
   vtkTimeStamp ShaderStageTime;

@@ -1,0 +1,213 @@
+// The shared G-buffer: only requested channels are allocated; depth is written back so that
+// translucent geometry composites correctly; 2D actors stay crisp; renderers off the window
+// origin, several renderers, layered renderers, resizing and tiled (magnified) screenshots work;
+// ReleaseGraphicsResources frees everything; destroying the window prints nothing.
+#include "vtkConeSource.h"
+#include "vtkOutputWindow.h"
+#include "vtkPlaneSource.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkStringOutputWindow.h"
+#include "vtkStylizeGBufferPass.h"
+#include "vtkStylizeLightingPass.h"
+#include "vtkStylizeTestUtilities.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkTextureObject.h"
+
+using namespace stylizetest;
+
+namespace
+{
+void AddTranslucentAndText(vtkRenderer* ren)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-3, -1.5, 0.2);
+  plane->SetPoint1(3, -1.5, 0.2);
+  plane->SetPoint2(-3, 1.5, 0.4);
+  vtkNew<vtkPolyDataMapper> pm;
+  pm->SetInputConnection(plane->GetOutputPort());
+  vtkNew<vtkActor> pa;
+  pa->SetMapper(pm);
+  pa->GetProperty()->SetColor(0.2, 0.5, 1.0);
+  pa->GetProperty()->SetOpacity(0.5);
+  ren->AddActor(pa);
+  vtkNew<vtkTextActor> text;
+  text->SetInput("G-buffer 2D text");
+  text->GetTextProperty()->SetFontSize(18);
+  text->GetTextProperty()->SetColor(1, 1, 0);
+  text->SetPosition(8, 8);
+  ren->AddActor2D(text);
+}
+
+enum Mode
+{
+  PLAIN,   // VTK's default rendering
+  GBUFFER, // vtkStylizeGBufferPass with the Standard lighting model
+};
+
+void Configure(vtkRenderer* ren, Mode mode)
+{
+  if (mode == GBUFFER)
+  {
+    vtkNew<vtkStylizeLightingPass> lighting;
+    vtkNew<vtkStylizeGBufferPass> gbuffer;
+    gbuffer->SetLightingPass(lighting);
+    gbuffer->SetChannels(vtkStylizeGBufferPass::NORMAL);
+    ren->SetPass(gbuffer);
+  }
+}
+
+vtkSmartPointer<vtkImageData> TranslucentScene(Mode mode)
+{
+  auto win = MakeWindow(300, 200);
+  vtkNew<vtkRenderer> ren;
+  win->AddRenderer(ren);
+  ren->SetBackground(0.1, 0.1, 0.15);
+  AddTestActors(ren);
+  AddTranslucentAndText(ren);
+  PlaceCamera(ren, 1.0, 0, 15, 12.0);
+  Configure(ren, mode);
+  win->Render();
+  auto img = Capture(win);
+  win->Finalize();
+  return img;
+}
+
+vtkSmartPointer<vtkImageData> TwoViewports(Mode mode, bool layered, int resizeTo[2] = nullptr,
+  int magnification = 1)
+{
+  auto win = MakeWindow(320, 200);
+  vtkNew<vtkRenderer> left, right;
+  win->AddRenderer(left);
+  win->AddRenderer(right);
+  left->SetBackground(0.2, 0.1, 0.1);
+  right->SetBackground(0.1, 0.2, 0.1);
+  AddTestActors(left);
+  vtkNew<vtkConeSource> cone;
+  cone->SetResolution(40);
+  vtkNew<vtkPolyDataMapper> cm;
+  cm->SetInputConnection(cone->GetOutputPort());
+  vtkNew<vtkActor> ca;
+  ca->SetMapper(cm);
+  ca->GetProperty()->SetColor(0.4, 0.8, 1.0);
+  right->AddActor(ca);
+  if (layered)
+  {
+    // A full-window overlay layer with its own geometry above the first renderer.
+    win->SetNumberOfLayers(2);
+    left->SetViewport(0, 0, 1, 1);
+    right->SetViewport(0, 0, 1, 1);
+    right->SetLayer(1);
+  }
+  else
+  {
+    left->SetViewport(0, 0, 0.55, 1);
+    right->SetViewport(0.55, 0.2, 1, 0.9);
+  }
+  PlaceCamera(left, 1.0, 0, 0, 16.0);
+  PlaceCamera(right, 1.0, 40, 0, 3.7, 0.0);
+  Configure(left, mode);
+  Configure(right, mode);
+  win->Render();
+  if (resizeTo)
+  {
+    win->SetSize(resizeTo[0], resizeTo[1]);
+    win->Render();
+  }
+  auto img = Capture(win, magnification);
+  win->Finalize();
+  return img;
+}
+}
+
+int TestGBuffer(int, char*[])
+{
+  // Translucent geometry over the composited depth, and 2D text, equal to VTK's rendering.
+  StrictCompare(TranslucentScene(GBUFFER), TranslucentScene(PLAIN), 2, 0.0, 2,
+    "translucent plane and 2D text");
+  // Renderers off the window origin, several renderers.
+  {
+    auto g = TwoViewports(GBUFFER, false);
+    auto p = TwoViewports(PLAIN, false);
+    if (!StrictCompare(g, p, 2, 0.0, 2, "two renderers, one off the origin"))
+    {
+      WritePNG(g, "gbuffer-two-renderers.png");
+      WritePNG(p, "plain-two-renderers.png");
+    }
+  }
+  // Layered renderers: the upper layer's background stays transparent.
+  StrictCompare(TwoViewports(GBUFFER, true), TwoViewports(PLAIN, true), 2, 0.0, 2,
+    "layered renderers");
+  // Resizing between frames.
+  int size[2] = { 210, 260 };
+  StrictCompare(TwoViewports(GBUFFER, false, size), TwoViewports(PLAIN, false, size), 2, 0.0, 2,
+    "resized window");
+  // Tiled rendering (vtkWindowToImageFilter magnification 3): no seams.
+  StrictCompare(TwoViewports(GBUFFER, false, nullptr, 3), TwoViewports(PLAIN, false, nullptr, 3),
+    2, 0.0, 2, "magnified x3 (tiled)");
+
+  // Only the requested channels are allocated; ReleaseGraphicsResources frees everything;
+  // destroying the window prints no error.
+  vtkNew<vtkStringOutputWindow> messages;
+  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+  vtkOutputWindow::SetInstance(messages);
+  {
+    auto win = MakeWindow(160, 120);
+    vtkNew<vtkRenderer> ren;
+    win->AddRenderer(ren);
+    AddTestActors(ren);
+    PlaceCamera(ren);
+    vtkNew<vtkStylizeLightingPass> lighting;
+    vtkNew<vtkStylizeGBufferPass> gbuffer;
+    gbuffer->SetLightingPass(lighting);
+    ren->SetPass(gbuffer);
+    win->Render();
+    STYLIZE_CHECK(gbuffer->GetColorTexture() && gbuffer->GetDepthTexture(), "colour/depth missing");
+    STYLIZE_CHECK(!gbuffer->GetNormalTexture() && !gbuffer->GetPositionTexture(),
+      "channels allocated that nobody asked for");
+    gbuffer->SetChannels(vtkStylizeGBufferPass::NORMAL);
+    win->Render();
+    STYLIZE_CHECK(gbuffer->GetNormalTexture() && !gbuffer->GetPositionTexture(),
+      "NORMAL only: wrong channels");
+    gbuffer->SetChannels(vtkStylizeGBufferPass::POSITION);
+    win->Render();
+    STYLIZE_CHECK(!gbuffer->GetNormalTexture() && gbuffer->GetPositionTexture(),
+      "POSITION only: wrong channels");
+    vtkNew<vtkFloatArray> pos;
+    STYLIZE_CHECK(gbuffer->DownloadChannel(vtkStylizeGBufferPass::POSITION_BUFFER, pos),
+      "position download");
+    STYLIZE_CHECK(!gbuffer->DownloadChannel(vtkStylizeGBufferPass::NORMAL_BUFFER, pos),
+      "a normal download succeeded without a normal channel");
+    gbuffer->ReleaseGraphicsResources(win);
+    STYLIZE_CHECK(!gbuffer->GetColorTexture() && !gbuffer->GetDepthTexture() &&
+        !gbuffer->GetPositionTexture(),
+      "ReleaseGraphicsResources left textures");
+    win->Render(); // works again after a release
+    STYLIZE_CHECK(gbuffer->GetColorTexture() != nullptr, "no render after release");
+    // Object-space positions: independent of the camera.
+    gbuffer->SetPositionSpace(vtkStylizeGBufferPass::OBJECT);
+    win->Render();
+    win->Finalize();
+  }
+  {
+    // The pass outliving its window, and a window destroyed without Finalize.
+    vtkNew<vtkStylizeGBufferPass> gbuffer;
+    vtkNew<vtkStylizeLightingPass> lighting;
+    gbuffer->SetLightingPass(lighting);
+    gbuffer->SetChannels(3);
+    {
+      auto win = MakeWindow(100, 80);
+      vtkNew<vtkRenderer> ren;
+      win->AddRenderer(ren);
+      AddTestActors(ren);
+      PlaceCamera(ren);
+      ren->SetPass(gbuffer);
+      win->Render();
+    }
+  }
+  vtkOutputWindow::SetInstance(previous);
+  std::printf("messages printed while releasing and destroying: \"%s\"\n",
+    messages->GetOutput().c_str());
+  STYLIZE_CHECK(messages->GetOutput().empty(), "messages: %s", messages->GetOutput().c_str());
+  return stylizetest::Failures == 0 ? 0 : 1;
+}

@@ -1,0 +1,48 @@
+// Test driver: `vtkStylizeCxxTests NAME [args]` runs one test function.
+#include <cstdio>
+#include <cstring>
+
+int TestLightingRegression(int argc, char* argv[]);
+int TestStandardMatchesVTK(int argc, char* argv[]);
+int TestLightCountNoRebuild(int argc, char* argv[]);
+int TestLightingReference(int argc, char* argv[]);
+int TestLightingExtremes(int argc, char* argv[]);
+int TestGBuffer(int argc, char* argv[]);
+
+namespace
+{
+struct Entry
+{
+  const char* Name;
+  int (*Function)(int, char*[]);
+};
+const Entry Tests[] = {
+  { "TestLightingRegression", TestLightingRegression },
+  { "TestStandardMatchesVTK", TestStandardMatchesVTK },
+  { "TestLightCountNoRebuild", TestLightCountNoRebuild },
+  { "TestLightingReference", TestLightingReference },
+  { "TestLightingExtremes", TestLightingExtremes },
+  { "TestGBuffer", TestGBuffer },
+};
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc >= 2)
+  {
+    for (const Entry& e : Tests)
+    {
+      if (std::strcmp(argv[1], e.Name) == 0)
+      {
+        return e.Function(argc - 1, argv + 1);
+      }
+    }
+  }
+  std::fprintf(stderr, "usage: %s TEST [args]; tests:", argv[0]);
+  for (const Entry& e : Tests)
+  {
+    std::fprintf(stderr, " %s", e.Name);
+  }
+  std::fprintf(stderr, "\n");
+  return 2;
+}
