@@ -1,0 +1,65 @@
+# Shared by scripts/demo.sh and scripts/test.sh: installs what is missing (Debian 12, apt,
+# non-interactive, idempotent), starts Xvfb when there is no display, configures and builds.
+set -euo pipefail
+
+STYLIZE_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+STYLIZE_BUILD="${STYLIZE_BUILD:-$STYLIZE_ROOT/build}"
+STYLIZE_JOBS="${STYLIZE_JOBS:-$(nproc)}"
+
+# Debian packages the build, the tests and the demo need.
+STYLIZE_PACKAGES=(cmake make g++ libvtk9-dev python3-vtk9 python3-dev libglm-dev xvfb xauth x11-utils
+  libgl1-mesa-dri)
+
+stylize_install_dependencies() {
+  local missing=()
+  local pkg
+  for pkg in "${STYLIZE_PACKAGES[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$pkg")
+    fi
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    echo "== dependencies: all installed"
+    return 0
+  fi
+  echo "== installing: ${missing[*]}"
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    sudo="sudo"
+  fi
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+}
+
+# Starts Xvfb on a free display unless DISPLAY already works; stops it on exit.
+stylize_start_display() {
+  if [ -n "${DISPLAY:-}" ] && xdpyinfo >/dev/null 2>&1; then
+    echo "== display: using DISPLAY=$DISPLAY"
+    return 0
+  fi
+  local n
+  for n in $(seq 90 140); do
+    if [ ! -e "/tmp/.X${n}-lock" ] && [ ! -e "/tmp/.X11-unix/X${n}" ]; then
+      Xvfb ":$n" -screen 0 1920x1080x24 -nolisten tcp >/dev/null 2>&1 &
+      STYLIZE_XVFB_PID=$!
+      export DISPLAY=":$n"
+      trap 'kill "$STYLIZE_XVFB_PID" 2>/dev/null || true' EXIT
+      local i
+      for i in $(seq 1 50); do
+        [ -e "/tmp/.X11-unix/X${n}" ] && break
+        sleep 0.1
+      done
+      echo "== display: started Xvfb on DISPLAY=$DISPLAY"
+      return 0
+    fi
+  done
+  echo "no free X display number found" >&2
+  return 1
+}
+
+stylize_build() {
+  echo "== configuring and building in $STYLIZE_BUILD"
+  cmake -S "$STYLIZE_ROOT" -B "$STYLIZE_BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$STYLIZE_BUILD" -j "$STYLIZE_JOBS"
+}
