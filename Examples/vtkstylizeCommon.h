@@ -1,0 +1,64 @@
+/**
+ * Shared by the parts of vtkstylize: the error type that carries the exit status and the single
+ * stderr line, string helpers, and the capture of VTK's own messages.
+ *
+ * Every failure is thrown as a CliError; main() prints "vtkstylize: <Message>" and exits with
+ * Code. VTK's messages go to a capturing vtkOutputWindow; CheckVTKErrors() turns the first
+ * relevant error since ClearVTKErrors() into a failure.
+ */
+
+#ifndef vtkstylizeCommon_h
+#define vtkstylizeCommon_h
+
+#include <cstddef>
+#include <string>
+
+namespace vtkstylize
+{
+constexpr int ExitUsage = 2;   // bad option, option value or INPUT extension
+constexpr int ExitFailure = 1; // input, rendering or output error
+
+/** Thrown for every failure. */
+struct CliError
+{
+  int Code;
+  std::string Message;
+};
+
+/** Throws a CliError with ExitUsage. */
+[[noreturn]] void UsageError(const std::string& message);
+
+/** Throws a CliError with ExitFailure. */
+[[noreturn]] void Fail(const std::string& message);
+
+/** 'text' */
+std::string Quote(const std::string& text);
+
+/** Collapses whitespace runs (newlines included) to single spaces; cuts to maxLength. */
+std::string OneLine(const std::string& text, std::size_t maxLength = 240);
+
+std::string Lower(std::string text);
+
+/** %g formatting. */
+std::string FormatNumber(double value);
+
+/**
+ * Installs the output window that captures VTK's messages. When echoDescriptor >= 0 every
+ * message is also written there as it arrives.
+ */
+void InstallMessageCapture(int echoDescriptor);
+
+/** Restores VTK's default output window. */
+void RemoveMessageCapture();
+
+/** Forgets the messages captured so far. */
+void ClearVTKErrors();
+
+/**
+ * Throws Fail(what + ": " + message) when VTK reported a failure since the last
+ * ClearVTKErrors(): an error, or a warning that says "error".
+ */
+void CheckVTKErrors(const std::string& what);
+}
+
+#endif

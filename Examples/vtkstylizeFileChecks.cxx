@@ -1,0 +1,717 @@
+#include "vtkstylizeFileChecks.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace vtkstylize
+{
+namespace
+{
+/** Sequential reader over a FILE* with a large buffer, for binary and line-oriented parsing. */
+class FileReader
+{
+public:
+  explicit FileReader(const std::string& path)
+    : File(std::fopen(path.c_str(), "rb"))
+  {
+  }
+  ~FileReader()
+  {
+    if (this->File)
+    {
+      std::fclose(this->File);
+    }
+  }
+  FileReader(const FileReader&) = delete;
+  FileReader& operator=(const FileReader&) = delete;
+
+  bool IsOpen() const { return this->File != nullptr; }
+
+  long long Size()
+  {
+    const long pos = std::ftell(this->File);
+    std::fseek(this->File, 0, SEEK_END);
+    const long long size = std::ftell(this->File);
+    std::fseek(this->File, pos, SEEK_SET);
+    return size;
+  }
+
+  /** Reads n bytes; false at end of file. */
+  bool Read(void* out, std::size_t n)
+  {
+    char* dst = static_cast<char*>(out);
+    while (n > 0)
+    {
+      if (this->Pos == this->End && !this->Fill())
+      {
+        return false;
+      }
+      const std::size_t k = std::min(n, this->End - this->Pos);
+      std::memcpy(dst, this->Buffer.data() + this->Pos, k);
+      this->Pos += k;
+      this->Offset += k;
+      dst += k;
+      n -= k;
+    }
+    return true;
+  }
+
+  /** Skips n bytes; false when the file ends first. */
+  bool Skip(long long n)
+  {
+    const long long buffered = static_cast<long long>(this->End - this->Pos);
+    if (n <= buffered)
+    {
+      this->Pos += static_cast<std::size_t>(n);
+      this->Offset += n;
+      return true;
+    }
+    n -= buffered;
+    this->Offset += buffered;
+    this->Pos = this->End = 0;
+    const long long here = std::ftell(this->File);
+    if (std::fseek(this->File, 0, SEEK_END) != 0)
+    {
+      return false;
+    }
+    const long long size = std::ftell(this->File);
+    if (here + n > size)
+    {
+      return false;
+    }
+    std::fseek(this->File, here + n, SEEK_SET);
+    this->Offset += n;
+    return true;
+  }
+
+  /** Reads one line without its end-of-line characters; false at end of file. */
+  bool GetLine(std::string& line)
+  {
+    line.clear();
+    bool any = false;
+    while (true)
+    {
+      if (this->Pos == this->End && !this->Fill())
+      {
+        return any;
+      }
+      any = true;
+      const char c = this->Buffer[this->Pos++];
+      ++this->Offset;
+      if (c == '\n')
+      {
+        break;
+      }
+      line += c;
+    }
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    return true;
+  }
+
+  long long GetOffset() const { return this->Offset; }
+
+private:
+  bool Fill()
+  {
+    this->Buffer.resize(1 << 20);
+    this->Pos = 0;
+    this->End = std::fread(this->Buffer.data(), 1, this->Buffer.size(), this->File);
+    return this->End > 0;
+  }
+
+  std::FILE* File;
+  std::vector<char> Buffer;
+  std::size_t Pos = 0;
+  std::size_t End = 0;
+  long long Offset = 0;
+};
+
+std::vector<std::string> Words(const std::string& line)
+{
+  std::vector<std::string> words;
+  std::istringstream in(line);
+  std::string w;
+  while (in >> w)
+  {
+    words.push_back(w);
+  }
+  return words;
+}
+
+bool ParseInteger(const std::string& s, long long& v)
+{
+  if (s.empty())
+  {
+    return false;
+  }
+  errno = 0;
+  char* end = nullptr;
+  v = std::strtoll(s.c_str(), &end, 10);
+  return errno == 0 && end == s.c_str() + s.size();
+}
+
+bool ParseReal(const std::string& s)
+{
+  if (s.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size();
+}
+
+//------------------------------------------------------------------------------
+// PLY
+//------------------------------------------------------------------------------
+
+/** Size in bytes of a PLY scalar type, 0 when unknown. */
+int PLYTypeSize(const std::string& t)
+{
+  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
+  {
+    return 1;
+  }
+  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
+  {
+    return 2;
+  }
+  if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" ||
+    t == "float32")
+  {
+    return 4;
+  }
+  if (t == "double" || t == "float64")
+  {
+    return 8;
+  }
+  return 0;
+}
+
+bool PLYTypeIsReal(const std::string& t)
+{
+  return t == "float" || t == "float32" || t == "double" || t == "float64";
+}
+
+struct PLYProperty
+{
+  std::string Name;
+  std::string Type;      // scalar type, or item type of a list
+  std::string CountType; // empty: not a list
+};
+
+struct PLYElement
+{
+  std::string Name;
+  long long Count = 0;
+  std::vector<PLYProperty> Properties;
+};
+
+/** Reads a binary PLY value of the given type as a double. */
+bool ReadBinaryValue(FileReader& in, const std::string& type, bool bigEndian, double& value)
+{
+  const int size = PLYTypeSize(type);
+  unsigned char bytes[8];
+  if (!in.Read(bytes, static_cast<std::size_t>(size)))
+  {
+    return false;
+  }
+  const std::uint16_t one = 1;
+  const bool hostBig = *reinterpret_cast<const unsigned char*>(&one) == 0;
+  if (hostBig != bigEndian)
+  {
+    for (int i = 0; i < size / 2; ++i)
+    {
+      std::swap(bytes[i], bytes[size - 1 - i]);
+    }
+  }
+  if (type == "char" || type == "int8")
+  {
+    value = static_cast<std::int8_t>(bytes[0]);
+  }
+  else if (type == "uchar" || type == "uint8")
+  {
+    value = bytes[0];
+  }
+  else if (type == "short" || type == "int16")
+  {
+    std::int16_t v;
+    std::memcpy(&v, bytes, 2);
+    value = v;
+  }
+  else if (type == "ushort" || type == "uint16")
+  {
+    std::uint16_t v;
+    std::memcpy(&v, bytes, 2);
+    value = v;
+  }
+  else if (type == "int" || type == "int32")
+  {
+    std::int32_t v;
+    std::memcpy(&v, bytes, 4);
+    value = v;
+  }
+  else if (type == "uint" || type == "uint32")
+  {
+    std::uint32_t v;
+    std::memcpy(&v, bytes, 4);
+    value = v;
+  }
+  else if (type == "float" || type == "float32")
+  {
+    float v;
+    std::memcpy(&v, bytes, 4);
+    value = v;
+  }
+  else
+  {
+    double v;
+    std::memcpy(&v, bytes, 8);
+    value = v;
+  }
+  return true;
+}
+
+bool IsFaceIndexList(const PLYElement& e, const PLYProperty& p)
+{
+  return e.Name == "face" && !p.CountType.empty() &&
+    (p.Name == "vertex_indices" || p.Name == "vertex_index");
+}
+} // namespace
+
+std::string CheckPLYFile(const std::string& path)
+{
+  FileReader in(path);
+  if (!in.IsOpen())
+  {
+    return std::strerror(errno);
+  }
+  std::string line;
+  if (!in.GetLine(line) || line != "ply")
+  {
+    return "not a PLY file (it does not start with 'ply')";
+  }
+  // Header.
+  std::string format;
+  std::vector<PLYElement> elements;
+  int lineNumber = 1;
+  bool endHeader = false;
+  while (in.GetLine(line))
+  {
+    ++lineNumber;
+    const std::vector<std::string> w = Words(line);
+    const std::string where = "PLY header line " + std::to_string(lineNumber);
+    if (w.empty())
+    {
+      return where + " is empty";
+    }
+    if (w[0] == "comment" || w[0] == "obj_info")
+    {
+      continue;
+    }
+    if (w[0] == "end_header")
+    {
+      endHeader = true;
+      break;
+    }
+    if (w[0] == "format")
+    {
+      if (w.size() != 3 ||
+        (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
+      {
+        return where + ": invalid format line";
+      }
+      format = w[1];
+    }
+    else if (w[0] == "element")
+    {
+      long long count = 0;
+      if (w.size() != 3 || !ParseInteger(w[2], count) || count < 0)
+      {
+        return where + ": invalid element line";
+      }
+      elements.push_back({ w[1], count, {} });
+    }
+    else if (w[0] == "property")
+    {
+      if (elements.empty())
+      {
+        return where + ": property before any element";
+      }
+      if (w.size() == 3 && PLYTypeSize(w[1]) > 0)
+      {
+        elements.back().Properties.push_back({ w[2], w[1], "" });
+      }
+      else if (w.size() == 5 && w[1] == "list" && PLYTypeSize(w[2]) > 0 && PLYTypeSize(w[3]) > 0 &&
+        !PLYTypeIsReal(w[2]))
+      {
+        elements.back().Properties.push_back({ w[4], w[3], w[2] });
+      }
+      else
+      {
+        return where + ": invalid property line";
+      }
+    }
+    else
+    {
+      return where + ": unknown keyword '" + w[0] + "'";
+    }
+  }
+  if (!endHeader)
+  {
+    return "the PLY header has no end_header line";
+  }
+  if (format.empty())
+  {
+    return "the PLY header has no format line";
+  }
+  long long vertices = -1;
+  for (const PLYElement& e : elements)
+  {
+    if (e.Name == "vertex")
+    {
+      int xyz = 0;
+      for (const PLYProperty& p : e.Properties)
+      {
+        xyz += (p.CountType.empty() && (p.Name == "x" || p.Name == "y" || p.Name == "z")) ? 1 : 0;
+      }
+      if (xyz != 3)
+      {
+        return "the PLY vertex element lacks x, y and z properties";
+      }
+      vertices = e.Count;
+    }
+  }
+  if (vertices < 0)
+  {
+    return "the PLY file has no vertex element";
+  }
+
+  // Body.
+  if (format == "ascii")
+  {
+    for (const PLYElement& e : elements)
+    {
+      for (long long i = 0; i < e.Count; ++i)
+      {
+        if (!in.GetLine(line))
+        {
+          return "the PLY file is truncated (element '" + e.Name + "' " + std::to_string(i) +
+            " of " + std::to_string(e.Count) + " is missing)";
+        }
+        ++lineNumber;
+        const std::vector<std::string> w = Words(line);
+        const std::string where = "PLY line " + std::to_string(lineNumber);
+        std::size_t k = 0;
+        for (const PLYProperty& p : e.Properties)
+        {
+          long long count = 1;
+          if (!p.CountType.empty())
+          {
+            if (k >= w.size() || !ParseInteger(w[k], count) || count < 0)
+            {
+              return where + ": invalid list count";
+            }
+            ++k;
+          }
+          for (long long j = 0; j < count; ++j, ++k)
+          {
+            if (k >= w.size())
+            {
+              return where + ": too few values for element '" + e.Name + "'";
+            }
+            if (PLYTypeIsReal(p.Type))
+            {
+              if (!ParseReal(w[k]))
+              {
+                return where + ": invalid number '" + w[k] + "'";
+              }
+              continue;
+            }
+            long long index = 0;
+            if (!ParseInteger(w[k], index))
+            {
+              return where + ": invalid integer '" + w[k] + "'";
+            }
+            if (IsFaceIndexList(e, p) && (index < 0 || index >= vertices))
+            {
+              return where + ": face references vertex " + std::to_string(index) + " but there are " +
+                std::to_string(vertices) + " vertices";
+            }
+          }
+        }
+      }
+    }
+    return std::string();
+  }
+
+  const bool bigEndian = format == "binary_big_endian";
+  const long long fileSize = in.Size();
+  for (const PLYElement& e : elements)
+  {
+    bool hasList = false;
+    long long size = 0;
+    for (const PLYProperty& p : e.Properties)
+    {
+      hasList = hasList || !p.CountType.empty();
+      size += PLYTypeSize(p.Type);
+    }
+    const std::string truncated = "the PLY file is truncated (in element '" + e.Name + "')";
+    if (!hasList)
+    {
+      // Fixed-size records: check the size and skip them at once.
+      if (size > 0 && e.Count > (fileSize - in.GetOffset()) / size)
+      {
+        return truncated;
+      }
+      if (!in.Skip(size * e.Count))
+      {
+        return truncated;
+      }
+      continue;
+    }
+    for (long long i = 0; i < e.Count; ++i)
+    {
+      for (const PLYProperty& p : e.Properties)
+      {
+        if (p.CountType.empty())
+        {
+          if (!in.Skip(PLYTypeSize(p.Type)))
+          {
+            return truncated;
+          }
+          continue;
+        }
+        double count = 0;
+        if (!ReadBinaryValue(in, p.CountType, bigEndian, count))
+        {
+          return truncated;
+        }
+        if (count < 0)
+        {
+          return "invalid PLY list count " + std::to_string(static_cast<long long>(count)) +
+            " in element '" + e.Name + "'";
+        }
+        const auto n = static_cast<long long>(count);
+        if (!IsFaceIndexList(e, p))
+        {
+          if (!in.Skip(n * PLYTypeSize(p.Type)))
+          {
+            return truncated;
+          }
+          continue;
+        }
+        for (long long j = 0; j < n; ++j)
+        {
+          double index = 0;
+          if (!ReadBinaryValue(in, p.Type, bigEndian, index))
+          {
+            return truncated;
+          }
+          if (!(index >= 0 && index < static_cast<double>(vertices)))
+          {
+            return "a PLY face references vertex " + std::to_string(static_cast<long long>(index)) +
+              " but there are " + std::to_string(vertices) + " vertices";
+          }
+        }
+      }
+    }
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+// OBJ
+//------------------------------------------------------------------------------
+
+std::string CheckOBJFile(const std::string& path)
+{
+  long long totals[3] = { 0, 0, 0 }; // v, vt, vn
+  {
+    FileReader in(path);
+    if (!in.IsOpen())
+    {
+      return std::strerror(errno);
+    }
+    std::string line;
+    while (in.GetLine(line))
+    {
+      const std::size_t start = line.find_first_not_of(" \t");
+      if (start == std::string::npos)
+      {
+        continue;
+      }
+      if (line.compare(start, 2, "v ") == 0 || line.compare(start, 2, "v\t") == 0)
+      {
+        ++totals[0];
+      }
+      else if (line.compare(start, 3, "vt ") == 0 || line.compare(start, 3, "vt\t") == 0)
+      {
+        ++totals[1];
+      }
+      else if (line.compare(start, 3, "vn ") == 0 || line.compare(start, 3, "vn\t") == 0)
+      {
+        ++totals[2];
+      }
+    }
+  }
+  static const char* const kinds[3] = { "vertex", "texture coordinate", "normal" };
+  static const char* const plurals[3] = { "vertices", "texture coordinates", "normals" };
+  long long seen[3] = { 0, 0, 0 };
+  FileReader in(path);
+  if (!in.IsOpen())
+  {
+    return std::strerror(errno);
+  }
+  std::string line;
+  long long lineNumber = 0;
+  while (in.GetLine(line))
+  {
+    ++lineNumber;
+    for (char c : line)
+    {
+      const auto u = static_cast<unsigned char>(c);
+      if (u == 0 || (u < 32 && u != '\t' && u != '\f' && u != '\v'))
+      {
+        return "OBJ line " + std::to_string(lineNumber) + " contains binary data (not an OBJ file)";
+      }
+    }
+    const std::vector<std::string> w = Words(line);
+    if (w.empty())
+    {
+      continue;
+    }
+    if (w[0] == "v" || w[0] == "vt" || w[0] == "vn")
+    {
+      ++seen[w[0] == "v" ? 0 : w[0] == "vt" ? 1 : 2];
+      continue;
+    }
+    if (w[0] != "f" && w[0] != "l" && w[0] != "p")
+    {
+      continue;
+    }
+    for (std::size_t k = 1; k < w.size(); ++k)
+    {
+      // v, v/vt, v//vn or v/vt/vn
+      std::vector<std::string> fields;
+      std::string::size_type s = 0;
+      while (true)
+      {
+        const auto slash = w[k].find('/', s);
+        fields.push_back(w[k].substr(s, slash - s));
+        if (slash == std::string::npos)
+        {
+          break;
+        }
+        s = slash + 1;
+      }
+      if (fields.size() > 3)
+      {
+        return "OBJ line " + std::to_string(lineNumber) + ": invalid index '" + w[k] + "'";
+      }
+      for (std::size_t f = 0; f < fields.size(); ++f)
+      {
+        if (fields[f].empty() && f > 0)
+        {
+          continue; // v//vn
+        }
+        long long index = 0;
+        if (!ParseInteger(fields[f], index) || index == 0)
+        {
+          return "OBJ line " + std::to_string(lineNumber) + ": invalid index '" + w[k] + "'";
+        }
+        const bool ok = index > 0 ? index <= totals[f] : -index <= seen[f];
+        if (!ok)
+        {
+          return "OBJ line " + std::to_string(lineNumber) + ": " + kinds[f] + " index " +
+            std::to_string(index) + " is out of range (" + std::to_string(totals[f]) + " " +
+            (totals[f] == 1 ? kinds[f] : plurals[f]) + ")";
+        }
+      }
+    }
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+// VTK legacy
+//------------------------------------------------------------------------------
+
+std::string CheckLegacyVTKFile(const std::string& path)
+{
+  FileReader in(path);
+  if (!in.IsOpen())
+  {
+    return std::strerror(errno);
+  }
+  std::string line;
+  if (!in.GetLine(line) || line.compare(0, 22, "# vtk DataFile Version") != 0)
+  {
+    return "not a VTK legacy file (it does not start with '# vtk DataFile Version')";
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+// STL
+//------------------------------------------------------------------------------
+
+std::string CheckSTLFile(const std::string& path)
+{
+  FileReader in(path);
+  if (!in.IsOpen())
+  {
+    return std::strerror(errno);
+  }
+  const long long size = in.Size();
+  unsigned char head[256];
+  const std::size_t n = static_cast<std::size_t>(std::min<long long>(size, 256));
+  if (!in.Read(head, n))
+  {
+    return "cannot read the STL header";
+  }
+  // ASCII when it starts with "solid" and the first bytes are all text (as vtkSTLReader decides).
+  std::size_t start = 0;
+  while (start < n && std::isspace(head[start]))
+  {
+    ++start;
+  }
+  bool text = n - start >= 5 && std::memcmp(head + start, "solid", 5) == 0;
+  for (std::size_t i = 0; text && i < n; ++i)
+  {
+    text = head[i] < 128 && (head[i] >= 32 || std::isspace(head[i]));
+  }
+  if (text)
+  {
+    return std::string();
+  }
+  if (size < 84)
+  {
+    return "the binary STL file is truncated (" + std::to_string(size) +
+      " bytes, less than its 84-byte header)";
+  }
+  const std::uint32_t triangles = static_cast<std::uint32_t>(head[80]) |
+    (static_cast<std::uint32_t>(head[81]) << 8) | (static_cast<std::uint32_t>(head[82]) << 16) |
+    (static_cast<std::uint32_t>(head[83]) << 24);
+  const long long expected = 84 + 50LL * triangles;
+  if (size < expected)
+  {
+    return "the binary STL file is truncated or corrupt (its header announces " +
+      std::to_string(triangles) + " triangles, " + std::to_string(expected) +
+      " bytes, but the file has " + std::to_string(size) + " bytes)";
+  }
+  return std::string();
+}
+} // namespace vtkstylize

@@ -1,0 +1,32 @@
+/**
+ * Structural checks of input files whose VTK 9.1 readers crash (or silently read garbage) on
+ * malformed input, run before the reader sees the file:
+ *
+ * - PLY (vtkPLYReader crashes on a malformed header, and on face indices out of range, e.g. in
+ *   a truncated file): the header is parsed, the body walked element by element (ASCII or
+ *   binary), and every face index checked against the number of vertices.
+ * - OBJ (vtkOBJReader crashes on texture-coordinate or normal indices out of range): every
+ *   index of the f, l and p statements is checked against the v, vt and vn counts.
+ * - STL (vtkSTLReader reads truncated or garbage binary files without complaint): the size of a
+ *   binary file must hold the number of triangles its header announces.
+ *
+ * - VTK legacy: the first line must be the "# vtk DataFile Version" header (so that garbage is
+ *   reported as such rather than quoted back).
+ *
+ * Each function returns an empty string when the file passes, else a one-line reason.
+ */
+
+#ifndef vtkstylizeFileChecks_h
+#define vtkstylizeFileChecks_h
+
+#include <string>
+
+namespace vtkstylize
+{
+std::string CheckPLYFile(const std::string& path);
+std::string CheckOBJFile(const std::string& path);
+std::string CheckSTLFile(const std::string& path);
+std::string CheckLegacyVTKFile(const std::string& path);
+}
+
+#endif

@@ -1,0 +1,576 @@
+#include "vtkstylizeInput.h"
+
+#include "vtkstylizeCommon.h"
+#include "vtkstylizeFileChecks.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkContourFilter.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkFloatArray.h"
+#include "vtkGenericDataObjectReader.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkRectilinearGrid.h"
+#include "vtkSTLReader.h"
+#include "vtkStructuredGrid.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLImageDataReader.h"
+#include "vtkXMLMultiBlockDataReader.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLRectilinearGridReader.h"
+#include "vtkXMLStructuredGridReader.h"
+#include "vtkXMLUnstructuredGridReader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <map>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace vtkstylize
+{
+namespace
+{
+std::string Extension(const std::string& path)
+{
+  const auto slash = path.find_last_of('/');
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) ||
+    dot == (slash == std::string::npos ? 0 : slash + 1))
+  {
+    return std::string();
+  }
+  return Lower(path.substr(dot));
+}
+
+using ReaderFactory = std::function<vtkSmartPointer<vtkAlgorithm>(const std::string&)>;
+
+template <typename T>
+ReaderFactory MakeReader()
+{
+  return [](const std::string& path) -> vtkSmartPointer<vtkAlgorithm> {
+    vtkNew<T> reader;
+    reader->SetFileName(path.c_str());
+    return reader;
+  };
+}
+
+const std::map<std::string, ReaderFactory>& Readers()
+{
+  static const std::map<std::string, ReaderFactory> readers = {
+    { ".vtp", MakeReader<vtkXMLPolyDataReader>() },
+    { ".vtu", MakeReader<vtkXMLUnstructuredGridReader>() },
+    { ".vts", MakeReader<vtkXMLStructuredGridReader>() },
+    { ".vtr", MakeReader<vtkXMLRectilinearGridReader>() },
+    { ".vti", MakeReader<vtkXMLImageDataReader>() },
+    { ".vtm", MakeReader<vtkXMLMultiBlockDataReader>() },
+    { ".vtk",
+      [](const std::string& path) -> vtkSmartPointer<vtkAlgorithm> {
+        vtkNew<vtkGenericDataObjectReader> reader;
+        reader->SetFileName(path.c_str());
+        reader->ReadAllScalarsOn();
+        reader->ReadAllVectorsOn();
+        reader->ReadAllNormalsOn();
+        reader->ReadAllColorScalarsOn();
+        reader->ReadAllFieldsOn();
+        return reader;
+      } },
+    { ".stl", MakeReader<vtkSTLReader>() },
+    { ".obj", MakeReader<vtkOBJReader>() },
+    { ".ply", MakeReader<vtkPLYReader>() },
+  };
+  return readers;
+}
+} // namespace
+
+std::string SupportedExtensions()
+{
+  std::string list;
+  for (const auto& r : Readers())
+  {
+    list += (list.empty() ? "" : " ") + r.first;
+  }
+  return list;
+}
+
+bool IsSupportedInput(const std::string& path)
+{
+  return Readers().count(Extension(path)) > 0;
+}
+
+namespace
+{
+/** Checks that INPUT is a readable, non-empty regular file (before any reader sees it). */
+void CheckInputFile(const std::string& path)
+{
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0)
+  {
+    Fail("cannot read " + Quote(path) + ": " + std::strerror(errno));
+  }
+  if (S_ISDIR(st.st_mode))
+  {
+    Fail("cannot read " + Quote(path) + ": is a directory");
+  }
+  if (!S_ISREG(st.st_mode))
+  {
+    Fail("cannot read " + Quote(path) + ": not a regular file");
+  }
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd < 0)
+  {
+    Fail("cannot read " + Quote(path) + ": " + std::strerror(errno));
+  }
+  char byte;
+  const ssize_t n = ::read(fd, &byte, 1);
+  const int readErrno = errno;
+  ::close(fd);
+  if (n < 0)
+  {
+    Fail("cannot read " + Quote(path) + ": " + std::strerror(readErrno));
+  }
+  if (n == 0 || st.st_size == 0)
+  {
+    Fail("cannot read " + Quote(path) + ": the file is empty");
+  }
+}
+} // namespace
+
+vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path)
+{
+  const auto it = Readers().find(Extension(path));
+  if (it == Readers().end())
+  {
+    // Checked already while parsing; kept for safety.
+    UsageError("unsupported file type " + Quote(path) + " (supported: " + SupportedExtensions() + ")");
+  }
+  CheckInputFile(path);
+  // Structural checks for the formats whose readers crash or read garbage on broken files.
+  using Check = std::string (*)(const std::string&);
+  static const std::map<std::string, Check> checks = { { ".ply", vtkstylize::CheckPLYFile },
+    { ".obj", vtkstylize::CheckOBJFile }, { ".stl", vtkstylize::CheckSTLFile },
+    { ".vtk", vtkstylize::CheckLegacyVTKFile } };
+  const auto check = checks.find(it->first);
+  if (check != checks.end())
+  {
+    const std::string problem = check->second(path);
+    if (!problem.empty())
+    {
+      Fail("cannot read " + Quote(path) + ": " + problem);
+    }
+  }
+  vtkSmartPointer<vtkAlgorithm> reader = it->second(path);
+  ClearVTKErrors();
+  reader->Update();
+  const std::string what = "cannot read " + Quote(path);
+  CheckVTKErrors(what);
+  if (reader->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    const char* code = vtkErrorCode::GetStringFromErrorCode(reader->GetErrorCode());
+    Fail(what + ": " + (code ? code : "read error"));
+  }
+  vtkDataObject* output = reader->GetOutputDataObject(0);
+  if (!output)
+  {
+    Fail(what + ": the reader produced no data");
+  }
+  vtkSmartPointer<vtkDataObject> data;
+  data.TakeReference(output->NewInstance());
+  data->ShallowCopy(output);
+  return data;
+}
+
+namespace
+{
+/** Checks that every cell of the cell array references existing points. */
+void CheckCells(vtkCellArray* cells, vtkIdType numberOfPoints, const std::string& what)
+{
+  if (!cells || cells->GetNumberOfCells() == 0)
+  {
+    return;
+  }
+  if (!cells->IsValid())
+  {
+    Fail(what + ": corrupt cell connectivity");
+  }
+  vtkDataArray* connectivity = cells->GetConnectivityArray();
+  double range[2];
+  connectivity->GetRange(range, 0);
+  if (connectivity->GetNumberOfTuples() > 0 &&
+    (range[0] < 0 || range[1] >= static_cast<double>(numberOfPoints)))
+  {
+    Fail(what + ": a cell references point " +
+      std::to_string(static_cast<long long>(range[0] < 0 ? range[0] : range[1])) + " but there are " +
+      std::to_string(static_cast<long long>(numberOfPoints)) + " points");
+  }
+}
+
+/**
+ * Number of points a cell type needs: exactly Size, or at least Size when AtLeast. Types not
+ * listed (and VTK_POLYHEDRON without faces) are rejected, since the surface filter would read
+ * outside the connectivity for them.
+ */
+struct CellSize
+{
+  int Size;
+  bool AtLeast;
+};
+
+bool CellTypeSize(int type, CellSize& size)
+{
+  static const std::map<int, CellSize> sizes = { { VTK_EMPTY_CELL, { 0, false } },
+    { VTK_VERTEX, { 1, false } }, { VTK_POLY_VERTEX, { 1, true } }, { VTK_LINE, { 2, false } },
+    { VTK_POLY_LINE, { 2, true } }, { VTK_TRIANGLE, { 3, false } },
+    { VTK_TRIANGLE_STRIP, { 3, true } }, { VTK_POLYGON, { 3, true } },
+    { VTK_PIXEL, { 4, false } }, { VTK_QUAD, { 4, false } }, { VTK_TETRA, { 4, false } },
+    { VTK_VOXEL, { 8, false } }, { VTK_HEXAHEDRON, { 8, false } }, { VTK_WEDGE, { 6, false } },
+    { VTK_PYRAMID, { 5, false } }, { VTK_PENTAGONAL_PRISM, { 10, false } },
+    { VTK_HEXAGONAL_PRISM, { 12, false } }, { VTK_QUADRATIC_EDGE, { 3, false } },
+    { VTK_QUADRATIC_TRIANGLE, { 6, false } }, { VTK_QUADRATIC_QUAD, { 8, false } },
+    { VTK_QUADRATIC_TETRA, { 10, false } }, { VTK_QUADRATIC_HEXAHEDRON, { 20, false } },
+    { VTK_QUADRATIC_WEDGE, { 15, false } }, { VTK_QUADRATIC_PYRAMID, { 13, false } },
+    { VTK_BIQUADRATIC_QUAD, { 9, false } }, { VTK_TRIQUADRATIC_HEXAHEDRON, { 27, false } },
+    { VTK_QUADRATIC_LINEAR_QUAD, { 6, false } }, { VTK_QUADRATIC_LINEAR_WEDGE, { 12, false } },
+    { VTK_BIQUADRATIC_QUADRATIC_WEDGE, { 18, false } },
+    { VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON, { 24, false } },
+    { VTK_BIQUADRATIC_TRIANGLE, { 7, false } }, { VTK_CUBIC_LINE, { 4, false } },
+    { VTK_QUADRATIC_POLYGON, { 6, true } }, { VTK_TRIQUADRATIC_PYRAMID, { 19, false } },
+    { VTK_CONVEX_POINT_SET, { 1, true } }, { VTK_POLYHEDRON, { 1, true } },
+    { VTK_LAGRANGE_CURVE, { 2, true } }, { VTK_LAGRANGE_TRIANGLE, { 3, true } },
+    { VTK_LAGRANGE_QUADRILATERAL, { 4, true } }, { VTK_LAGRANGE_TETRAHEDRON, { 4, true } },
+    { VTK_LAGRANGE_HEXAHEDRON, { 8, true } }, { VTK_LAGRANGE_WEDGE, { 6, true } },
+    { VTK_LAGRANGE_PYRAMID, { 5, true } }, { VTK_BEZIER_CURVE, { 2, true } },
+    { VTK_BEZIER_TRIANGLE, { 3, true } }, { VTK_BEZIER_QUADRILATERAL, { 4, true } },
+    { VTK_BEZIER_TETRAHEDRON, { 4, true } }, { VTK_BEZIER_HEXAHEDRON, { 8, true } },
+    { VTK_BEZIER_WEDGE, { 6, true } }, { VTK_BEZIER_PYRAMID, { 5, true } } };
+  const auto it = sizes.find(type);
+  if (it == sizes.end())
+  {
+    return false;
+  }
+  size = it->second;
+  return true;
+}
+
+/** Checks the cell types of an unstructured grid and their numbers of points. */
+void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
+{
+  vtkCellArray* cells = ug->GetCells();
+  vtkUnsignedCharArray* types = ug->GetCellTypesArray();
+  const vtkIdType numberOfCells = cells ? cells->GetNumberOfCells() : 0;
+  if (numberOfCells == 0)
+  {
+    return;
+  }
+  if (!types || types->GetNumberOfTuples() != numberOfCells)
+  {
+    Fail(what + ": the numbers of cells and cell types differ");
+  }
+  for (vtkIdType i = 0; i < numberOfCells; ++i)
+  {
+    const int type = types->GetValue(i);
+    const vtkIdType npts = cells->GetCellSize(i);
+    CellSize size{ 0, false };
+    if (!CellTypeSize(type, size) || (type == VTK_POLYHEDRON && !ug->GetFaces()))
+    {
+      Fail(what + ": cell " + std::to_string(static_cast<long long>(i)) + " has an invalid or " +
+        "unsupported cell type " + std::to_string(type));
+    }
+    if (size.AtLeast ? npts < size.Size : npts != size.Size)
+    {
+      Fail(what + ": cell " + std::to_string(static_cast<long long>(i)) + " of type " +
+        std::to_string(type) + " has " + std::to_string(static_cast<long long>(npts)) +
+        " points, expected " + (size.AtLeast ? "at least " : "") + std::to_string(size.Size));
+    }
+  }
+}
+
+/** True when every component of the array is a finite number. */
+bool AllFinite(vtkDataArray* array)
+{
+  const vtkIdType count = array->GetNumberOfValues();
+  if (auto* f = vtkFloatArray::FastDownCast(array))
+  {
+    const float* p = f->GetPointer(0);
+    return std::all_of(p, p + count, [](float v) { return std::isfinite(v); });
+  }
+  if (auto* d = vtkDoubleArray::FastDownCast(array))
+  {
+    const double* p = d->GetPointer(0);
+    return std::all_of(p, p + count, [](double v) { return std::isfinite(v); });
+  }
+  const int nc = array->GetNumberOfComponents();
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < nc; ++c)
+    {
+      if (!std::isfinite(array->GetComponent(i, c)))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+/** Rejects datasets whose structure would make the filters or the mapper read out of bounds. */
+void ValidateDataSet(vtkDataSet* ds, const std::string& what)
+{
+  const vtkIdType n = ds->GetNumberOfPoints();
+  if (auto* pd = vtkPolyData::SafeDownCast(ds))
+  {
+    CheckCells(pd->GetVerts(), n, what);
+    CheckCells(pd->GetLines(), n, what);
+    CheckCells(pd->GetPolys(), n, what);
+    CheckCells(pd->GetStrips(), n, what);
+  }
+  else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds))
+  {
+    CheckCells(ug->GetCells(), n, what);
+    CheckCellTypes(ug, what);
+  }
+  else if (auto* sg = vtkStructuredGrid::SafeDownCast(ds))
+  {
+    int dims[3];
+    sg->GetDimensions(dims);
+    if (static_cast<double>(dims[0]) * dims[1] * dims[2] != static_cast<double>(n))
+    {
+      Fail(what + ": the structured grid has " + std::to_string(static_cast<long long>(n)) +
+        " points but its dimensions are " + std::to_string(dims[0]) + "x" +
+        std::to_string(dims[1]) + "x" + std::to_string(dims[2]));
+    }
+  }
+  else if (auto* rg = vtkRectilinearGrid::SafeDownCast(ds))
+  {
+    int dims[3];
+    rg->GetDimensions(dims);
+    vtkDataArray* coordinates[3] = { rg->GetXCoordinates(), rg->GetYCoordinates(),
+      rg->GetZCoordinates() };
+    for (int i = 0; i < 3; ++i)
+    {
+      if (!coordinates[i] || coordinates[i]->GetNumberOfTuples() != dims[i])
+      {
+        Fail(what + ": the rectilinear grid's " + std::string(1, static_cast<char>('x' + i)) +
+          " coordinates do not match its dimensions");
+      }
+    }
+  }
+  // Array sizes: a point or cell array shorter than the dataset is corrupt.
+  for (int a = 0; a < ds->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = ds->GetPointData()->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() < n)
+    {
+      Fail(what + ": point array " + Quote(array->GetName() ? array->GetName() : "") +
+        " is shorter than the number of points");
+    }
+  }
+  for (int a = 0; a < ds->GetCellData()->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = ds->GetCellData()->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() < ds->GetNumberOfCells())
+    {
+      Fail(what + ": cell array " + Quote(array->GetName() ? array->GetName() : "") +
+        " is shorter than the number of cells");
+    }
+  }
+  // Coordinates: GetBounds() skips NaN, so look at every explicit point.
+  if (auto* ps = vtkPointSet::SafeDownCast(ds))
+  {
+    if (ps->GetPoints() && !AllFinite(ps->GetPoints()->GetData()))
+    {
+      Fail(what + ": point coordinates are not finite (NaN or infinity)");
+    }
+  }
+  if (n > 0)
+  {
+    double bounds[6];
+    ds->GetBounds(bounds);
+    for (double b : bounds)
+    {
+      if (!std::isfinite(b))
+      {
+        Fail(what + ": point coordinates are not finite");
+      }
+    }
+  }
+}
+
+
+/** Point scalars to contour an image with: the active ones, else the first 1-component array. */
+vtkDataArray* ContourScalars(vtkImageData* image)
+{
+  vtkPointData* pd = image->GetPointData();
+  if (pd->GetScalars())
+  {
+    return pd->GetScalars();
+  }
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    if (array && array->GetNumberOfComponents() == 1 && array->GetName())
+    {
+      return array;
+    }
+  }
+  return nullptr;
+}
+
+vtkSmartPointer<vtkPolyData> ToSurface(
+  vtkDataSet* ds, const std::optional<double>& isoValue, const std::string& what)
+{
+  ValidateDataSet(ds, what);
+  if (auto* pd = vtkPolyData::SafeDownCast(ds))
+  {
+    return pd;
+  }
+  ClearVTKErrors();
+  vtkSmartPointer<vtkPolyData> surface;
+  auto* image = vtkImageData::SafeDownCast(ds);
+  int dims[3] = { 0, 0, 0 };
+  if (image)
+  {
+    image->GetDimensions(dims);
+  }
+  vtkDataArray* scalars = image ? ContourScalars(image) : nullptr;
+  if (image && scalars && dims[0] > 1 && dims[1] > 1 && dims[2] > 1)
+  {
+    double range[2];
+    scalars->GetRange(range, 0);
+    const double iso = isoValue ? *isoValue : 0.5 * (range[0] + range[1]);
+    vtkNew<vtkContourFilter> contour;
+    contour->SetInputData(image);
+    contour->SetInputArrayToProcess(
+      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, scalars->GetName());
+    contour->SetValue(0, iso);
+    contour->ComputeScalarsOff();
+    contour->ComputeNormalsOn();
+    contour->Update();
+    CheckVTKErrors(what + ": contouring failed");
+    surface = contour->GetOutput();
+    if (surface->GetNumberOfCells() == 0)
+    {
+      Fail(what + ": the contour of " + Quote(scalars->GetName() ? scalars->GetName() : "scalars") +
+        " at " + FormatNumber(iso) + " is empty (the scalar range is [" + FormatNumber(range[0]) +
+        ", " + FormatNumber(range[1]) + "]; see --iso)");
+    }
+  }
+  else
+  {
+    vtkNew<vtkDataSetSurfaceFilter> extract;
+    extract->SetInputData(ds);
+    extract->Update();
+    CheckVTKErrors(what + ": surface extraction failed");
+    surface = extract->GetOutput();
+  }
+  return surface;
+}
+} // namespace
+
+/** Turns a data object (dataset or multiblock tree) into parts. */
+void CollectParts(vtkDataObject* data, const std::optional<double>& isoValue,
+  const std::string& what, std::vector<Part>& parts)
+{
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    it->SkipEmptyNodesOn();
+    int index = 0;
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem(), ++index)
+    {
+      vtkDataObject* leaf = it->GetCurrentDataObject();
+      std::string name = "block " + std::to_string(index);
+      if (it->HasCurrentMetaData() &&
+        it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
+      {
+        name = it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME());
+      }
+      if (vtkCompositeDataSet::SafeDownCast(leaf))
+      {
+        CollectParts(leaf, isoValue, what, parts);
+        continue;
+      }
+      auto* ds = vtkDataSet::SafeDownCast(leaf);
+      if (!ds)
+      {
+        Fail(what + ": block " + Quote(name) + " is a " + leaf->GetClassName() +
+          ", which cannot be rendered");
+      }
+      parts.push_back({ name, ToSurface(ds, isoValue, what + " (block " + Quote(name) + ")") });
+    }
+    return;
+  }
+  auto* ds = vtkDataSet::SafeDownCast(data);
+  if (!ds)
+  {
+    Fail(what + ": the data is a " + std::string(data->GetClassName()) +
+      ", which cannot be rendered");
+  }
+  parts.push_back({ std::string(), ToSurface(ds, isoValue, what) });
+}
+
+/** Drops empty parts, fails when nothing is left, adds normals where missing. */
+void FinishParts(std::vector<Part>& parts, const std::string& what)
+{
+  vtkIdType points = 0;
+  std::vector<Part> kept;
+  for (Part& p : parts)
+  {
+    points += p.Surface->GetNumberOfPoints();
+    if (p.Surface->GetNumberOfPoints() > 0 && p.Surface->GetNumberOfCells() > 0)
+    {
+      kept.push_back(p);
+    }
+  }
+  if (points == 0)
+  {
+    Fail(what + ": the data contains no points");
+  }
+  if (kept.empty())
+  {
+    Fail(what + ": the data contains no cells (" + std::to_string(static_cast<long long>(points)) +
+      " points but nothing to draw)");
+  }
+  ClearVTKErrors();
+  for (Part& p : kept)
+  {
+    if (!p.Surface->GetPointData()->GetNormals() &&
+      (p.Surface->GetNumberOfPolys() > 0 || p.Surface->GetNumberOfStrips() > 0))
+    {
+      vtkNew<vtkPolyDataNormals> normals;
+      normals->SetInputData(p.Surface);
+      normals->ConsistencyOn();
+      normals->SplittingOn();
+      normals->SetFeatureAngle(45.0);
+      normals->Update();
+      p.Surface = normals->GetOutput();
+    }
+  }
+  CheckVTKErrors(what + ": computing normals failed");
+  parts = kept;
+}
+} // namespace vtkstylize

@@ -1,0 +1,56 @@
+/**
+ * The input stage of vtkstylize: reads a file by its extension, checks it, and turns it into
+ * renderable surfaces ("parts").
+ *
+ * Broken input never reaches a filter or a mapper: the file is checked (exists, regular, not
+ * empty; format checks of vtkstylizeFileChecks.h), the reader's errors are captured, and the
+ * data is validated (connectivity within the points, cell types and sizes, structured
+ * dimensions, array lengths, finite coordinates). Every failure is thrown as a CliError.
+ */
+
+#ifndef vtkstylizeInput_h
+#define vtkstylizeInput_h
+
+#include "vtkSmartPointer.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+class vtkDataObject;
+class vtkPolyData;
+
+namespace vtkstylize
+{
+/** One renderable piece of the scene: a leaf of the input (named after its block) as a surface. */
+struct Part
+{
+  std::string Name;
+  vtkSmartPointer<vtkPolyData> Surface;
+};
+
+/** The supported extensions, space-separated (".obj .ply ..."). */
+std::string SupportedExtensions();
+
+/** Whether the extension of the path (case-insensitive) has a reader. */
+bool IsSupportedInput(const std::string& path);
+
+/** Checks and reads the file. */
+vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path);
+
+/**
+ * Appends the surfaces of a dataset or of every leaf of a composite dataset to parts: polydata
+ * as is, 3D image data with a point scalar array as its contour at isoValue (default: the middle
+ * of the scalar range), anything else as its outer surface. what names the input in messages.
+ */
+void CollectParts(vtkDataObject* data, const std::optional<double>& isoValue,
+  const std::string& what, std::vector<Part>& parts);
+
+/**
+ * Drops empty parts and fails when nothing is left (no points, or no cells); computes point
+ * normals for the surfaces that have none.
+ */
+void FinishParts(std::vector<Part>& parts, const std::string& what);
+}
+
+#endif

@@ -1,0 +1,398 @@
+/**
+ * Writes the small input files of the vtkstylize command-line tests into a directory:
+ * valid files in every supported format, and broken ones (truncated, garbage, empty, zero points
+ * or cells, out-of-range connectivity, ...).
+ *
+ *   vtkStylizeCliMakeData OUTDIR
+ */
+
+#include "vtkAppendFilter.h"
+#include "vtkCellArray.h"
+#include "vtkConeSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkElevationFilter.h"
+#include "vtkFloatArray.h"
+#include "vtkGenericDataObjectWriter.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkOBJWriter.h"
+#include "vtkPLYWriter.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkRectilinearGrid.h"
+#include "vtkSTLWriter.h"
+#include "vtkSphereSource.h"
+#include "vtkStructuredGrid.h"
+#include "vtkTable.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLImageDataWriter.h"
+#include "vtkXMLMultiBlockDataWriter.h"
+#include "vtkXMLPolyDataWriter.h"
+#include "vtkXMLRectilinearGridWriter.h"
+#include "vtkXMLStructuredGridWriter.h"
+#include "vtkXMLUnstructuredGridWriter.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace
+{
+std::string Dir;
+
+std::string P(const std::string& name)
+{
+  return Dir + "/" + name;
+}
+
+bool Failed = false;
+
+template <typename W>
+void Write(W* writer, const std::string& name)
+{
+  writer->SetFileName(P(name).c_str());
+  if (!writer->Write())
+  {
+    std::cerr << "cannot write " << name << "\n";
+    Failed = true;
+  }
+}
+
+std::vector<char> ReadAll(const std::string& name)
+{
+  std::ifstream in(P(name), std::ios::binary);
+  return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void WriteBytes(const std::string& name, const char* data, std::size_t size)
+{
+  std::ofstream out(P(name), std::ios::binary | std::ios::trunc);
+  out.write(data, static_cast<std::streamsize>(size));
+  if (!out)
+  {
+    std::cerr << "cannot write " << name << "\n";
+    Failed = true;
+  }
+}
+
+void WriteText(const std::string& name, const std::string& text)
+{
+  WriteBytes(name, text.data(), text.size());
+}
+
+/** Copies the first fraction of a file. */
+void Truncate(const std::string& from, const std::string& to, double fraction)
+{
+  const std::vector<char> bytes = ReadAll(from);
+  WriteBytes(to, bytes.data(), static_cast<std::size_t>(bytes.size() * fraction));
+}
+
+/** Deterministic binary garbage. */
+std::string Garbage(std::size_t size, unsigned seed)
+{
+  std::string s(size, '\0');
+  unsigned x = seed;
+  for (char& c : s)
+  {
+    x = x * 1664525u + 1013904223u;
+    c = static_cast<char>(x >> 24);
+  }
+  return s;
+}
+
+vtkSmartPointer<vtkPolyData> Sphere()
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(16);
+  sphere->SetPhiResolution(12);
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputConnection(sphere->GetOutputPort());
+  elevation->SetLowPoint(0, -0.5, 0);
+  elevation->SetHighPoint(0, 0.5, 0);
+  elevation->Update();
+  vtkSmartPointer<vtkPolyData> pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->ShallowCopy(elevation->GetOutput());
+  return pd;
+}
+
+vtkSmartPointer<vtkImageData> Wavelet(int half)
+{
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-half, half, -half, half, -half, half);
+  wavelet->Update();
+  vtkSmartPointer<vtkImageData> image = vtkSmartPointer<vtkImageData>::New();
+  image->ShallowCopy(wavelet->GetOutput());
+  return image;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc != 2)
+  {
+    std::cerr << "usage: vtkStylizeCliMakeData OUTDIR\n";
+    return 2;
+  }
+  Dir = argv[1];
+  ::mkdir(Dir.c_str(), 0777);
+  ::mkdir(P("dir.vtp").c_str(), 0777); // a directory given as INPUT
+  ::mkdir(P("out").c_str(), 0777);     // output directory of the tests
+  ::mkdir(P("out/isdir.png").c_str(), 0777); // a directory given as --output
+  ::unlink(P("devnull.vtp").c_str());
+  if (::symlink("/dev/null", P("devnull.vtp").c_str()) != 0) // not a regular file
+  {
+    std::cerr << "cannot create devnull.vtp\n";
+    Failed = true;
+  }
+
+  // ---- Valid files -------------------------------------------------------------------------
+  vtkSmartPointer<vtkPolyData> sphere = Sphere();
+  {
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetInputData(sphere);
+    w->SetDataModeToAppended();
+    w->EncodeAppendedDataOff();
+    Write(w.Get(), "sphere.vtp");
+    Write(w.Get(), "SPHERE_UPPER.VTP");
+  }
+  {
+    // Volumetric unstructured grid: hexahedra of a small image, with point scalars.
+    vtkNew<vtkAppendFilter> toGrid;
+    toGrid->SetInputData(Wavelet(3));
+    toGrid->Update();
+    vtkNew<vtkXMLUnstructuredGridWriter> w;
+    w->SetInputData(toGrid->GetOutput());
+    Write(w.Get(), "hexes.vtu");
+    vtkNew<vtkGenericDataObjectWriter> legacy;
+    legacy->SetInputData(toGrid->GetOutput());
+    legacy->SetFileTypeToBinary();
+    Write(legacy.Get(), "hexes.vtk");
+  }
+  {
+    vtkNew<vtkXMLImageDataWriter> w;
+    w->SetInputData(Wavelet(8));
+    Write(w.Get(), "wavelet.vti");
+    vtkNew<vtkGenericDataObjectWriter> legacy;
+    legacy->SetInputData(Wavelet(8));
+    legacy->SetFileTypeToBinary();
+    Write(legacy.Get(), "wavelet.vtk");
+    // No scalars: drawn as its outer surface.
+    vtkNew<vtkImageData> plain;
+    plain->SetDimensions(4, 3, 2);
+    plain->SetSpacing(1, 1, 1);
+    w->SetInputData(plain);
+    Write(w.Get(), "noscalars.vti");
+    // Constant scalars: the contour is empty.
+    vtkNew<vtkImageData> constant;
+    constant->SetDimensions(4, 4, 4);
+    constant->AllocateScalars(VTK_FLOAT, 1);
+    constant->GetPointData()->GetScalars()->Fill(1.0);
+    w->SetInputData(constant);
+    Write(w.Get(), "constant.vti");
+  }
+  {
+    // Structured grid: a bent sheet of 6 x 5 x 2 points.
+    vtkNew<vtkStructuredGrid> grid;
+    grid->SetDimensions(6, 5, 2);
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkFloatArray> height;
+    height->SetName("Bend");
+    for (int k = 0; k < 2; ++k)
+    {
+      for (int j = 0; j < 5; ++j)
+      {
+        for (int i = 0; i < 6; ++i)
+        {
+          const double z = 0.3 * std::sin(i * 0.6) + 0.4 * k;
+          points->InsertNextPoint(i * 0.4, j * 0.4, z);
+          height->InsertNextValue(static_cast<float>(z));
+        }
+      }
+    }
+    grid->SetPoints(points);
+    grid->GetPointData()->SetScalars(height);
+    vtkNew<vtkXMLStructuredGridWriter> w;
+    w->SetInputData(grid);
+    Write(w.Get(), "sheet.vts");
+  }
+  {
+    vtkNew<vtkRectilinearGrid> grid;
+    grid->SetDimensions(4, 3, 3);
+    vtkNew<vtkDoubleArray> x, y, z;
+    for (double v : { 0.0, 0.5, 1.5, 3.0 })
+    {
+      x->InsertNextValue(v);
+    }
+    for (double v : { 0.0, 1.0, 1.5 })
+    {
+      y->InsertNextValue(v);
+      z->InsertNextValue(v * 0.5);
+    }
+    grid->SetXCoordinates(x);
+    grid->SetYCoordinates(y);
+    grid->SetZCoordinates(z);
+    vtkNew<vtkXMLRectilinearGridWriter> w;
+    w->SetInputData(grid);
+    Write(w.Get(), "grid.vtr");
+  }
+  {
+    vtkNew<vtkConeSource> cone;
+    cone->SetCenter(2, 0, 0);
+    cone->SetResolution(12);
+    cone->Update();
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetNumberOfBlocks(2);
+    blocks->SetBlock(0, sphere);
+    blocks->SetBlock(1, cone->GetOutput());
+    blocks->GetMetaData(0u)->Set(vtkMultiBlockDataSet::NAME(), "sphere");
+    blocks->GetMetaData(1u)->Set(vtkMultiBlockDataSet::NAME(), "cone");
+    vtkNew<vtkXMLMultiBlockDataWriter> w;
+    w->SetInputData(blocks);
+    Write(w.Get(), "blocks.vtm");
+  }
+  {
+    vtkNew<vtkGenericDataObjectWriter> w;
+    w->SetInputData(sphere);
+    w->SetFileTypeToASCII();
+    Write(w.Get(), "sphere_ascii.vtk");
+    w->SetFileTypeToBinary();
+    Write(w.Get(), "sphere_binary.vtk");
+  }
+  {
+    vtkNew<vtkSTLWriter> w;
+    w->SetInputData(sphere);
+    w->SetFileTypeToASCII();
+    Write(w.Get(), "sphere_ascii.stl");
+    w->SetFileTypeToBinary();
+    Write(w.Get(), "sphere_binary.stl");
+  }
+  {
+    vtkNew<vtkOBJWriter> w;
+    w->SetInputData(sphere);
+    Write(w.Get(), "sphere.obj");
+  }
+  {
+    vtkNew<vtkPLYWriter> w;
+    w->SetInputData(sphere);
+    w->SetFileTypeToBinary();
+    Write(w.Get(), "sphere.ply");
+    // Per-point RGB colours, drawn directly.
+    vtkNew<vtkPolyData> colored;
+    colored->ShallowCopy(sphere);
+    vtkNew<vtkUnsignedCharArray> rgb;
+    rgb->SetName("RGB");
+    rgb->SetNumberOfComponents(3);
+    for (vtkIdType i = 0; i < colored->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      colored->GetPoint(i, p);
+      rgb->InsertNextTuple3(127.5 * (p[0] + 1), 127.5 * (p[1] + 1), 127.5 * (p[2] + 1));
+    }
+    colored->GetPointData()->SetScalars(rgb);
+    w->SetInputData(colored);
+    w->SetArrayName("RGB");
+    w->SetColorModeToDefault();
+    w->SetFileTypeToASCII();
+    Write(w.Get(), "colored.ply");
+  }
+  // A tiny hand-written ASCII legacy file, with a cell scalar.
+  WriteText("quad.vtk",
+    "# vtk DataFile Version 3.0\nquad\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+    "0 0 0  1 0 0  1 1 0  0 1 0\nPOLYGONS 2 8\n3 0 1 2\n3 0 2 3\n"
+    "CELL_DATA 2\nSCALARS Id int 1\nLOOKUP_TABLE default\n0 1\n");
+
+  // ---- Broken files ------------------------------------------------------------------------
+  Truncate("sphere_binary.stl", "truncated.stl", 0.5);
+  Truncate("sphere_ascii.stl", "truncated_ascii.stl", 0.3);
+  Truncate("sphere.vtp", "truncated.vtp", 0.6);
+  Truncate("sphere_binary.vtk", "truncated.vtk", 0.5);
+  Truncate("sphere.ply", "truncated.ply", 0.5);
+  Truncate("wavelet.vti", "truncated.vti", 0.5);
+  Truncate("sphere.obj", "truncated_header.obj", 0.0); // zero bytes
+  WriteText("garbage.vtp", Garbage(3000, 1));
+  WriteText("garbage.vtk", Garbage(3000, 2));
+  WriteText("garbage.ply", Garbage(3000, 3));
+  WriteText("garbage.stl", Garbage(3000, 4));
+  WriteText("garbage.obj", Garbage(3000, 5));
+  WriteText("garbage.vtm", Garbage(3000, 6));
+  WriteText("garbage.vti", Garbage(3000, 7));
+  WriteText("notxml.vtu", "this is plain text, not a VTK XML file\n");
+  WriteText("empty.stl", "");
+  WriteText("empty.vtp", "");
+  WriteText("unknown.xyz", "1 2 3\n");
+  WriteText("noextension", "1 2 3\n");
+  // Well-formed but empty.
+  {
+    vtkNew<vtkPolyData> nothing;
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetInputData(nothing);
+    Write(w.Get(), "nopoints.vtp");
+  }
+  WriteText("noblocks.vtm",
+    "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\">\n"
+    "  <vtkMultiBlockDataSet>\n  </vtkMultiBlockDataSet>\n</VTKFile>\n");
+  WriteText("missingpiece.vtm",
+    "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\">\n"
+    "  <vtkMultiBlockDataSet>\n    <DataSet index=\"0\" file=\"does_not_exist.vtp\"/>\n"
+    "  </vtkMultiBlockDataSet>\n</VTKFile>\n");
+  WriteText("nofaces.obj", "# vertices only\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  WriteText("nopoints.ply",
+    "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n");
+  WriteText("nocells.vtk",
+    "# vtk DataFile Version 3.0\nno cells\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
+    "0 0 0  1 0 0  0 1 0\n");
+  WriteText("solid_empty.stl", "solid empty\nendsolid empty\n");
+  // Structurally corrupt.
+  WriteText("badindex.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n");
+  WriteText("badtcoord.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/5 2/6 3/7\n");
+  WriteText("badindex.vtk",
+    "# vtk DataFile Version 3.0\nbad index\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
+    "0 0 0  1 0 0  0 1 0\nPOLYGONS 1 4\n3 0 1 99\n");
+  WriteText("shortpoints.vtk",
+    "# vtk DataFile Version 3.0\nshort\nASCII\nDATASET POLYDATA\nPOINTS 30 float\n"
+    "0 0 0  1 0 0  0 1 0\n");
+  const std::string ugridHead = "# vtk DataFile Version 3.0\nbad grid\nASCII\n"
+                                "DATASET UNSTRUCTURED_GRID\nPOINTS 4 float\n"
+                                "0 0 0  1 0 0  0 1 0  0 0 1\nCELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n";
+  WriteText("badcelltype.vtk", ugridHead + "99\n");
+  WriteText("badcellsize.vtk", ugridHead + "12\n"); // a hexahedron with 3 points
+  WriteText("badstructured.vtk",
+    "# vtk DataFile Version 3.0\nbad\nASCII\nDATASET STRUCTURED_GRID\nDIMENSIONS 3 3 3\n"
+    "POINTS 4 float\n0 0 0  1 0 0  0 1 0  0 0 1\n");
+  WriteText("badrectilinear.vtk",
+    "# vtk DataFile Version 3.0\nbad\nASCII\nDATASET RECTILINEAR_GRID\nDIMENSIONS 3 3 3\n"
+    "X_COORDINATES 2 float\n0 1\nY_COORDINATES 3 float\n0 1 2\nZ_COORDINATES 3 float\n0 1 2\n");
+  {
+    vtkNew<vtkPolyData> nan;
+    nan->DeepCopy(sphere);
+    nan->GetPoints()->SetPoint(0, std::nan(""), 0.0, 0.0);
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetInputData(nan);
+    Write(w.Get(), "nonfinite.vtp");
+  }
+  WriteText("badheader.ply", "ply\nformat ascii 1.0\nelement vertex 3\nthis is not a property\n");
+  {
+    vtkNew<vtkTable> table;
+    vtkNew<vtkFloatArray> column;
+    column->SetName("x");
+    column->InsertNextValue(1.0f);
+    table->AddColumn(column);
+    vtkNew<vtkGenericDataObjectWriter> w;
+    w->SetInputData(table);
+    Write(w.Get(), "table.vtk");
+  }
+  return Failed ? 1 : 0;
+}
