@@ -6,7 +6,6 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
-#include "vtkImageGradient.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkLineSource.h"
@@ -85,7 +84,7 @@ int vtkStylizeDemoScene::RequestData(
   surface->SetScalarModeToNone();
   surface->GenerateNormalsOn();
   vtkNew<vtkTransform> place;
-  place->Translate(20.0, 0.0, 0.0);
+  place->Translate(24.0, 0.0, 0.0);
   place->RotateX(60.0);
   vtkNew<vtkTransformPolyDataFilter> placed;
   placed->SetInputConnection(surface->GetOutputPort());
@@ -100,39 +99,49 @@ int vtkStylizeDemoScene::RequestData(
   vtkNew<vtkPolyData> param;
   param->ShallowCopy(height->GetOutput());
 
-  // Block 2: streamline tubes of the wavelet gradient, coloured by speed.
+  // Block 2: streamline tubes of a swirling flow around the isosurface (a rotation about the z
+  // axis plus an upward drift, v = (-y, x, 2)), coloured by speed.
   vtkNew<vtkPolyData> tubesOut;
   if (this->NumberOfStreamlines > 0)
   {
-    vtkNew<vtkImageGradient> gradient;
-    gradient->SetInputData(field);
-    gradient->SetDimensionality(3);
-    gradient->Update();
-    vtkNew<vtkImageData> vectors;
-    vectors->ShallowCopy(gradient->GetOutput());
-    vectors->GetPointData()->SetActiveVectors(
-      vectors->GetPointData()->GetScalars()->GetName());
+    const int n = std::max(9, static_cast<int>(std::lround(16 * this->Resolution)));
+    vtkNew<vtkImageData> flow;
+    flow->SetDimensions(n, n, n);
+    const double h = 28.0 / (n - 1);
+    flow->SetOrigin(-14.0, -14.0, -14.0);
+    flow->SetSpacing(h, h, h);
+    vtkNew<vtkFloatArray> velocity;
+    velocity->SetName("Velocity");
+    velocity->SetNumberOfComponents(3);
+    velocity->SetNumberOfTuples(flow->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < flow->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      flow->GetPoint(i, p);
+      velocity->SetTuple3(i, -p[1], p[0], 2.0);
+    }
+    flow->GetPointData()->SetVectors(velocity);
     vtkNew<vtkLineSource> seeds;
-    seeds->SetPoint1(-8.0, -8.0, -3.0);
-    seeds->SetPoint2(8.0, 8.0, 3.0);
+    seeds->SetPoint1(10.5, 0.0, -11.0);
+    seeds->SetPoint2(13.0, 0.0, -11.0);
     seeds->SetResolution(std::max(1, this->NumberOfStreamlines - 1));
     vtkNew<vtkStreamTracer> tracer;
-    tracer->SetInputData(vectors);
+    tracer->SetInputData(flow);
     tracer->SetSourceConnection(seeds->GetOutputPort());
-    tracer->SetIntegrationDirectionToBoth();
+    tracer->SetIntegrationDirectionToForward();
     tracer->SetIntegratorTypeToRungeKutta45();
-    tracer->SetMaximumPropagation(40.0);
+    tracer->SetMaximumPropagation(150.0);
     tracer->SetInitialIntegrationStep(0.2);
     tracer->SetComputeVorticity(false);
     vtkNew<vtkArrayCalculator> speed;
     speed->SetInputConnection(tracer->GetOutputPort());
     speed->SetAttributeTypeToPointData();
-    speed->AddVectorArrayName(vectors->GetPointData()->GetScalars()->GetName());
-    speed->SetFunction((std::string("mag(") + vectors->GetPointData()->GetScalars()->GetName() + ")").c_str());
+    speed->AddVectorArrayName("Velocity");
+    speed->SetFunction("mag(Velocity)");
     speed->SetResultArrayName("Speed");
     vtkNew<vtkTubeFilter> tubes;
     tubes->SetInputConnection(speed->GetOutputPort());
-    tubes->SetRadius(0.25);
+    tubes->SetRadius(0.22);
     tubes->SetNumberOfSides(std::max(6, static_cast<int>(std::lround(12 * this->Resolution))));
     tubes->CappingOn();
     vtkNew<vtkTriangleFilter> tris;

@@ -7,8 +7,9 @@
  *   with the point array "RTData";
  * - block 1 "parametric": a parametric surface (a torus, vtkParametricTorus) beside it, with the
  *   point array "Height" (its z coordinate);
- * - block 2 "streamlines": tubes around streamlines of the wavelet's gradient field, with the
- *   point array "Speed" (the gradient magnitude), for colouring by a scalar.
+ * - block 2 "streamlines": tubes around streamlines of a swirling flow (rotation about the z axis
+ *   with an upward drift) that wind around the isosurface, with the point array "Speed", for
+ *   colouring by a scalar.
  *
  * Resolution scales every part (1 gives about 60k triangles). The output is deterministic.
  */
@@ -33,13 +34,13 @@ public:
   ///@}
 
   ///@{
-  /** Isovalue of the wavelet surface, in [40, 270]. Default 160. */
+  /** Isovalue of the wavelet surface, in [40, 270]. Default 190. */
   vtkSetClampMacro(IsoValue, double, 40.0, 270.0);
   vtkGetMacro(IsoValue, double);
   ///@}
 
   ///@{
-  /** Number of streamlines, in [0, 200]. Default 24. */
+  /** Number of streamlines, in [0, 200]. Default 12. */
   vtkSetClampMacro(NumberOfStreamlines, int, 0, 200);
   vtkGetMacro(NumberOfStreamlines, int);
   ///@}
@@ -51,8 +52,8 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double Resolution = 1.0;
-  double IsoValue = 160.0;
-  int NumberOfStreamlines = 24;
+  double IsoValue = 190.0;
+  int NumberOfStreamlines = 12;
 
 private:
   vtkStylizeDemoScene(const vtkStylizeDemoScene&) = delete;
