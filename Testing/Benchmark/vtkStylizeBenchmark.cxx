@@ -1,0 +1,1104 @@
+// vtkStylizeBenchmark: frame-time comparison of VTK's plain rendering, VTK's own screen-space
+// passes (Sobel, SSAO, EDL) and VTK Stylize's lighting and G-buffer passes.
+//
+// One run renders every (scene, light count, configuration) case offscreen at a fixed size with
+// multisampling off, warms up (shader compilation, buffer uploads) and then times N frames, each
+// with a small camera azimuth step so that nothing is cached, and glFinish (WaitForCompletion)
+// before the clock stops. It writes a CSV with one row per case and a Markdown report (median
+// ms, ratios to plain, light-count slopes, triangle-count flatness). Run with --help.
+
+#include "vtkCamera.h"
+#include "vtkEDLShading.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPNGWriter.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkActor.h"
+#include "vtkRenderPass.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSSAOPass.h"
+#include "vtkSmartPointer.h"
+#include "vtkSobelGradientMagnitudePass.h"
+#include "vtkSphereSource.h"
+#include "vtkStylizeGBufferPass.h"
+#include "vtkStylizeLightingPass.h"
+#include "vtkVersion.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace
+{
+//------------------------------------------------------------------------------------------------
+// Options
+
+struct SceneSpec
+{
+  std::string Name; // "10k", "500k", "2M"
+  int Theta;        // vtkSphereSource resolutions: 2 * Theta * (Phi - 1) triangles
+  int Phi;
+};
+
+const std::vector<SceneSpec>& AllScenes()
+{
+  static const std::vector<SceneSpec> scenes = { { "10k", 100, 52 }, { "500k", 500, 502 },
+    { "2M", 1000, 1002 } };
+  return scenes;
+}
+
+const std::vector<std::string>& AllConfigs()
+{
+  static const std::vector<std::string> configs = { "plain", "sobel", "ssao", "edl",
+    "light-standard", "light-comic", "light-pixelart", "gbuf-standard", "gbuf-comic",
+    "gbuf-pixelart", "gbuf-standard-color" };
+  return configs;
+}
+
+const std::vector<int>& AllLightCounts()
+{
+  static const std::vector<int> lights = { 1, 8, 100, 500 };
+  return lights;
+}
+
+struct Options
+{
+  int Width = 1920;
+  int Height = 1080;
+  int Frames = 7;
+  int Warmup = 2;
+  std::vector<SceneSpec> Scenes = AllScenes();
+  std::vector<int> Lights = AllLightCounts();
+  std::vector<std::string> Configs = AllConfigs();
+  std::string Csv = "benchmark.csv";
+  std::string Markdown = "benchmark.md";
+  std::string Images; // folder for one PNG per case (after the timed frames), empty: none
+  double FlatTolerance = 25.0; // percent
+  double FlatFloor = 2.0;      // ms
+};
+
+void PrintHelp(const char* argv0)
+{
+  std::cout
+    << "Usage: " << argv0 << " [options]\n"
+    << "Times VTK's plain rendering, VTK's Sobel, SSAO and EDL passes and VTK Stylize's lighting\n"
+    << "and G-buffer passes on sphere scenes with 1 to 500 lights (offscreen, no multisampling).\n"
+    << "\n"
+    << "Options:\n"
+    << "  --size WxH        image size (default 1920x1080)\n"
+    << "  --frames N        timed frames per case, median reported (default 7)\n"
+    << "  --warmup N        untimed warm-up frames per case, at least 2 (default 2)\n"
+    << "  --scenes LIST     subset of 10k,500k,2M (sphere triangle counts)\n"
+    << "  --lights LIST     subset of light counts, e.g. 1,8,100,500 (any positive count)\n"
+    << "  --configs LIST    subset of:";
+  for (const auto& c : AllConfigs())
+  {
+    std::cout << " " << c;
+  }
+  std::cout
+    << "\n"
+    << "  --csv FILE        CSV output (default benchmark.csv)\n"
+    << "  --markdown FILE   Markdown output (default benchmark.md), also printed to stdout\n"
+    << "  --images DIR      also write the last frame of every case as DIR/<scene>-<lights>-<config>.png\n"
+    << "  --flat-tolerance P  percent change of the added cost over plain between the smallest\n"
+    << "                    and the largest scene still called flat (default 25)\n"
+    << "  --quick           smoke mode: 640x360, scene 10k, lights 1,8, 3 frames\n"
+    << "  --help            this text\n";
+}
+
+std::vector<std::string> SplitList(const std::string& s)
+{
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+  {
+    if (!item.empty())
+    {
+      out.push_back(item);
+    }
+  }
+  return out;
+}
+
+bool ParseInt(const std::string& s, int& value)
+{
+  char* end = nullptr;
+  const long v = std::strtol(s.c_str(), &end, 10);
+  if (end == s.c_str() || *end != '\0' || v <= 0 || v > 1000000)
+  {
+    return false;
+  }
+  value = static_cast<int>(v);
+  return true;
+}
+
+// Returns 0 to continue, 1 for an error, 2 for --help.
+int ParseOptions(int argc, char* argv[], Options& opt)
+{
+  // --quick sets defaults that later options may override.
+  for (int i = 1; i < argc; ++i)
+  {
+    if (std::string(argv[i]) == "--quick")
+    {
+      opt.Width = 640;
+      opt.Height = 360;
+      opt.Scenes = { AllScenes()[0] };
+      opt.Lights = { 1, 8 };
+      opt.Frames = 3;
+    }
+  }
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto next = [&](std::string& value) -> bool {
+      if (i + 1 >= argc)
+      {
+        std::cerr << "Option " << arg << " needs a value\n";
+        return false;
+      }
+      value = argv[++i];
+      return true;
+    };
+    std::string value;
+    if (arg == "--help" || arg == "-h")
+    {
+      PrintHelp(argv[0]);
+      return 2;
+    }
+    else if (arg == "--quick")
+    {
+    }
+    else if (arg == "--size")
+    {
+      if (!next(value))
+      {
+        return 1;
+      }
+      const auto x = value.find_first_of("xX");
+      if (x == std::string::npos || !ParseInt(value.substr(0, x), opt.Width) ||
+        !ParseInt(value.substr(x + 1), opt.Height))
+      {
+        std::cerr << "Bad --size '" << value << "' (expected WxH)\n";
+        return 1;
+      }
+    }
+    else if (arg == "--frames" || arg == "--warmup")
+    {
+      if (!next(value) || !ParseInt(value, arg == "--frames" ? opt.Frames : opt.Warmup))
+      {
+        std::cerr << "Bad " << arg << " value\n";
+        return 1;
+      }
+      if (opt.Warmup < 2)
+      {
+        std::cerr << "--warmup must be at least 2\n";
+        return 1;
+      }
+    }
+    else if (arg == "--scenes")
+    {
+      if (!next(value))
+      {
+        return 1;
+      }
+      opt.Scenes.clear();
+      for (const auto& name : SplitList(value))
+      {
+        auto it = std::find_if(AllScenes().begin(), AllScenes().end(),
+          [&](const SceneSpec& s) { return s.Name == name; });
+        if (it == AllScenes().end())
+        {
+          std::cerr << "Unknown scene '" << name << "' (10k, 500k, 2M)\n";
+          return 1;
+        }
+        opt.Scenes.push_back(*it);
+      }
+    }
+    else if (arg == "--lights")
+    {
+      if (!next(value))
+      {
+        return 1;
+      }
+      opt.Lights.clear();
+      for (const auto& item : SplitList(value))
+      {
+        int n = 0;
+        if (!ParseInt(item, n))
+        {
+          std::cerr << "Bad light count '" << item << "'\n";
+          return 1;
+        }
+        opt.Lights.push_back(n);
+      }
+    }
+    else if (arg == "--configs")
+    {
+      if (!next(value))
+      {
+        return 1;
+      }
+      opt.Configs.clear();
+      for (const auto& name : SplitList(value))
+      {
+        if (std::find(AllConfigs().begin(), AllConfigs().end(), name) == AllConfigs().end())
+        {
+          std::cerr << "Unknown configuration '" << name << "'\n";
+          return 1;
+        }
+        opt.Configs.push_back(name);
+      }
+    }
+    else if (arg == "--csv")
+    {
+      if (!next(opt.Csv))
+      {
+        return 1;
+      }
+    }
+    else if (arg == "--markdown")
+    {
+      if (!next(opt.Markdown))
+      {
+        return 1;
+      }
+    }
+    else if (arg == "--images")
+    {
+      if (!next(opt.Images))
+      {
+        return 1;
+      }
+    }
+    else if (arg == "--flat-tolerance")
+    {
+      int p = 0;
+      if (!next(value) || !ParseInt(value, p))
+      {
+        std::cerr << "Bad --flat-tolerance value\n";
+        return 1;
+      }
+      opt.FlatTolerance = p;
+    }
+    else
+    {
+      std::cerr << "Unknown option '" << arg << "' (see --help)\n";
+      return 1;
+    }
+  }
+  if (opt.Scenes.empty() || opt.Lights.empty() || opt.Configs.empty())
+  {
+    std::cerr << "Empty scene, light or configuration list\n";
+    return 1;
+  }
+  return 0;
+}
+
+//------------------------------------------------------------------------------------------------
+// Lights: the same deterministic set for every configuration.
+
+/**
+ * Fills the renderer with @p count lights. One light is VTK's default headlight. More lights are
+ * scene lights spread over a sphere of radius 4 R around the object (golden-angle spiral), in
+ * turn directional, positional point (cone 180 degrees) and positional spot (cone 30 degrees,
+ * exponent 2) lights, all aimed at the centre, white, intensity 1.5 / count so the summed
+ * lighting stays in range.
+ */
+void SetLights(vtkRenderer* ren, int count, const double center[3], double radius)
+{
+  ren->RemoveAllLights();
+  ren->AutomaticLightCreationOff();
+  if (count == 1)
+  {
+    vtkNew<vtkLight> headlight; // what vtkRenderer::CreateLight() makes
+    headlight->SetLightTypeToHeadlight();
+    ren->AddLight(headlight);
+    return;
+  }
+  const double golden = vtkMath::Pi() * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < count; ++i)
+  {
+    const double y = 1.0 - 2.0 * (i + 0.5) / count;
+    const double r = std::sqrt(std::max(0.0, 1.0 - y * y));
+    const double phi = golden * i;
+    const double dir[3] = { r * std::cos(phi), y, r * std::sin(phi) };
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetColor(1.0, 1.0, 1.0);
+    light->SetIntensity(1.5 / count);
+    light->SetFocalPoint(center[0], center[1], center[2]);
+    light->SetPosition(center[0] + 4.0 * radius * dir[0], center[1] + 4.0 * radius * dir[1],
+      center[2] + 4.0 * radius * dir[2]);
+    switch (i % 3)
+    {
+      case 0:
+        light->PositionalOff(); // directional, from the position towards the focal point
+        break;
+      case 1:
+        light->PositionalOn();
+        light->SetConeAngle(180.0); // point light
+        break;
+      default:
+        light->PositionalOn();
+        light->SetConeAngle(30.0); // spot light on the object
+        light->SetExponent(2.0);
+        break;
+    }
+    ren->AddLight(light);
+  }
+}
+
+//------------------------------------------------------------------------------------------------
+// Configurations
+
+/** The passes of one configuration; they live as long as the render window that uses them. */
+struct ConfigPasses
+{
+  vtkSmartPointer<vtkRenderPass> Root; // set on the renderer; nullptr for "plain"
+  std::vector<vtkSmartPointer<vtkRenderPass>> Keep;
+  std::string Description;
+};
+
+ConfigPasses MakeConfig(const std::string& name, double diagonal)
+{
+  ConfigPasses c;
+  auto lighting = [&](const std::string& model) {
+    auto pass = vtkSmartPointer<vtkStylizeLightingPass>::New();
+    pass->SetModel(vtkStylizeLightingPass::GetModelFromName(model.c_str()));
+    return pass;
+  };
+  if (name == "plain")
+  {
+    c.Description = "VTK's default rendering, no pass";
+  }
+  else if (name == "sobel")
+  {
+    auto steps = vtkSmartPointer<vtkRenderStepsPass>::New();
+    auto sobel = vtkSmartPointer<vtkSobelGradientMagnitudePass>::New();
+    sobel->SetDelegatePass(steps);
+    c.Root = sobel;
+    c.Keep = { steps };
+    c.Description = "vtkSobelGradientMagnitudePass, delegate vtkRenderStepsPass";
+  }
+  else if (name == "ssao")
+  {
+    auto steps = vtkSmartPointer<vtkRenderStepsPass>::New();
+    auto ssao = vtkSmartPointer<vtkSSAOPass>::New();
+    ssao->SetDelegatePass(steps);
+    ssao->SetRadius(0.1 * diagonal);
+    ssao->SetBias(0.001 * diagonal);
+    std::ostringstream d;
+    d << "vtkSSAOPass, delegate vtkRenderStepsPass, radius 0.1 x diagonal, bias 0.001 x "
+         "diagonal, kernel "
+      << ssao->GetKernelSize() << ", blur " << (ssao->GetBlur() ? "on" : "off");
+    c.Root = ssao;
+    c.Keep = { steps };
+    c.Description = d.str();
+  }
+  else if (name == "edl")
+  {
+    auto steps = vtkSmartPointer<vtkRenderStepsPass>::New();
+    auto edl = vtkSmartPointer<vtkEDLShading>::New();
+    edl->SetDelegatePass(steps);
+    c.Root = edl;
+    c.Keep = { steps };
+    c.Description = "vtkEDLShading, delegate vtkRenderStepsPass";
+  }
+  else if (name.rfind("light-", 0) == 0)
+  {
+    auto pass = lighting(name.substr(6));
+    c.Root = pass;
+    c.Description = "vtkStylizeLightingPass (" + name.substr(6) + "), default delegate";
+  }
+  else if (name.rfind("gbuf-", 0) == 0)
+  {
+    const bool colorOnly = name == "gbuf-standard-color";
+    const std::string model = colorOnly ? "standard" : name.substr(5);
+    auto pass = lighting(model);
+    auto gbuf = vtkSmartPointer<vtkStylizeGBufferPass>::New();
+    gbuf->SetLightingPass(pass);
+    gbuf->SetChannels(
+      colorOnly ? 0 : (vtkStylizeGBufferPass::NORMAL | vtkStylizeGBufferPass::POSITION));
+    c.Root = gbuf;
+    c.Keep = { pass };
+    c.Description = "vtkStylizeGBufferPass with vtkStylizeLightingPass (" + model + "), " +
+      (colorOnly ? "colour and depth only" : "channels NORMAL|POSITION");
+  }
+  return c;
+}
+
+//------------------------------------------------------------------------------------------------
+// Measurements
+
+struct Result
+{
+  std::string Scene;
+  vtkIdType Triangles = 0;
+  int Lights = 0;
+  std::string Config;
+  double Median = 0.0;
+  double Min = 0.0;
+  double Max = 0.0;
+  int Frames = 0;
+};
+
+double Median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+}
+
+std::string Fixed(double v, int digits)
+{
+  if (!std::isfinite(v))
+  {
+    return "n/a";
+  }
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << v;
+  return s.str();
+}
+
+std::string FormatCount(vtkIdType n)
+{
+  std::string s = std::to_string(n);
+  for (int i = static_cast<int>(s.size()) - 3; i > 0; i -= 3)
+  {
+    s.insert(static_cast<size_t>(i), ",");
+  }
+  return s;
+}
+
+/** Extracts "OpenGL renderer string: ..." (and version) from ReportCapabilities(). */
+std::string RendererString(vtkRenderWindow* renWin, std::string* version)
+{
+  const char* caps = renWin->ReportCapabilities();
+  std::string renderer = "unknown";
+  if (!caps)
+  {
+    return renderer;
+  }
+  std::istringstream in(caps);
+  std::string line;
+  while (std::getline(in, line))
+  {
+    const auto colon = line.find(':');
+    if (colon == std::string::npos)
+    {
+      continue;
+    }
+    std::string value = line.substr(colon + 1);
+    value.erase(0, value.find_first_not_of(" \t"));
+    if (line.find("renderer string") != std::string::npos)
+    {
+      renderer = value;
+    }
+    else if (version && line.find("version string") != std::string::npos)
+    {
+      *version = value;
+    }
+  }
+  return renderer;
+}
+
+//------------------------------------------------------------------------------------------------
+// Report
+
+class Report
+{
+public:
+  Report(const Options& opt, std::vector<Result> results)
+    : Opt(opt)
+    , Results(std::move(results))
+  {
+    for (const auto& r : this->Results)
+    {
+      this->Index[Key(r.Scene, r.Lights, r.Config)] = &r;
+      this->TriangleCount[r.Scene] = r.Triangles;
+    }
+  }
+
+  const Result* Find(const std::string& scene, int lights, const std::string& config) const
+  {
+    auto it = this->Index.find(Key(scene, lights, config));
+    return it == this->Index.end() ? nullptr : it->second;
+  }
+
+  double MedianOf(const std::string& scene, int lights, const std::string& config) const
+  {
+    const Result* r = this->Find(scene, lights, config);
+    return r ? r->Median : NAN;
+  }
+
+  void Write(std::ostream& os, const std::string& header) const
+  {
+    const auto& cfgs = this->Opt.Configs;
+    os << header;
+
+    // Table 1: median ms.
+    os << "\n### Median ms per frame\n\n";
+    os << "| scene | triangles | lights |";
+    for (const auto& c : cfgs)
+    {
+      os << " " << c << " |";
+    }
+    os << "\n| --- | ---: | ---: |";
+    for (size_t i = 0; i < cfgs.size(); ++i)
+    {
+      os << " ---: |";
+    }
+    os << "\n";
+    for (const auto& sc : this->Opt.Scenes)
+    {
+      for (int n : this->Opt.Lights)
+      {
+        os << "| sphere " << sc.Name << " | " << FormatCount(this->Triangles(sc.Name)) << " | "
+           << n << " |";
+        for (const auto& c : cfgs)
+        {
+          os << " " << Fixed(this->MedianOf(sc.Name, n, c), 1) << " |";
+        }
+        os << "\n";
+      }
+    }
+
+    // Table 2: ratios to plain.
+    const bool hasPlain = std::find(cfgs.begin(), cfgs.end(), "plain") != cfgs.end();
+    if (hasPlain)
+    {
+      os << "\n### Ratio to plain (same scene, same lights, same run)\n\n";
+      os << "light-standard / plain compares our lighting pass with VTK's own equivalent "
+            "(the same Phong model, VTK's generated per-light shader vs. our light buffer).\n\n";
+      os << "| scene | lights |";
+      for (const auto& c : cfgs)
+      {
+        if (c != "plain")
+        {
+          os << " " << c << " |";
+        }
+      }
+      os << "\n| --- | ---: |";
+      for (size_t i = 1; i < cfgs.size(); ++i)
+      {
+        os << " ---: |";
+      }
+      os << "\n";
+      for (const auto& sc : this->Opt.Scenes)
+      {
+        for (int n : this->Opt.Lights)
+        {
+          const double plain = this->MedianOf(sc.Name, n, "plain");
+          os << "| sphere " << sc.Name << " | " << n << " |";
+          for (const auto& c : cfgs)
+          {
+            if (c != "plain")
+            {
+              os << " " << Fixed(this->MedianOf(sc.Name, n, c) / plain, 2) << " |";
+            }
+          }
+          os << "\n";
+        }
+      }
+    }
+
+    // Table 3: light-count slope.
+    if (this->Opt.Lights.size() >= 2)
+    {
+      os << "\n### Light-count slope (ms per light)\n\n";
+      os << "Least-squares fit of median ms against light count (";
+      for (size_t i = 0; i < this->Opt.Lights.size(); ++i)
+      {
+        os << (i ? ", " : "") << this->Opt.Lights[i];
+      }
+      os << " lights) per scene and configuration; the intercept is in parentheses.\n\n";
+      os << "| configuration |";
+      for (const auto& sc : this->Opt.Scenes)
+      {
+        os << " sphere " << sc.Name << " |";
+      }
+      os << "\n| --- |";
+      for (size_t i = 0; i < this->Opt.Scenes.size(); ++i)
+      {
+        os << " ---: |";
+      }
+      os << "\n";
+      for (const auto& c : cfgs)
+      {
+        os << "| " << c << " |";
+        for (const auto& sc : this->Opt.Scenes)
+        {
+          double slope = NAN, intercept = NAN;
+          this->Fit(sc.Name, c, slope, intercept);
+          os << " " << Fixed(slope, 3) << " (" << Fixed(intercept, 1) << ") |";
+        }
+        os << "\n";
+      }
+    }
+
+    // Table 4: flatness in triangle count.
+    if (hasPlain && this->Opt.Scenes.size() >= 2)
+    {
+      const SceneSpec& small = *std::min_element(this->Opt.Scenes.begin(),
+        this->Opt.Scenes.end(), [this](const SceneSpec& a, const SceneSpec& b) {
+          return this->Triangles(a.Name) < this->Triangles(b.Name);
+        });
+      const SceneSpec& large = *std::max_element(this->Opt.Scenes.begin(),
+        this->Opt.Scenes.end(), [this](const SceneSpec& a, const SceneSpec& b) {
+          return this->Triangles(a.Name) < this->Triangles(b.Name);
+        });
+      os << "\n### Is the added cost flat in triangle count?\n\n";
+      os << "Added cost = configuration − plain (median ms, same lights), at sphere " << small.Name
+         << " (" << FormatCount(this->Triangles(small.Name)) << " triangles) and sphere "
+         << large.Name << " (" << FormatCount(this->Triangles(large.Name))
+         << " triangles). Verdict \"flat\" when the added cost changes by less than "
+         << Fixed(this->Opt.FlatTolerance, 0) << "% of the larger of the two, or by less than "
+         << Fixed(this->Opt.FlatFloor, 0)
+         << " ms (timing noise); \"grows\" or \"shrinks\" otherwise.\n\n";
+      os << "| configuration | lights | added @ " << small.Name << " | added @ " << large.Name
+         << " | change | verdict |\n";
+      os << "| --- | ---: | ---: | ---: | ---: | --- |\n";
+      for (const auto& c : cfgs)
+      {
+        if (c == "plain")
+        {
+          continue;
+        }
+        for (int n : this->Opt.Lights)
+        {
+          const double a =
+            this->MedianOf(small.Name, n, c) - this->MedianOf(small.Name, n, "plain");
+          const double b =
+            this->MedianOf(large.Name, n, c) - this->MedianOf(large.Name, n, "plain");
+          const double change = b - a;
+          const double ref = std::max(std::abs(a), std::abs(b));
+          std::string verdict = "n/a";
+          std::string pct = "n/a";
+          if (std::isfinite(change))
+          {
+            if (ref > 0)
+            {
+              pct = (change >= 0 ? "+" : "") + Fixed(100.0 * change / ref, 0) + "%";
+            }
+            const bool flat = std::abs(change) < this->Opt.FlatFloor ||
+              std::abs(change) < this->Opt.FlatTolerance / 100.0 * ref;
+            verdict = flat ? "flat" : (change > 0 ? "grows" : "shrinks");
+          }
+          os << "| " << c << " | " << n << " | " << Fixed(a, 1) << " | " << Fixed(b, 1) << " | "
+             << (std::isfinite(change) ? (change >= 0 ? "+" : "") + Fixed(change, 1) : "n/a")
+             << " ms (" << pct << ") | " << verdict << " |\n";
+        }
+      }
+    }
+  }
+
+  void WriteCsv(std::ostream& os) const
+  {
+    os << "scene,triangles,lights,configuration,median_ms,min_ms,max_ms,frames\n";
+    for (const auto& r : this->Results)
+    {
+      os << "sphere-" << r.Scene << "," << r.Triangles << "," << r.Lights << "," << r.Config
+         << "," << Fixed(r.Median, 3) << "," << Fixed(r.Min, 3) << "," << Fixed(r.Max, 3) << ","
+         << r.Frames << "\n";
+    }
+  }
+
+private:
+  static std::string Key(const std::string& scene, int lights, const std::string& config)
+  {
+    return scene + "|" + std::to_string(lights) + "|" + config;
+  }
+
+  vtkIdType Triangles(const std::string& scene) const
+  {
+    auto it = this->TriangleCount.find(scene);
+    return it == this->TriangleCount.end() ? 0 : it->second;
+  }
+
+  void Fit(const std::string& scene, const std::string& config, double& slope,
+    double& intercept) const
+  {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int n = 0;
+    for (int lights : this->Opt.Lights)
+    {
+      const double y = this->MedianOf(scene, lights, config);
+      if (!std::isfinite(y))
+      {
+        continue;
+      }
+      sx += lights;
+      sy += y;
+      sxx += double(lights) * lights;
+      sxy += lights * y;
+      ++n;
+    }
+    const double den = n * sxx - sx * sx;
+    if (n < 2 || den == 0)
+    {
+      slope = intercept = NAN;
+      return;
+    }
+    slope = (n * sxy - sx * sy) / den;
+    intercept = (sy - slope * sx) / n;
+  }
+
+  const Options& Opt;
+  std::vector<Result> Results;
+  std::map<std::string, const Result*> Index;
+  std::map<std::string, vtkIdType> TriangleCount;
+};
+
+//------------------------------------------------------------------------------------------------
+// Running one (scene, configuration) pair over all light counts in one window.
+
+using Clock = std::chrono::steady_clock;
+
+/** Camera framing of a scene: VTK's ResetCamera() view of the mesh. */
+struct Framing
+{
+  double Center[3];
+  double Diagonal;
+  double CoveredPixels; // approximate number of pixels the sphere covers
+};
+
+Framing FrameMesh(vtkPolyData* mesh, const Options& opt)
+{
+  Framing f;
+  double b[6];
+  mesh->GetBounds(b);
+  for (int i = 0; i < 3; ++i)
+  {
+    f.Center[i] = 0.5 * (b[2 * i] + b[2 * i + 1]);
+  }
+  f.Diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+    (b[5] - b[4]) * (b[5] - b[4]));
+  vtkNew<vtkRenderer> ren;
+  ren->ResetCamera(b);
+  vtkCamera* cam = ren->GetActiveCamera();
+  const double radius = 0.5 * (b[1] - b[0]);
+  const double angular = std::asin(std::min(1.0, radius / cam->GetDistance()));
+  const double halfHeight = std::tan(vtkMath::RadiansFromDegrees(0.5 * cam->GetViewAngle()));
+  const double pixelRadius = 0.5 * opt.Height * std::tan(angular) / halfHeight;
+  f.CoveredPixels = vtkMath::Pi() * pixelRadius * pixelRadius;
+  return f;
+}
+
+/** One configuration: its own render window, renderer, actor and passes. */
+struct Bench
+{
+  std::string Config;
+  ConfigPasses Passes;
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkPolyDataMapper> Mapper;
+  vtkSmartPointer<vtkCamera> Initial;
+  std::vector<double> Times;
+  double Warmup = 0.0;
+
+  Bench(const std::string& config, const Options& opt, double diagonal)
+    : Config(config)
+    , Passes(MakeConfig(config, diagonal))
+  {
+    this->Window = vtkSmartPointer<vtkRenderWindow>::New();
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(opt.Width, opt.Height);
+    this->Renderer = vtkSmartPointer<vtkRenderer>::New();
+    this->Renderer->SetBackground(0.1, 0.1, 0.15);
+    this->Window->AddRenderer(this->Renderer);
+    this->Mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    this->Mapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(this->Mapper);
+    actor->GetProperty()->SetColor(0.9, 0.75, 0.6);
+    actor->GetProperty()->SetSpecular(0.3);
+    actor->GetProperty()->SetSpecularPower(20.0);
+    this->Renderer->AddActor(actor);
+    if (this->Passes.Root)
+    {
+      this->Renderer->SetPass(this->Passes.Root);
+    }
+    this->Initial = vtkSmartPointer<vtkCamera>::New();
+  }
+
+  /** Frees every GL resource (passes included) while the context exists, then detaches. */
+  void Release()
+  {
+    // VTK's Sobel pass and friends complain in their destructors about resources the window
+    // did not release: Finalize() releases them through the renderer first.
+    this->Window->Finalize();
+    this->Renderer->SetPass(nullptr);
+    this->Renderer->RemoveAllLights();
+    this->Renderer->RemoveAllViewProps();
+    this->Window->RemoveRenderer(this->Renderer);
+    this->Passes = ConfigPasses();
+    this->Mapper = nullptr;
+    this->Renderer = nullptr;
+    this->Window = nullptr;
+  }
+
+  /** One frame: a 0.5 degree azimuth step, Render() and glFinish. Returns milliseconds. */
+  double Frame()
+  {
+    this->Renderer->GetActiveCamera()->Azimuth(0.5);
+    const auto t0 = Clock::now();
+    this->Window->Render();
+    this->Window->WaitForCompletion(); // glFinish
+    const auto t1 = Clock::now();
+    return std::chrono::duration<double, std::milli>(t1 - t0).count();
+  }
+};
+
+/**
+ * Times all configurations over all scenes and light counts. Every configuration has its own
+ * window, kept for the whole run (only the mapper's input and the lights change), so the shader
+ * programs compiled for a light setup stay in that window's shader cache. For each (scene,
+ * lights) case every configuration first renders its warm-up frames, then the timed frames are
+ * interleaved: frame 1 of every configuration, frame 2 of every configuration, and so on, so a
+ * burst of load from other processes on this shared machine spreads over all configurations
+ * instead of falling on one.
+ */
+void RunAll(const Options& opt, const std::vector<vtkSmartPointer<vtkPolyData>>& meshes,
+  std::vector<Result>& results)
+{
+  const Framing first = FrameMesh(meshes[0], opt);
+  std::vector<std::unique_ptr<Bench>> benches;
+  for (const auto& config : opt.Configs)
+  {
+    benches.emplace_back(new Bench(config, opt, first.Diagonal));
+  }
+
+  for (size_t si = 0; si < opt.Scenes.size(); ++si)
+  {
+    const SceneSpec& scene = opt.Scenes[si];
+    vtkPolyData* mesh = meshes[si];
+    const Framing framing = FrameMesh(mesh, opt);
+    for (auto& b : benches)
+    {
+      b->Mapper->SetInputData(mesh);
+      b->Renderer->ResetCamera();
+      b->Initial->DeepCopy(b->Renderer->GetActiveCamera());
+    }
+    for (int lights : opt.Lights)
+    {
+      std::cout << "sphere " << scene.Name << ", " << lights << (lights == 1 ? " light" : " lights")
+                << std::endl;
+      for (auto& b : benches)
+      {
+        SetLights(b->Renderer, lights, framing.Center, 0.5 * framing.Diagonal / std::sqrt(3.0));
+        // Every configuration sees the same sequence of views.
+        b->Renderer->GetActiveCamera()->DeepCopy(b->Initial);
+        b->Renderer->ResetCameraClippingRange();
+        b->Times.clear();
+        const auto w0 = Clock::now();
+        for (int i = 0; i < opt.Warmup; ++i)
+        {
+          b->Frame();
+        }
+        b->Warmup = std::chrono::duration<double>(Clock::now() - w0).count();
+      }
+      for (int i = 0; i < opt.Frames; ++i)
+      {
+        for (auto& b : benches)
+        {
+          b->Times.push_back(b->Frame());
+        }
+      }
+      for (auto& b : benches)
+      {
+        Result r;
+        r.Scene = scene.Name;
+        r.Triangles = mesh->GetNumberOfPolys();
+        r.Lights = lights;
+        r.Config = b->Config;
+        r.Median = Median(b->Times);
+        r.Min = *std::min_element(b->Times.begin(), b->Times.end());
+        r.Max = *std::max_element(b->Times.begin(), b->Times.end());
+        r.Frames = opt.Frames;
+        results.push_back(r);
+        std::cout << "  " << std::left << std::setw(20) << b->Config << std::right << " median "
+                  << std::setw(9) << Fixed(r.Median, 1) << " ms  (min " << Fixed(r.Min, 1)
+                  << ", max " << Fixed(r.Max, 1) << "; warm-up " << Fixed(b->Warmup, 1) << " s)"
+                  << std::endl;
+        if (!opt.Images.empty())
+        {
+          vtkNew<vtkWindowToImageFilter> grab;
+          grab->SetInput(b->Window);
+          grab->ReadFrontBufferOff();
+          vtkNew<vtkPNGWriter> png;
+          png->SetInputConnection(grab->GetOutputPort());
+          png->SetFileName((opt.Images + "/" + scene.Name + "-" + std::to_string(lights) + "-" +
+            b->Config + ".png")
+                             .c_str());
+          png->Write();
+        }
+      }
+    }
+  }
+
+  for (auto& b : benches)
+  {
+    b->Release();
+  }
+}
+
+std::string Now()
+{
+  const std::time_t t = std::time(nullptr);
+  char buf[64];
+  std::strftime(buf, sizeof(buf), "%Y-%m-%d %H:%M UTC", std::gmtime(&t));
+  return buf;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options opt;
+  const int parsed = ParseOptions(argc, argv, opt);
+  if (parsed != 0)
+  {
+    return parsed == 2 ? EXIT_SUCCESS : EXIT_FAILURE;
+  }
+
+  // GL renderer first, from a small window that stays open for the whole run: each measured
+  // window opens and closes its own display connection, and an X server without -noreset (Xvfb's
+  // default) resets when its last client leaves, refusing the next window's connection for a
+  // moment ("bad X server connection ... Aborting"). Holding this window avoids that race.
+  std::string rendererString, glVersion;
+  vtkNew<vtkRenderWindow> probe;
+  vtkNew<vtkRenderer> probeRenderer;
+  probe->SetOffScreenRendering(1);
+  probe->SetMultiSamples(0);
+  probe->SetSize(16, 16);
+  probe->AddRenderer(probeRenderer);
+  probe->Render();
+  rendererString = RendererString(probe, &glVersion);
+  std::cout << "GL_RENDERER: " << rendererString << "\n";
+  std::cout << "GL_VERSION:  " << glVersion << "\n";
+  std::cout << "VTK " << vtkVersion::GetVTKVersion() << ", " << opt.Width << "x" << opt.Height
+            << ", multisampling off, " << opt.Warmup << " warm-up + " << opt.Frames
+            << " timed frames per case\n\n";
+
+  const auto start = Clock::now();
+  std::vector<Result> results;
+  std::map<std::string, std::string> descriptions;
+  std::vector<vtkSmartPointer<vtkPolyData>> meshes;
+  for (const auto& scene : opt.Scenes)
+  {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetThetaResolution(scene.Theta);
+    sphere->SetPhiResolution(scene.Phi);
+    sphere->SetRadius(1.0);
+    sphere->Update();
+    vtkSmartPointer<vtkPolyData> mesh = sphere->GetOutput();
+    meshes.push_back(mesh);
+    std::cout << "Scene sphere " << scene.Name << ": " << FormatCount(mesh->GetNumberOfPolys())
+              << " triangles, " << FormatCount(mesh->GetNumberOfPoints()) << " points (theta "
+              << scene.Theta << ", phi " << scene.Phi << ")" << std::endl;
+  }
+  const Framing framing = FrameMesh(meshes[0], opt);
+  std::cout << "The sphere covers about " << Fixed(framing.CoveredPixels / 1000.0, 0)
+            << "k pixels (" << Fixed(100.0 * framing.CoveredPixels / opt.Width / opt.Height, 1)
+            << "% of the image)\n\n";
+  for (const auto& config : opt.Configs)
+  {
+    descriptions[config] = MakeConfig(config, 1.0).Description;
+  }
+  RunAll(opt, meshes, results);
+  // Rows in report order: scene, light count, configuration.
+  auto rank = [&opt](const Result& r) {
+    size_t s = 0, l = 0, c = 0;
+    while (s < opt.Scenes.size() && opt.Scenes[s].Name != r.Scene)
+    {
+      ++s;
+    }
+    while (l < opt.Lights.size() && opt.Lights[l] != r.Lights)
+    {
+      ++l;
+    }
+    while (c < opt.Configs.size() && opt.Configs[c] != r.Config)
+    {
+      ++c;
+    }
+    return std::make_tuple(s, l, c);
+  };
+  std::stable_sort(results.begin(), results.end(),
+    [&rank](const Result& a, const Result& b) { return rank(a) < rank(b); });
+  const double totalSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+  std::ostringstream header;
+  header << "## VTK Stylize benchmark\n\n";
+  header << "- Renderer: " << rendererString << " (OpenGL " << glVersion << "), VTK "
+         << vtkVersion::GetVTKVersion() << "\n";
+  header << "- " << opt.Width << "x" << opt.Height
+         << ", offscreen, multisampling off; per case " << opt.Warmup
+         << " warm-up frames (shader compilation excluded), then the median of " << opt.Frames
+         << " timed frames, each a 0.5° camera azimuth step, Render() + glFinish, wall clock; "
+            "one window per configuration, timed frames interleaved across configurations\n";
+  header << "- Scenes: vtkSphereSource with point normals, one actor (Phong, specular 0.3), "
+            "framed by ResetCamera(): the sphere covers about "
+         << Fixed(framing.CoveredPixels / 1000.0, 0) << "k pixels ("
+         << Fixed(100.0 * framing.CoveredPixels / opt.Width / opt.Height, 1)
+         << "% of the image)\n";
+  header << "- Lights: 1 = VTK's default headlight; more = scene lights on a golden-angle "
+            "spiral around the object (1/3 directional, 1/3 point, 1/3 spot), white, "
+            "intensity 1.5 / count; the same for every configuration\n";
+  header << "- Configurations:\n";
+  for (const auto& c : opt.Configs)
+  {
+    header << "  - `" << c << "`: " << descriptions[c] << "\n";
+  }
+  header << "- Run time: " << Fixed(totalSeconds, 0) << " s, " << Now() << "\n";
+
+  Report report(opt, results);
+  std::ostringstream md;
+  report.Write(md, header.str());
+
+  bool ok = true;
+  {
+    std::ofstream csv(opt.Csv);
+    report.WriteCsv(csv);
+    csv.close();
+    if (!csv)
+    {
+      std::cerr << "Could not write " << opt.Csv << "\n";
+      ok = false;
+    }
+  }
+  {
+    std::ofstream out(opt.Markdown);
+    out << md.str();
+    out.close();
+    if (!out)
+    {
+      std::cerr << "Could not write " << opt.Markdown << "\n";
+      ok = false;
+    }
+  }
+  probe->Finalize();
+  std::cout << "\n" << md.str() << "\nCSV: " << opt.Csv << "\nMarkdown: " << opt.Markdown
+            << std::endl;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
