@@ -41,7 +41,9 @@ stylize_start_display() {
   local n
   for n in $(seq 90 140); do
     if [ ! -e "/tmp/.X${n}-lock" ] && [ ! -e "/tmp/.X11-unix/X${n}" ]; then
-      Xvfb ":$n" -screen 0 1920x1080x24 -nolisten tcp >/dev/null 2>&1 &
+      # -noreset: by default Xvfb resets when its last client disconnects, and a test that
+      # connects during the reset fails with "bad X server connection".
+      Xvfb ":$n" -screen 0 1920x1080x24 -nolisten tcp -noreset >/dev/null 2>&1 &
       STYLIZE_XVFB_PID=$!
       export DISPLAY=":$n"
       trap 'kill "$STYLIZE_XVFB_PID" 2>/dev/null || true' EXIT
