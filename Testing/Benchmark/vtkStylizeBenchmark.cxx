@@ -676,6 +676,13 @@ public:
          << Fixed(this->Opt.FlatTolerance, 0) << "% of the larger of the two, or by less than "
          << Fixed(this->Opt.FlatFloor, 0)
          << " ms (timing noise); \"grows\" or \"shrinks\" otherwise.\n\n";
+      os << "Read the verdict at 1 light for the overhead of the pass itself. With many lights the "
+            "added cost is dominated by the difference in lighting cost (negative: cheaper than "
+            "VTK's lighting), which is paid per shaded fragment. On a software rasterizer such as "
+            "llvmpipe the number of shaded fragments grows with the triangle count (sub-pixel "
+            "triangles are shaded in 2x2 quads), so per-fragment work in the geometry pass (a "
+            "heavier lighting shader, extra G-buffer targets) grows with triangles too; full-screen "
+            "post-processing does not.\n\n";
       os << "| configuration | lights | added @ " << small.Name << " | added @ " << large.Name
          << " | change | verdict |\n";
       os << "| --- | ---: | ---: | ---: | ---: | --- |\n";
