@@ -21,6 +21,7 @@
  * capture of VTK's messages in vtkstylizeCommon.cxx.
  */
 
+#include "vtkComicPass.h"
 #include "vtkStylizeDemoScene.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
@@ -184,6 +185,7 @@ private:
 constexpr int MaxImageSize = 16384;
 constexpr int MaxLights = 10000;
 constexpr int MaxMultiSamples = 16;
+constexpr int MaxMagnify = 8;
 constexpr double MaxAngle = 360.0;
 constexpr double MinZoom = 0.01;
 constexpr double MaxZoom = 100.0;
@@ -229,30 +231,63 @@ struct LightingSettings
   }
 };
 
+/** Copies every lighting setting from one lighting pass to another. */
+void CopyLighting(vtkStylizeLightingPass* from, vtkStylizeLightingPass* to)
+{
+  to->SetModel(from->GetModel());
+  to->SetSubjectFactor(from->GetSubjectFactor());
+  to->SetGrayLevelsNear(from->GetGrayLevelsNear());
+  to->SetGrayLevelsFar(from->GetGrayLevelsFar());
+  to->SetSpecularGain(from->GetSpecularGain());
+  to->SetScattering(from->GetScattering());
+  to->SetSpecularOcclusion(from->GetSpecularOcclusion());
+}
+
+/** Settings of the style passes, applied in command-line order to the pass that is built. */
+struct StyleSettings
+{
+  std::vector<std::function<void(vtkComicPass*)>> Comic;
+};
+
 /**
- * A style: its name for --style, a one-line description for --help, and the function that builds
- * the renderer's pass from the lighting pass (and the G-buffer pass when --gbuffer is given).
- * New styles are added to Styles() below.
+ * A style: its name for --style, a one-line description for --help, the lighting model it uses
+ * unless --lighting says otherwise (-1: the lighting pass's default), and the function that
+ * builds the renderer's pass from the lighting pass (and the G-buffer pass when --gbuffer is
+ * given). New styles are added to Styles() below.
  */
 struct StyleSpec
 {
   const char* Name;
   const char* Description;
-  std::function<vtkSmartPointer<vtkRenderPass>(vtkStylizeLightingPass*, vtkStylizeGBufferPass*)>
+  int DefaultModel;
+  std::function<vtkSmartPointer<vtkRenderPass>(
+    vtkStylizeLightingPass*, vtkStylizeGBufferPass*, const StyleSettings&)>
     MakePass;
 };
 
 const std::vector<StyleSpec>& Styles()
 {
   static const std::vector<StyleSpec> styles = {
-    { "none", "no style pass: the lighting model only",
-      [](vtkStylizeLightingPass* lighting,
-        vtkStylizeGBufferPass* gbuffer) -> vtkSmartPointer<vtkRenderPass> {
+    { "none", "no style pass: the lighting model only", -1,
+      [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass* gbuffer,
+        const StyleSettings&) -> vtkSmartPointer<vtkRenderPass> {
         if (gbuffer)
         {
           return gbuffer;
         }
         return lighting;
+      } },
+    { "comic", "black-and-white comic: edges, halftone dots, hatching (vtkComicPass)",
+      vtkStylizeLightingPass::COMIC,
+      [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
+        const StyleSettings& settings) -> vtkSmartPointer<vtkRenderPass> {
+        auto comic = vtkSmartPointer<vtkComicPass>::New();
+        CopyLighting(lighting, comic->GetLightingPass());
+        for (const auto& apply : settings.Comic)
+        {
+          apply(comic);
+        }
+        return comic;
       } },
   };
   return styles;
@@ -293,6 +328,9 @@ struct Options
   bool Parallel = false;
   double Background[3] = { 1.0, 1.0, 1.0 };
   LightingSettings Lighting;
+  bool LightingModelGiven = false;
+  StyleSettings StyleOptions;
+  int Magnify = 1;
   bool GBuffer = false;
   std::optional<double> IsoValue;
   std::string ColorBy;
@@ -390,6 +428,146 @@ struct OptionSpec
   std::string Help;
   std::function<void(Options&, const std::string&)> Apply;
 };
+
+/**
+ * The comic options. Ranges and defaults come from vtkComicPass itself (its clamp macros'
+ * Min/Max values and a default-constructed pass), so --help cannot drift from the class.
+ */
+void AddComicOptions(std::vector<OptionSpec>& t)
+{
+  vtkNew<vtkComicPass> d;
+  struct Number
+  {
+    const char* Name;
+    const char* Argument;
+    const char* Help;
+    double (vtkComicPass::*Get)();
+    double (vtkComicPass::*Min)();
+    double (vtkComicPass::*Max)();
+    void (vtkComicPass::*Set)(double);
+  };
+  const Number numbers[] = {
+    { "--edge-width", "PT", "comic: edge width in points", &vtkComicPass::GetEdgeWidth,
+      &vtkComicPass::GetEdgeWidthMinValue, &vtkComicPass::GetEdgeWidthMaxValue,
+      &vtkComicPass::SetEdgeWidth },
+    { "--depth-threshold", "T", "comic: depth-edge threshold (surface slope against the view ray)",
+      &vtkComicPass::GetDepthThreshold, &vtkComicPass::GetDepthThresholdMinValue,
+      &vtkComicPass::GetDepthThresholdMaxValue, &vtkComicPass::SetDepthThreshold },
+    { "--normal-threshold", "T", "comic: normal-edge threshold (change of the unit normal)",
+      &vtkComicPass::GetNormalThreshold, &vtkComicPass::GetNormalThresholdMinValue,
+      &vtkComicPass::GetNormalThresholdMaxValue, &vtkComicPass::SetNormalThreshold },
+    { "--color-threshold", "T", "comic: colour-edge threshold (change of RGB in [0, 1])",
+      &vtkComicPass::GetColorThreshold, &vtkComicPass::GetColorThresholdMinValue,
+      &vtkComicPass::GetColorThresholdMaxValue, &vtkComicPass::SetColorThreshold },
+    { "--dot-spacing", "PT", "comic: halftone dot spacing in points", &vtkComicPass::GetDotSpacing,
+      &vtkComicPass::GetDotSpacingMinValue, &vtkComicPass::GetDotSpacingMaxValue,
+      &vtkComicPass::SetDotSpacing },
+    { "--dot-angle", "DEG", "comic: screen angle of the dot grid in degrees",
+      &vtkComicPass::GetDotAngle, &vtkComicPass::GetDotAngleMinValue,
+      &vtkComicPass::GetDotAngleMaxValue, &vtkComicPass::SetDotAngle },
+    { "--hatch-spacing", "PT", "comic: distance between hatch lines in points",
+      &vtkComicPass::GetHatchSpacing, &vtkComicPass::GetHatchSpacingMinValue,
+      &vtkComicPass::GetHatchSpacingMaxValue, &vtkComicPass::SetHatchSpacing },
+    { "--hatch-width", "PT", "comic: hatch line width in points", &vtkComicPass::GetHatchWidth,
+      &vtkComicPass::GetHatchWidthMinValue, &vtkComicPass::GetHatchWidthMaxValue,
+      &vtkComicPass::SetHatchWidth },
+    { "--hatch-angle", "DEG", "comic: hatch direction in degrees from the x axis",
+      &vtkComicPass::GetHatchAngle, &vtkComicPass::GetHatchAngleMinValue,
+      &vtkComicPass::GetHatchAngleMaxValue, &vtkComicPass::SetHatchAngle },
+    { "--bright", "T", "comic: tone above which only dots are drawn (a1 of eq. 13)",
+      &vtkComicPass::GetBrightThreshold, &vtkComicPass::GetBrightThresholdMinValue,
+      &vtkComicPass::GetBrightThresholdMaxValue, &vtkComicPass::SetBrightThreshold },
+    { "--dark", "T", "comic: tone below which only hatching is drawn (a2 of eq. 13)",
+      &vtkComicPass::GetDarkThreshold, &vtkComicPass::GetDarkThresholdMinValue,
+      &vtkComicPass::GetDarkThresholdMaxValue, &vtkComicPass::SetDarkThreshold },
+    { "--cross-threshold", "T", "comic: tone below which the hatching is crossed",
+      &vtkComicPass::GetCrossThreshold, &vtkComicPass::GetCrossThresholdMinValue,
+      &vtkComicPass::GetCrossThresholdMaxValue, &vtkComicPass::SetCrossThreshold },
+    { "--reference-height", "PX",
+      "comic: height of the image in which a point is a pixel (0: window pixels)",
+      &vtkComicPass::GetReferenceHeight, &vtkComicPass::GetReferenceHeightMinValue,
+      &vtkComicPass::GetReferenceHeightMaxValue, &vtkComicPass::SetReferenceHeight },
+  };
+  for (const Number& n : numbers)
+  {
+    const double lo = (d.Get()->*n.Min)();
+    const double hi = (d.Get()->*n.Max)();
+    const std::string name = n.Name;
+    auto set = n.Set;
+    t.push_back({ name, n.Argument,
+      std::string(n.Help) + ", [" + FormatNumber(lo) + ", " + FormatNumber(hi) +
+        "] (default: " + FormatNumber((d.Get()->*n.Get)()) + ")",
+      [name, lo, hi, set](Options& opt, const std::string& v) {
+        const double value = DoubleInRange(name, v, lo, hi);
+        opt.StyleOptions.Comic.push_back([set, value](vtkComicPass* p) { (p->*set)(value); });
+      } });
+  }
+  t.push_back({ "--edge-weights", "D,N,C",
+    "comic: weights of the depth, normal and colour edges, each in [0, 1], normalized to sum "
+    "1 (default: 1,1,1)",
+    [](Options& opt, const std::string& v) {
+      const auto parts = Split(v, ',');
+      double w[3];
+      if (parts.size() != 3)
+      {
+        UsageError("invalid value " + Quote(v) + " for --edge-weights: expected D,N,C, e.g. 1,1,0");
+      }
+      for (int i = 0; i < 3; ++i)
+      {
+        w[i] = DoubleInRange("--edge-weights", parts[i], 0.0, 1.0);
+      }
+      opt.StyleOptions.Comic.push_back([w0 = w[0], w1 = w[1], w2 = w[2]](vtkComicPass* p) {
+        p->SetEdgeWeights(w0, w1, w2);
+      });
+    } });
+  t.push_back({ "--hatch-directions", "N",
+    "comic: hatch direction follows the screen normal in N steps over 180 degrees, [" +
+      std::to_string(d->GetHatchDirectionsMinValue()) + ", " +
+      std::to_string(d->GetHatchDirectionsMaxValue()) + "], 0 = one direction (default: " +
+      std::to_string(d->GetHatchDirections()) + ")",
+    [lo = d->GetHatchDirectionsMinValue(), hi = d->GetHatchDirectionsMaxValue()](
+      Options& opt, const std::string& v) {
+      const int n = IntInRange("--hatch-directions", v, lo, hi);
+      opt.StyleOptions.Comic.push_back([n](vtkComicPass* p) { p->SetHatchDirections(n); });
+    } });
+  t.push_back({ "--anchor", "screen|object",
+    "comic: anchor the dots and hatching to the screen or to the surface (default: screen)",
+    [](Options& opt, const std::string& v) {
+      const std::string l = Lower(v);
+      if (l != "screen" && l != "object")
+      {
+        UsageError("unknown anchor " + Quote(v) + " for --anchor (expected screen, object)");
+      }
+      const int a = l == "object" ? vtkComicPass::OBJECT : vtkComicPass::SCREEN;
+      opt.StyleOptions.Comic.push_back([a](vtkComicPass* p) { p->SetAnchor(a); });
+    } });
+  struct Flag
+  {
+    const char* Name;
+    const char* Help;
+    void (vtkComicPass::*Set)(bool);
+    bool Value;
+  };
+  const Flag flags[] = {
+    { "--no-edges", "comic: no edges (default: edges on)", &vtkComicPass::SetEdges, false },
+    { "--no-dots", "comic: no halftone dots, the bright zone keeps its tone (default: dots on)",
+      &vtkComicPass::SetDots, false },
+    { "--no-hatching", "comic: no hatching, the dark zone keeps its tone (default: hatching on)",
+      &vtkComicPass::SetHatching, false },
+    { "--no-cross", "comic: no cross-hatching in the darkest zone (default: crossed)",
+      &vtkComicPass::SetCrossHatching, false },
+    { "--tinted", "comic: keep the data's colours under the ink (default: black and white)",
+      &vtkComicPass::SetTinted, true },
+  };
+  for (const Flag& f : flags)
+  {
+    auto set = f.Set;
+    const bool value = f.Value;
+    t.push_back({ f.Name, nullptr, f.Help, [set, value](Options& opt, const std::string&) {
+                   opt.StyleOptions.Comic.push_back([set, value](vtkComicPass* p) { (p->*set)(value); });
+                 } });
+  }
+}
 
 std::vector<OptionSpec> OptionTable(const LightingSettings& d)
 {
@@ -490,6 +668,7 @@ std::vector<OptionSpec> OptionTable(const LightingSettings& d)
         UsageError("unknown lighting model " + Quote(v) + " for --lighting (expected " + models + ")");
       }
       opt.Lighting.Model = m;
+      opt.LightingModelGiven = true;
     } });
   t.push_back({ "--subject", "P1",
     "comic: subject factor of the ambient term, [0, 1] (default: " +
@@ -529,6 +708,13 @@ std::vector<OptionSpec> OptionTable(const LightingSettings& d)
   t.push_back({ "--gbuffer", nullptr,
     "render through the shared G-buffer pass (default: the lighting pass alone)",
     [](Options& opt, const std::string&) { opt.GBuffer = true; } });
+  AddComicOptions(t);
+  t.push_back({ "--magnify", "N",
+    "write an image N times the window size, rendered in N x N tiles (vtkWindowToImageFilter "
+    "scale), [1, " + std::to_string(MaxMagnify) + "] (default: 1)",
+    [](Options& opt, const std::string& v) {
+      opt.Magnify = IntInRange("--magnify", v, 1, MaxMagnify);
+    } });
   t.push_back({ "--iso", "VALUE",
     "image data only: contour value, any finite number (default: the middle of the scalar range)",
     [](Options& opt, const std::string& v) {
@@ -1140,14 +1326,16 @@ void RenderAndWrite(vtkRenderWindow* window, const Options& opt)
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
   grab->ShouldRerenderOff();
+  grab->SetScale(opt.Magnify);
   grab->Update();
   CheckVTKErrors("reading the rendered image failed");
   int dims[3];
   grab->GetOutput()->GetDimensions(dims);
-  if (dims[0] != opt.Width || dims[1] != opt.Height)
+  if (dims[0] != opt.Width * opt.Magnify || dims[1] != opt.Height * opt.Magnify)
   {
     Fail("rendering failed: got a " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) +
-      " image instead of " + std::to_string(opt.Width) + "x" + std::to_string(opt.Height));
+      " image instead of " + std::to_string(opt.Width * opt.Magnify) + "x" +
+      std::to_string(opt.Height * opt.Magnify));
   }
 
   // Write to a temporary file beside the output, then rename: never a partial output file.
@@ -1251,6 +1439,11 @@ int Run(int argc, char* argv[])
   SetUpCamera(ren, opt, builtIn);
 
   // Passes.
+  const StyleSpec* style = FindStyle(opt.Style);
+  if (!opt.LightingModelGiven && style->DefaultModel >= 0)
+  {
+    opt.Lighting.Model = style->DefaultModel;
+  }
   vtkNew<vtkStylizeLightingPass> lighting;
   opt.Lighting.ApplyTo(lighting);
   vtkSmartPointer<vtkStylizeGBufferPass> gbuffer;
@@ -1259,8 +1452,7 @@ int Run(int argc, char* argv[])
     gbuffer = vtkSmartPointer<vtkStylizeGBufferPass>::New();
     gbuffer->SetLightingPass(lighting);
   }
-  const StyleSpec* style = FindStyle(opt.Style);
-  ren->SetPass(style->MakePass(lighting, gbuffer));
+  ren->SetPass(style->MakePass(lighting, gbuffer, opt.StyleOptions));
 
   RenderAndWrite(window, opt);
   if (!opt.Quiet)

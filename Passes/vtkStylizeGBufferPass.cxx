@@ -132,7 +132,8 @@ void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Channels: " << ((this->Channels & NORMAL) ? "normal " : "")
-     << ((this->Channels & POSITION) ? "position" : "") << "\n";
+     << ((this->Channels & POSITION) ? "position " : "")
+     << ((this->Channels & LINEAR_DEPTH) ? "linear-depth" : "") << "\n";
   os << indent << "Precision: " << (this->Precision == FULL ? "full" : "half") << "\n";
   os << indent << "PositionSpace: " << (this->PositionSpace == VIEW ? "view" : "object") << "\n";
   os << indent << "Viewport: " << this->Viewport[0] << " " << this->Viewport[1] << " "
@@ -147,7 +148,7 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
   const bool precisionChanged = this->AllocatedPrecision != this->Precision;
   this->AllocatedPrecision = this->Precision;
   const int colorFormat = this->Precision == FULL ? GL_RGBA32F : GL_RGBA16F;
-  auto make = [&](vtkTextureObject*& tex, int internalFormat, bool isDepth) {
+  auto make = [&](vtkTextureObject*& tex, int internalFormat, bool isDepth, int comps = 4) {
     if (tex && (tex->GetContext() != renWin || (!isDepth && precisionChanged)))
     {
       tex->Delete();
@@ -168,9 +169,9 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
       else
       {
         tex->SetInternalFormat(internalFormat);
-        tex->SetFormat(GL_RGBA);
+        tex->SetFormat(comps == 1 ? GL_RED : GL_RGBA);
         tex->SetDataType(GL_FLOAT);
-        tex->Allocate2D(w, h, 4, VTK_FLOAT);
+        tex->Allocate2D(w, h, comps, VTK_FLOAT);
       }
     }
     else
@@ -204,6 +205,14 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
   {
     drop(this->PositionTexture);
   }
+  if (this->Channels & LINEAR_DEPTH)
+  {
+    make(this->LinearDepthTexture, GL_R32F, false, 1);
+  }
+  else
+  {
+    drop(this->LinearDepthTexture);
+  }
   if (!this->FrameBufferObject)
   {
     this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
@@ -215,7 +224,8 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
 void vtkStylizeGBufferPass::FreeTextures(vtkWindow* w)
 {
   for (vtkTextureObject** tex :
-    { &this->ColorTexture, &this->NormalTexture, &this->PositionTexture, &this->DepthTexture })
+    { &this->ColorTexture, &this->NormalTexture, &this->PositionTexture,
+      &this->LinearDepthTexture, &this->DepthTexture })
   {
     if (*tex)
     {
@@ -270,10 +280,11 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   vtkOpenGLFramebufferObject* fbo = this->FrameBufferObject;
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind();
-  const unsigned int n = 1 + (this->NormalTexture ? 1 : 0) + (this->PositionTexture ? 1 : 0);
+  const unsigned int n = 1 + (this->NormalTexture ? 1 : 0) + (this->PositionTexture ? 1 : 0) +
+    (this->LinearDepthTexture ? 1 : 0);
   if (n != this->NumberOfAttachments)
   {
-    fbo->RemoveColorAttachments(4); // the channel set changed: drop the old attachments
+    fbo->RemoveColorAttachments(8); // the channel set changed: drop the old attachments
   }
   unsigned int index = 0;
   fbo->AddColorAttachment(index++, this->ColorTexture);
@@ -284,6 +295,10 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   if (this->PositionTexture)
   {
     fbo->AddColorAttachment(index++, this->PositionTexture);
+  }
+  if (this->LinearDepthTexture)
+  {
+    fbo->AddColorAttachment(index++, this->LinearDepthTexture);
   }
   this->NumberOfAttachments = n;
   this->Internals->ClearPass->Attachments = n;
@@ -423,6 +438,9 @@ bool vtkStylizeGBufferPass::DownloadChannel(int buffer, vtkFloatArray* out)
     case DEPTH_BUFFER:
       tex = this->DepthTexture;
       break;
+    case LINEAR_DEPTH_BUFFER:
+      tex = this->LinearDepthTexture;
+      break;
     default:
       break;
   }
@@ -432,7 +450,7 @@ bool vtkStylizeGBufferPass::DownloadChannel(int buffer, vtkFloatArray* out)
   }
   const int w = static_cast<int>(tex->GetWidth());
   const int h = static_cast<int>(tex->GetHeight());
-  const int comps = buffer == DEPTH_BUFFER ? 1 : 4;
+  const int comps = (buffer == DEPTH_BUFFER || buffer == LINEAR_DEPTH_BUFFER) ? 1 : 4;
   out->SetNumberOfComponents(comps);
   out->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
 
@@ -454,8 +472,12 @@ bool vtkStylizeGBufferPass::DownloadChannel(int buffer, vtkFloatArray* out)
     {
       index = this->NormalTexture ? 2 : 1;
     }
+    else if (buffer == LINEAR_DEPTH_BUFFER)
+    {
+      index = 1 + (this->NormalTexture ? 1 : 0) + (this->PositionTexture ? 1 : 0);
+    }
     glReadBuffer(GL_COLOR_ATTACHMENT0 + index);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, out->GetPointer(0));
+    glReadPixels(0, 0, w, h, comps == 1 ? GL_RED : GL_RGBA, GL_FLOAT, out->GetPointer(0));
   }
   fbo->UnBind(GL_READ_FRAMEBUFFER);
   fbo->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
@@ -508,7 +530,11 @@ bool vtkStylizeGBufferPass::PostReplaceShaderValues(
   // The lighting pass (when it shades this shader) defines stylizeN, the normal it used.
   const bool stylizeLit =
     surface && fragmentShader.find("//VTK::StylizeLight::Impl") != std::string::npos;
-  std::string normalValue, positionValue;
+  std::string normalValue, positionValue, linearDepthValue;
+  if (this->Channels & LINEAR_DEPTH)
+  {
+    linearDepthValue = surface ? "vec4(-vertexVC.z, 0.0, 0.0, 1.0)" : "vec4(0.0)";
+  }
   if (this->Channels & NORMAL)
   {
     if (!surface)
@@ -566,6 +592,15 @@ bool vtkStylizeGBufferPass::PostReplaceShaderValues(
       }
       vtkShaderProgram::Substitute(line, "POSITION_INDEX", std::to_string(index++));
       vtkShaderProgram::Substitute(line, "POSITION_VALUE", positionValue);
+    }
+    else if (line.find("LINEAR_DEPTH_INDEX") != std::string::npos)
+    {
+      if (linearDepthValue.empty())
+      {
+        continue;
+      }
+      vtkShaderProgram::Substitute(line, "LINEAR_DEPTH_INDEX", std::to_string(index++));
+      vtkShaderProgram::Substitute(line, "LINEAR_DEPTH_VALUE", linearDepthValue);
     }
     code += line + "\n";
   }

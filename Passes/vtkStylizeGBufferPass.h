@@ -12,7 +12,11 @@
  * | depth    | yes     | DEPTH32F               | window-space depth, 1 on the background         |
  * | NORMAL   | request | RGBA16F (or 32F)       | view-space unit shading normal, a = 1 on surfaces|
  * | POSITION | request | RGBA32F                | view- or object-space position, a = 1 on surfaces|
+ * | LINEAR_DEPTH | request | R32F               | distance along the view axis (-z in view space) |
+ * |          |         |                        | in world units, 0 where there is no surface     |
  *
+ * LINEAR_DEPTH keeps full relative precision at any near/far ratio (the window-space depth of a
+ * 1e7 near/far ratio has almost none left far away), which scale-free screen-space edges need.
  * Alpha 0 in the normal and position channels marks the background and primitives that have no
  * surface normal (unlit lines and points). The normal is the one the lighting model shaded with:
  * zero-length or NaN normals are replaced by the facet normal, so the buffer holds no NaN.
@@ -60,7 +64,8 @@ public:
   enum ChannelBits
   {
     NORMAL = 1,
-    POSITION = 2
+    POSITION = 2,
+    LINEAR_DEPTH = 4
   };
 
   /** Buffers that DownloadChannel() can read back. */
@@ -69,7 +74,8 @@ public:
     COLOR_BUFFER = 0,
     NORMAL_BUFFER = 1,
     POSITION_BUFFER = 2,
-    DEPTH_BUFFER = 3
+    DEPTH_BUFFER = 3,
+    LINEAR_DEPTH_BUFFER = 4
   };
 
   /** Spaces for the POSITION channel. */
@@ -81,10 +87,10 @@ public:
 
   ///@{
   /**
-   * Bit mask of the optional channels to allocate and write (NORMAL, POSITION). Only these are
-   * allocated. Default 0: colour and depth only.
+   * Bit mask of the optional channels to allocate and write (NORMAL, POSITION, LINEAR_DEPTH).
+   * Only these are allocated. Default 0: colour and depth only.
    */
-  vtkSetClampMacro(Channels, int, 0, (NORMAL | POSITION));
+  vtkSetClampMacro(Channels, int, 0, (NORMAL | POSITION | LINEAR_DEPTH));
   vtkGetMacro(Channels, int);
   ///@}
 
@@ -146,6 +152,7 @@ public:
   vtkGetObjectMacro(ColorTexture, vtkTextureObject);
   vtkGetObjectMacro(NormalTexture, vtkTextureObject);
   vtkGetObjectMacro(PositionTexture, vtkTextureObject);
+  vtkGetObjectMacro(LinearDepthTexture, vtkTextureObject);
   vtkGetObjectMacro(DepthTexture, vtkTextureObject);
   ///@}
 
@@ -154,7 +161,7 @@ public:
 
   /**
    * Reads a buffer of the last frame back as floats (4 components per pixel for colour, normal
-   * and position, 1 for depth), rows bottom to top. The window's context must be current, as it
+   * and position, 1 for depth and linear depth), rows bottom to top. The window's context must be current, as it
    * is right after a render. Returns false when the channel was not allocated.
    */
   bool DownloadChannel(int buffer, vtkFloatArray* out);
@@ -200,6 +207,7 @@ protected:
   vtkTextureObject* ColorTexture = nullptr;
   vtkTextureObject* NormalTexture = nullptr;
   vtkTextureObject* PositionTexture = nullptr;
+  vtkTextureObject* LinearDepthTexture = nullptr;
   vtkTextureObject* DepthTexture = nullptr;
 
   class vtkInternals;

@@ -5,3 +5,4 @@
   // points); the background keeps the cleared value 0.
   gl_FragData[NORMAL_INDEX] = NORMAL_VALUE;
   gl_FragData[POSITION_INDEX] = POSITION_VALUE;
+  gl_FragData[LINEAR_DEPTH_INDEX] = LINEAR_DEPTH_VALUE;

@@ -1,0 +1,309 @@
+// VTK Stylize comic pass (vtkComicPass): three-phase edges, halftone dots, hatch lines.
+// ALGORITHMS.md section 2. The pass prepends #defines that select what is compiled:
+//   COMIC_STAGE_EDGES   first stage of the colour-edge path: writes f_normal and k1, k2
+//   COMIC_DEPTH_EDGES, COMIC_NORMAL_EDGES, COMIC_COLOR_EDGES   the enabled edge phases
+//   COMIC_DOTS, COMIC_HATCH, COMIC_CROSS                       the enabled patterns
+//   COMIC_OBJECT_ANCHOR   patterns anchored to the object-space position, not the screen
+//   COMIC_TINTED          keep the data's hue under the ink
+// Lengths arrive in pixels of the final (possibly magnified) image, already multiplied by the
+// pixels-per-point factor on the CPU, so the shader is resolution-free.
+
+uniform sampler2D stylizeColorTexture;       // lit colour E
+uniform sampler2D stylizeDepthTexture;       // window depth (written back as gl_FragDepth)
+uniform sampler2D stylizeLinearDepthTexture; // -z_view, 0 where there is no surface
+uniform sampler2D stylizeNormalTexture;      // view-space normal, a = 1 on surfaces
+uniform sampler2D stylizePositionTexture;    // object-space position, a = 1 on surfaces
+uniform sampler2D comicEdgeTexture;          // stage 1 output: rgb f_normal, a k1
+uniform sampler2D comicEdgeTexture2;         // stage 1 output: r k2
+
+uniform ivec2 comicSize;           // viewport size (pixels)
+uniform vec2 comicPixelOffset;     // this tile's offset in the full image (pixels)
+uniform int comicParallel;         // 1 for parallel projection
+uniform float comicPixelWorld;     // world size of a pixel: times depth (perspective) or as is
+uniform int comicStride;           // Sobel tap distance (pixels)
+uniform vec3 comicEdgeWeights;     // a1, a2, a3 (sum 1)
+uniform float comicDepthThreshold; // depth slope where depth edges start (dimensionless)
+uniform float comicNormalThreshold;
+uniform float comicColorThreshold;
+uniform float comicDotSpacing;     // pixels (screen) or world units (object anchor)
+uniform float comicHatchSpacing;   // pixels (screen) or world units (object anchor)
+uniform float comicHatchWidth;     // fraction of the hatch spacing
+uniform vec2 comicDotDirection;    // (cos, sin) of the screen angle
+uniform float comicHatchAngle;     // radians
+uniform int comicHatchDirections;  // 0: one direction; n: normal-dependent, n steps over 180 deg
+uniform float comicBright;         // a1 of eq. 13-14: dots above
+uniform float comicDark;           // a2 of eq. 13-14: hatching below
+uniform float comicCross;          // cross-hatching below this tone
+uniform int comicDiscardBackground;
+
+float comicLuminance(vec3 c)
+{
+  return dot(c, vec3(0.2126, 0.7152, 0.0722));
+}
+
+// This pixel's index in the G-buffer textures (which have the viewport's size).
+ivec2 comicPixel()
+{
+  return clamp(ivec2(texCoord * vec2(comicSize)), ivec2(0), comicSize - 1);
+}
+
+ivec2 comicTap(ivec2 p, int dx, int dy)
+{
+  return clamp(p + ivec2(dx, dy) * comicStride, ivec2(0), comicSize - 1);
+}
+
+// Sobel responses (gx, gy) of a 3x3 neighbourhood, divided by 8: the mean central difference
+// per tap. Index: 0..8 = (-1,-1) (0,-1) (1,-1) (-1,0) (0,0) (1,0) (-1,1) (0,1) (1,1).
+vec2 comicSobel(float v[9])
+{
+  float gx = (v[2] + 2.0 * v[5] + v[8]) - (v[0] + 2.0 * v[3] + v[6]);
+  float gy = (v[6] + 2.0 * v[7] + v[8]) - (v[0] + 2.0 * v[1] + v[2]);
+  return vec2(gx, gy) * 0.125;
+}
+
+float comicSobelLength(vec3 v[9])
+{
+  vec3 gx = (v[2] + 2.0 * v[5] + v[8]) - (v[0] + 2.0 * v[3] + v[6]);
+  vec3 gy = (v[6] + 2.0 * v[7] + v[8]) - (v[0] + 2.0 * v[1] + v[2]);
+  return 0.125 * sqrt(dot(gx, gx) + dot(gy, gy));
+}
+
+// Edge strength G in [0, 1] from a response: 0 below t, 1 from 2t, smooth between.
+float comicEdgeStrength(float response, float t)
+{
+  return smoothstep(t, 2.0 * t, response);
+}
+
+#ifdef COMIC_DEPTH_EDGES
+// Phase 1 (eq. 4-5): Sobel on the linear depth, made scale-free by dividing by the world size of
+// a pixel at that depth, so the response is the surface's slope against the view ray (tan of the
+// angle between normal and view axis) or a depth jump in pixel units. A surface next to no
+// surface (background, lines) is an edge on both sides.
+float comicDepthEdge(ivec2 p)
+{
+  float z[9];
+  int surfaces = 0;
+  float zmin = 3.4e38;
+  for (int j = -1; j <= 1; ++j)
+  {
+    for (int i = -1; i <= 1; ++i)
+    {
+      float d = texelFetch(stylizeLinearDepthTexture, comicTap(p, i, j), 0).r;
+      d = (d > 0.0 && d < 3.4e38) ? d : 0.0;
+      z[(j + 1) * 3 + i + 1] = d;
+      if (d > 0.0)
+      {
+        ++surfaces;
+        zmin = min(zmin, d);
+      }
+    }
+  }
+  if (surfaces == 0)
+  {
+    return 0.0;
+  }
+  if (surfaces < 9)
+  {
+    return 1.0;
+  }
+  float pixel = comicParallel == 1 ? comicPixelWorld : comicPixelWorld * zmin;
+  // Divide each tap by the pixel size first: no overflow or underflow at 1e-6..1e6 scales.
+  for (int k = 0; k < 9; ++k)
+  {
+    z[k] = (z[k] - zmin) / pixel;
+  }
+  float slope = length(comicSobel(z)) / float(comicStride);
+  return comicEdgeStrength(slope, comicDepthThreshold);
+}
+#endif
+
+#ifdef COMIC_NORMAL_EDGES
+// Phase 2 (eq. 6-7): Sobel on the view-space normals (the change of the unit normal per tap).
+// Taps without a normal take the centre's, so they add nothing (depth edges cover them).
+float comicNormalEdge(ivec2 p)
+{
+  vec4 c = texelFetch(stylizeNormalTexture, p, 0);
+  if (c.a < 0.5)
+  {
+    return 0.0;
+  }
+  vec3 n[9];
+  for (int j = -1; j <= 1; ++j)
+  {
+    for (int i = -1; i <= 1; ++i)
+    {
+      vec4 t = texelFetch(stylizeNormalTexture, comicTap(p, i, j), 0);
+      n[(j + 1) * 3 + i + 1] = t.a > 0.5 ? t.xyz : c.xyz;
+    }
+  }
+  return comicEdgeStrength(comicSobelLength(n), comicNormalThreshold);
+}
+#endif
+
+// k1 = 1 - G1 and k2 = 1 - G2 of this pixel.
+vec2 comicGeometryEdges(ivec2 p)
+{
+  vec2 k = vec2(1.0);
+#ifdef COMIC_DEPTH_EDGES
+  k.x = 1.0 - comicDepthEdge(p);
+#endif
+#ifdef COMIC_NORMAL_EDGES
+  k.y = 1.0 - comicNormalEdge(p);
+#endif
+  return k;
+}
+
+#ifdef COMIC_STAGE_EDGES
+
+// Stage 1 of the colour-edge path: f_normal = E k1 k2 (eq. 5-7) for the colour Sobel of stage 2.
+void comicMain()
+{
+  ivec2 p = comicPixel();
+  vec2 k = comicGeometryEdges(p);
+  vec3 e = texelFetch(stylizeColorTexture, p, 0).rgb;
+  gl_FragData[0] = vec4(stylizeSaturateFinite(e) * k.x * k.y, k.x);
+  gl_FragData[1] = vec4(k.y, 0.0, 0.0, 1.0);
+}
+
+#else
+
+// Rotates a 2D vector by the angle whose (cos, sin) is cs.
+vec2 comicRotate(vec2 v, vec2 cs)
+{
+  return vec2(cs.x * v.x - cs.y * v.y, cs.y * v.x + cs.x * v.y);
+}
+
+// Halftone dots (eq. 10): ink where the distance to the cell centre is below the radius whose
+// disc covers 1 - I of the cell (continuous in I), anti-aliased over aa cell units. 1 = paper.
+float comicDots(vec2 uv, float tone, float aa)
+{
+  vec2 f = fract(uv) - 0.5;
+  float d = length(f);
+  float coverage = clamp(1.0 - tone, 0.0, 1.0);
+  // disc area pi r^2 = coverage up to r = 0.5; then the corners fill until r = sqrt(0.5)
+  float r = coverage <= 0.785398 ? sqrt(coverage / 3.14159265)
+                                 : mix(0.5, 0.7072, (coverage - 0.785398) / 0.214602);
+  return coverage > 1e-4 ? smoothstep(r - aa, r + aa, d) : 1.0;
+}
+
+// Hatch lines (eq. 11-12, reconstructed): u is the coordinate across the lines in spacing units;
+// the line is the band within half the width of an integer. 1 = paper.
+float comicLines(float u, float aa)
+{
+  float t = abs(fract(u + 0.5) - 0.5);
+  float hw = 0.5 * comicHatchWidth;
+  return smoothstep(hw - aa, hw + aa, t);
+}
+
+void comicMain()
+{
+  ivec2 p = comicPixel();
+  vec3 colour = stylizeSaturateFinite(texelFetch(stylizeColorTexture, p, 0).rgb);
+  float depth = texelFetch(stylizeDepthTexture, p, 0).r;
+  bool background = !(depth < 1.0);
+  float linearDepth = texelFetch(stylizeLinearDepthTexture, p, 0).r;
+  bool surface = linearDepth > 0.0;
+
+  // ---- edges: e = k1 (a1 + a2 k2 + a3 k2 k3), so that f = E e (eq. 9)
+  float e = 1.0;
+#if defined(COMIC_COLOR_EDGES)
+  vec4 fc = texelFetch(comicEdgeTexture, p, 0);
+  float k1 = fc.a;
+  float k2 = texelFetch(comicEdgeTexture2, p, 0).r;
+  vec3 fn[9];
+  for (int j = -1; j <= 1; ++j)
+  {
+    for (int i = -1; i <= 1; ++i)
+    {
+      fn[(j + 1) * 3 + i + 1] = texelFetch(comicEdgeTexture, comicTap(p, i, j), 0).rgb;
+    }
+  }
+  float k3 = 1.0 - comicEdgeStrength(comicSobelLength(fn), comicColorThreshold);
+  e = k1 * (comicEdgeWeights.x + k2 * (comicEdgeWeights.y + comicEdgeWeights.z * k3));
+#elif defined(COMIC_DEPTH_EDGES) || defined(COMIC_NORMAL_EDGES)
+  vec2 k = comicGeometryEdges(p);
+  e = k.x * (comicEdgeWeights.x + k.y * (comicEdgeWeights.y + comicEdgeWeights.z));
+#endif
+
+  // ---- pattern coordinates (computed for every pixel: derivatives need uniform control flow)
+  float tone = comicLuminance(colour);
+  vec2 pixel = vec2(p) + 0.5 + comicPixelOffset;
+#ifdef COMIC_OBJECT_ANCHOR
+  // Triplanar projection of the object-space position on the plane facing its geometric normal
+  // (from the neighbouring positions), in world units.
+  vec4 pos = texelFetch(stylizePositionTexture, p, 0);
+  ivec2 sx = p.x + 1 < comicSize.x ? ivec2(1, 0) : ivec2(-1, 0);
+  ivec2 sy = p.y + 1 < comicSize.y ? ivec2(0, 1) : ivec2(0, -1);
+  vec4 px = texelFetch(stylizePositionTexture, p + sx, 0);
+  vec4 py = texelFetch(stylizePositionTexture, p + sy, 0);
+  vec3 gn = cross((px.xyz - pos.xyz) * float(sx.x), (py.xyz - pos.xyz) * float(sy.y));
+  gn = (px.a > 0.5 && py.a > 0.5) ? abs(gn) : vec3(0.0, 0.0, 1.0);
+  vec2 plane = gn.x >= gn.y && gn.x >= gn.z ? pos.yz : (gn.y >= gn.z ? pos.zx : pos.xy);
+  plane = pos.a > 0.5 ? plane : pixel;
+#else
+  vec2 plane = pixel;
+#endif
+
+  float pattern = tone;
+#if defined(COMIC_DOTS) || defined(COMIC_HATCH)
+#ifdef COMIC_DOTS
+  vec2 dotUV = comicRotate(plane / comicDotSpacing, comicDotDirection);
+  float dotAA = clamp(0.5 * max(fwidth(dotUV.x), fwidth(dotUV.y)), 1e-4, 0.5);
+  float dots = comicDots(dotUV, tone, dotAA);
+#else
+  float dots = tone;
+#endif
+#ifdef COMIC_HATCH
+  vec2 hatchUV = plane / comicHatchSpacing;
+  float hatchAA = clamp(0.5 * max(fwidth(hatchUV.x), fwidth(hatchUV.y)), 1e-4, 0.5);
+  float angle = comicHatchAngle;
+  if (comicHatchDirections > 0)
+  {
+    // eq. 12: the direction follows the screen-space normal, in steps of 180/n degrees
+    vec3 n = texelFetch(stylizeNormalTexture, p, 0).xyz;
+    if (dot(n.xy, n.xy) > 0.04)
+    {
+      float stepAngle = 3.14159265 / float(comicHatchDirections);
+      float phi = atan(n.y, n.x);
+      angle += stepAngle * floor(phi / stepAngle + 0.5);
+    }
+  }
+  vec2 across = vec2(-sin(angle), cos(angle));
+  float hatch = comicLines(dot(hatchUV, across), hatchAA);
+#ifdef COMIC_CROSS
+  if (tone < comicCross)
+  {
+    hatch = min(hatch, comicLines(dot(hatchUV, vec2(across.y, -across.x)), hatchAA));
+  }
+#endif
+#else
+  float hatch = tone;
+#endif
+  // Zones (eq. 13-14): dots above a1, hatching below a2, a continuous blend between.
+  float t = comicBright > comicDark ? clamp((tone - comicDark) / (comicBright - comicDark), 0.0, 1.0)
+                                    : step(comicDark, tone);
+  pattern = mix(hatch, dots, t);
+#endif
+  if (!surface)
+  {
+    pattern = background ? 1.0 : tone; // lines and points keep their tone, the paper stays
+  }
+
+#ifdef COMIC_TINTED
+  // Keep the hue and saturation of the lit colour at full value: the data's colours stay
+  // readable under the ink. The background keeps its own colour.
+  float m = max(colour.r, max(colour.g, colour.b));
+  vec3 paper = m > 1e-4 ? colour / m : vec3(1.0);
+  vec3 result = background ? colour * e : paper * (pattern * e);
+#else
+  vec3 result = background ? colour * e : vec3(pattern * e);
+#endif
+  if (comicDiscardBackground == 1 && background && e >= 1.0)
+  {
+    discard;
+  }
+  gl_FragData[0] = vec4(stylizeSaturateFinite(result), 1.0);
+  gl_FragDepth = depth;
+}
+
+#endif

@@ -1,0 +1,278 @@
+/**
+ * @class   vtkComicPass
+ * @brief   Black-and-white comic rendering: toon lighting, three-phase edges, halftone dots where
+ *          the tone is bright and hatch lines where it is dark.
+ *
+ * The comic method of "real-time comic-style rendering" (ALGORITHMS.md section 2) as one render
+ * pass. Use it like any VTK pass: `renderer->SetPass(comic)`; it needs no delegate.
+ *
+ * 1. The opaque geometry is rendered once into the shared G-buffer (vtkStylizeGBufferPass) with
+ *    the Comic lighting model (vtkStylizeLightingPass: subject ambient term, depth-dependent
+ *    quantized diffuse, boosted specular). Only the channels the enabled stages read are
+ *    allocated: linear depth always, normals for normal edges and normal-directed hatching,
+ *    object-space positions for surface-anchored patterns.
+ * 2. Edges (eq. 4-9): Sobel on linear depth (k1 = 1 - G1), on normals (k2), then on the colour of
+ *    the normal-edged image f_normal = E k1 k2 (k3). With weights a1 + a2 + a3 = 1 the edge image
+ *    is f = E e, e = k1 (a1 + a2 k2 + a3 k2 k3). Depth edges are scale-free: the Sobel response is
+ *    divided by the world size of a pixel at that depth, so it is the surface slope against the
+ *    view ray, whatever the scene's size, the projection and the near/far ratio.
+ * 3. Pattern (eq. 10-14) from the lit tone I = luminance(E): halftone dots whose area follows
+ *    1 - I above BrightThreshold, hatch lines below DarkThreshold (crossed below CrossThreshold),
+ *    blended continuously between. The output is the pattern times e (black and white), or,
+ *    with Tinted on, the lit colour's hue under the same ink.
+ *
+ * Lengths (edge width, dot and hatch spacing, hatch width) are in points: 1 point is one pixel of
+ * an image ReferenceHeight pixels tall, so the picture is the same at any resolution, and a
+ * screenshot magnified through vtkWindowToImageFilter (tiled rendering) shows the same picture
+ * at higher detail, without seams. Patterns are anchored to the screen (SCREEN) or to the
+ * surface (OBJECT: a triplanar projection of the object-space position), which does not swim
+ * when the camera orbits.
+ *
+ * The 2D overlay, translucent geometry and volumes are drawn after the comic image, unstylized
+ * but lit by the same lighting pass, and depth-tested against the comic image's depth.
+ *
+ * @sa vtkStylizeGBufferPass vtkStylizeLightingPass
+ */
+
+#ifndef vtkComicPass_h
+#define vtkComicPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkStylizePassesModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkStylizeGBufferPass;
+class vtkStylizeLightingPass;
+
+class VTKSTYLIZEPASSES_EXPORT vtkComicPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkComicPass* New();
+  vtkTypeMacro(vtkComicPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Where the dots and hatch lines are anchored. */
+  enum Anchors
+  {
+    SCREEN = 0, ///< to the image: the classic look; the pattern stays while the scene moves
+    OBJECT = 1  ///< to the surface (object-space position): moves with the data
+  };
+
+  /** The lighting pass (Comic model by default); change its model or settings freely. */
+  vtkStylizeLightingPass* GetLightingPass();
+
+  /** The G-buffer pass (read-only use: the comic pass sets its channels each frame). */
+  vtkStylizeGBufferPass* GetGBufferPass();
+
+  ///@{
+  /** Draw the three-phase edges. Default on. */
+  vtkSetMacro(Edges, bool);
+  vtkGetMacro(Edges, bool);
+  vtkBooleanMacro(Edges, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Weights a1 (depth), a2 (normal), a3 (colour) of the edge phases, each in [0, 1]; the pass
+   * divides by their sum, so a1 + a2 + a3 = 1 as in eq. 9. A zero weight switches its phase off
+   * (no Sobel is computed for it). All zero: no edges. Default 1/3 each.
+   */
+  virtual void SetEdgeWeights(double depth, double normal, double color);
+  virtual void SetEdgeWeights(const double w[3]) { this->SetEdgeWeights(w[0], w[1], w[2]); }
+  vtkGetVector3Macro(EdgeWeights, double);
+  ///@}
+
+  ///@{
+  /**
+   * Depth-edge threshold, dimensionless: the slope |dz/dx| of the linear depth against the
+   * screen, in world units per world unit, where a depth edge starts (full strength at twice
+   * it). 10 marks surfaces within about 6 degrees of grazing and every depth jump between
+   * surfaces. Range [0.01, 1e4], default 10.
+   */
+  vtkSetClampMacro(DepthThreshold, double, 0.01, 1.0e4);
+  vtkGetMacro(DepthThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Normal-edge threshold: the Sobel change of the unit normal per tap where an edge starts
+   * (full at twice it). 0.15 is a crease of about 17 degrees. Range [0.001, 2], default 0.15.
+   */
+  vtkSetClampMacro(NormalThreshold, double, 0.001, 2.0);
+  vtkGetMacro(NormalThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Colour-edge threshold: the Sobel change of the normal-edged colour (RGB in [0, 1]) per tap
+   * where an edge starts (full at twice it). Range [0.001, 2], default 0.1.
+   */
+  vtkSetClampMacro(ColorThreshold, double, 0.001, 2.0);
+  vtkGetMacro(ColorThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Edge width in points: the Sobel taps are this far apart (rounded to whole pixels, at least
+   * 1), so lines are about twice as wide. Range [0.25, 20], default 1.
+   */
+  vtkSetClampMacro(EdgeWidth, double, 0.25, 20.0);
+  vtkGetMacro(EdgeWidth, double);
+  ///@}
+
+  ///@{
+  /** Halftone dots in the bright zone. Off: the bright zone shows the lit tone. Default on. */
+  vtkSetMacro(Dots, bool);
+  vtkGetMacro(Dots, bool);
+  vtkBooleanMacro(Dots, bool);
+  ///@}
+
+  ///@{
+  /** Dot spacing (the screen period) in points. Range [2, 200], default 8. */
+  vtkSetClampMacro(DotSpacing, double, 2.0, 200.0);
+  vtkGetMacro(DotSpacing, double);
+  ///@}
+
+  ///@{
+  /** Screen angle of the dot grid in degrees (45 is the print convention). Range [-180, 180]. */
+  vtkSetClampMacro(DotAngle, double, -180.0, 180.0);
+  vtkGetMacro(DotAngle, double);
+  ///@}
+
+  ///@{
+  /** Hatch lines in the dark zone. Off: the dark zone shows the lit tone. Default on. */
+  vtkSetMacro(Hatching, bool);
+  vtkGetMacro(Hatching, bool);
+  vtkBooleanMacro(Hatching, bool);
+  ///@}
+
+  ///@{
+  /** Distance between hatch lines in points. Range [2, 200], default 8. */
+  vtkSetClampMacro(HatchSpacing, double, 2.0, 200.0);
+  vtkGetMacro(HatchSpacing, double);
+  ///@}
+
+  ///@{
+  /** Hatch line width in points (at most the spacing). Range [0.25, 200], default 2. */
+  vtkSetClampMacro(HatchWidth, double, 0.25, 200.0);
+  vtkGetMacro(HatchWidth, double);
+  ///@}
+
+  ///@{
+  /**
+   * Direction of the hatch lines in degrees from the image's x axis (any angle, vertical
+   * included). Range [-180, 180], default 135.
+   */
+  vtkSetClampMacro(HatchAngle, double, -180.0, 180.0);
+  vtkGetMacro(HatchAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Eq. 12: the hatch direction follows the screen-space normal, quantized to this many steps
+   * over 180 degrees so each face keeps straight lines. 0: every line at HatchAngle.
+   * Range [0, 16], default 4.
+   */
+  vtkSetClampMacro(HatchDirections, int, 0, 16);
+  vtkGetMacro(HatchDirections, int);
+  ///@}
+
+  ///@{
+  /** Cross the hatching with a second direction (+90 degrees) in the darkest zone. Default on. */
+  vtkSetMacro(CrossHatching, bool);
+  vtkGetMacro(CrossHatching, bool);
+  vtkBooleanMacro(CrossHatching, bool);
+  ///@}
+
+  ///@{
+  /** Tone below which hatching is crossed. Range [0, 1], default 0.12. */
+  vtkSetClampMacro(CrossThreshold, double, 0.0, 1.0);
+  vtkGetMacro(CrossThreshold, double);
+  ///@}
+
+  ///@{
+  /** a1 of eq. 13: tones above it get dots only. Range [0, 1], default 0.5. */
+  vtkSetClampMacro(BrightThreshold, double, 0.0, 1.0);
+  vtkGetMacro(BrightThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * a2 of eq. 13: tones below it get hatching only; between a2 and a1 the two blend linearly.
+   * When a2 >= a1 the zones meet at a2 without a blend. Range [0, 1], default 0.25.
+   */
+  vtkSetClampMacro(DarkThreshold, double, 0.0, 1.0);
+  vtkGetMacro(DarkThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Keep the data's colours: the paper takes the hue and saturation of the lit colour (scalar
+   * colormaps stay readable), the ink stays black. Default off: black and white.
+   */
+  vtkSetMacro(Tinted, bool);
+  vtkGetMacro(Tinted, bool);
+  vtkBooleanMacro(Tinted, bool);
+  ///@}
+
+  ///@{
+  /** Pattern anchoring: SCREEN (default) or OBJECT. */
+  vtkSetClampMacro(Anchor, int, SCREEN, OBJECT);
+  vtkGetMacro(Anchor, int);
+  void SetAnchorToScreen() { this->SetAnchor(SCREEN); }
+  void SetAnchorToObject() { this->SetAnchor(OBJECT); }
+  ///@}
+
+  ///@{
+  /**
+   * Height in pixels of the reference image in which one point is one pixel. A renderer of
+   * height h (times the tile scale of a magnified screenshot) has h / ReferenceHeight pixels per
+   * point. 0: one point is one window pixel (magnified screenshots still scale).
+   * Range [0, 1e5], default 1080.
+   */
+  vtkSetClampMacro(ReferenceHeight, double, 0.0, 1.0e5);
+  vtkGetMacro(ReferenceHeight, double);
+  ///@}
+
+  /** Renders the comic image of the renderer's props. */
+  void Render(const vtkRenderState* s) override;
+
+  /** Frees the G-buffer, the intermediate textures, the framebuffer and the programs. */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkComicPass();
+  ~vtkComicPass() override;
+
+  bool Edges = true;
+  double EdgeWeights[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
+  double DepthThreshold = 10.0;
+  double NormalThreshold = 0.15;
+  double ColorThreshold = 0.1;
+  double EdgeWidth = 1.0;
+  bool Dots = true;
+  double DotSpacing = 8.0;
+  double DotAngle = 45.0;
+  bool Hatching = true;
+  double HatchSpacing = 8.0;
+  double HatchWidth = 2.0;
+  double HatchAngle = 135.0;
+  int HatchDirections = 4;
+  bool CrossHatching = true;
+  double CrossThreshold = 0.12;
+  double BrightThreshold = 0.5;
+  double DarkThreshold = 0.25;
+  bool Tinted = false;
+  int Anchor = SCREEN;
+  double ReferenceHeight = 1080.0;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+
+private:
+  vtkComicPass(const vtkComicPass&) = delete;
+  void operator=(const vtkComicPass&) = delete;
+};
+
+#endif
