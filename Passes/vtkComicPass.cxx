@@ -18,6 +18,7 @@
 
 #include "vtkComicFS.h"
 #include "vtkStylizeCommonFS.h"
+#include "vtkStylizeDepthFS.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,22 +31,18 @@ public:
   vtkStylizeShaderUtilities::ScreenQuad EdgeQuad;
   vtkStylizeShaderUtilities::ScreenQuad FinalQuad;
   vtkOpenGLFramebufferObject* EdgeFramebuffer = nullptr;
-  vtkTextureObject* EdgeTexture = nullptr;  // rgb f_normal, a k1
-  vtkTextureObject* EdgeTexture2 = nullptr; // r k2
+  vtkTextureObject* EdgeTexture = nullptr; // luminance of f_normal, k1, k2
 
   void FreeEdgeBuffers(vtkWindow* w)
   {
-    for (vtkTextureObject** t : { &this->EdgeTexture, &this->EdgeTexture2 })
+    if (this->EdgeTexture)
     {
-      if (*t)
+      if (w)
       {
-        if (w)
-        {
-          (*t)->ReleaseGraphicsResources(w);
-        }
-        (*t)->Delete();
-        *t = nullptr;
+        this->EdgeTexture->ReleaseGraphicsResources(w);
       }
+      this->EdgeTexture->Delete();
+      this->EdgeTexture = nullptr;
     }
     if (this->EdgeFramebuffer)
     {
@@ -85,7 +82,6 @@ public:
       }
     };
     make(this->EdgeTexture, GL_RGBA16F, GL_RGBA, 4);
-    make(this->EdgeTexture2, GL_R16F, GL_RED, 1);
     if (!this->EdgeFramebuffer)
     {
       this->EdgeFramebuffer = vtkOpenGLFramebufferObject::New();
@@ -160,6 +156,8 @@ void vtkComicPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DarkThreshold: " << this->DarkThreshold << "\n";
   os << indent << "Tinted: " << this->Tinted << "\n";
   os << indent << "Anchor: " << (this->Anchor == OBJECT ? "object" : "screen") << "\n";
+  os << indent << "Layer: "
+     << (this->Layer == EDGES ? "edges" : (this->Layer == PATTERN ? "pattern" : "comic")) << "\n";
   os << indent << "ReferenceHeight: " << this->ReferenceHeight << " px\n";
   os << indent << "LightingPass:\n";
   this->Internals->Lighting->PrintSelf(os, indent.GetNextIndent());
@@ -281,6 +279,7 @@ void vtkComicPass::Render(const vtkRenderState* s)
   {
     defines += "#define COMIC_TINTED\n";
   }
+  defines += "#define COMIC_LAYER " + std::to_string(this->Layer) + "\n";
 
   vtkTextureObject* color = gbuffer->GetColorTexture();
   vtkTextureObject* depth = gbuffer->GetDepthTexture();
@@ -357,10 +356,11 @@ void vtkComicPass::Render(const vtkRenderState* s)
     setf("comicDark", this->DarkThreshold);
     setf("comicCross", this->CrossThreshold);
     seti("comicDiscardBackground", ren->Transparent() ? 1 : 0);
+    gbuffer->SetDepthMappingUniforms(program);
   };
   auto unbindAll = [&]() {
     for (vtkTextureObject* tex : { color, depth, linear, normal, position,
-           this->Internals->EdgeTexture, this->Internals->EdgeTexture2 })
+           this->Internals->EdgeTexture })
     {
       if (tex && tex->GetTextureUnit() >= 0)
       {
@@ -369,7 +369,7 @@ void vtkComicPass::Render(const vtkRenderState* s)
     }
   };
 
-  const std::string declarations = defines + vtkStylizeCommonFS + vtkComicFS;
+  const std::string declarations = defines + vtkStylizeCommonFS + vtkStylizeDepthFS + vtkComicFS;
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
@@ -379,7 +379,7 @@ void vtkComicPass::Render(const vtkRenderState* s)
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
-  // Stage 1 (colour edges only): f_normal and k1, k2 into the edge buffers.
+  // Stage 1 (colour edges only): luminance of f_normal, k1 and k2 into the edge buffer.
   if (colorEdges)
   {
     this->Internals->AllocateEdgeBuffers(renWin, w, h);
@@ -387,8 +387,7 @@ void vtkComicPass::Render(const vtkRenderState* s)
     fbo->SaveCurrentBindingsAndBuffers();
     fbo->Bind();
     fbo->AddColorAttachment(0, this->Internals->EdgeTexture);
-    fbo->AddColorAttachment(1, this->Internals->EdgeTexture2);
-    fbo->ActivateDrawBuffers(2);
+    fbo->ActivateDrawBuffers(1);
     ostate->vtkglViewport(0, 0, w, h);
     ostate->vtkglScissor(0, 0, w, h);
     ostate->vtkglDisable(GL_DEPTH_TEST);
@@ -431,7 +430,6 @@ void vtkComicPass::Render(const vtkRenderState* s)
       }
     };
     bind("comicEdgeTexture", this->Internals->EdgeTexture);
-    bind("comicEdgeTexture2", this->Internals->EdgeTexture2);
     this->Internals->FinalQuad.Render();
   }
   else

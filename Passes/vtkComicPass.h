@@ -12,7 +12,8 @@
  *    allocated: linear depth always, normals for normal edges and normal-directed hatching,
  *    object-space positions for surface-anchored patterns.
  * 2. Edges (eq. 4-9): Sobel on linear depth (k1 = 1 - G1), on normals (k2), then on the colour of
- *    the normal-edged image f_normal = E k1 k2 (k3). With weights a1 + a2 + a3 = 1 the edge image
+ *    the normal-edged image f_normal = E k1 k2 (k3), taken as its luminance (the tone the pattern
+ *    is drawn from; one 4-channel intermediate texture instead of two). With weights a1 + a2 + a3 = 1 the edge image
  *    is f = E e, e = k1 (a1 + a2 k2 + a3 k2 k3). Depth edges are scale-free: the Sobel response is
  *    divided by the world size of a pixel at that depth, so it is the surface slope against the
  *    view ray, whatever the scene's size, the projection and the near/far ratio.
@@ -58,6 +59,20 @@ public:
     SCREEN = 0, ///< to the image: the classic look; the pattern stays while the scene moves
     OBJECT = 1  ///< to the surface (object-space position): moves with the data
   };
+
+  /** What the pass writes: the comic image, or one of its layers (for figures and tests). */
+  enum Layers
+  {
+    COMIC = 0,  ///< the pattern times the edges (the comic image)
+    EDGES = 1,  ///< the edge factor e alone (white = no edge, black = full edge), gray
+    PATTERN = 2 ///< the dots and hatching alone, without edges
+  };
+
+  ///@{
+  /** The layer written to the output: COMIC (default), EDGES or PATTERN. */
+  vtkSetClampMacro(Layer, int, COMIC, PATTERN);
+  vtkGetMacro(Layer, int);
+  ///@}
 
   /** The lighting pass (Comic model by default); change its model or settings freely. */
   vtkStylizeLightingPass* GetLightingPass();
@@ -265,6 +280,7 @@ protected:
   double DarkThreshold = 0.25;
   bool Tinted = false;
   int Anchor = SCREEN;
+  int Layer = COMIC;
   double ReferenceHeight = 1080.0;
 
   class vtkInternals;

@@ -27,6 +27,7 @@
 #include "vtk_glew.h"
 
 #include "vtkStylizeCompositeFS.h"
+#include "vtkStylizeDepthFS.h"
 #include "vtkStylizeGBufferImpl.h"
 
 #include <sstream>
@@ -269,10 +270,16 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   {
     return false;
   }
-  if (this->Channels != this->BuiltChannels || this->PositionSpace != this->BuiltPositionSpace)
+  vtkCamera* camera = ren->GetActiveCamera();
+  camera->GetClippingRange(this->DepthRange);
+  this->LogarithmicDepth = !camera->GetParallelProjection() && this->DepthRange[0] > 0.0 &&
+    this->DepthRange[1] > this->DepthRange[0] * this->LogarithmicDepthRatio;
+  if (this->Channels != this->BuiltChannels || this->PositionSpace != this->BuiltPositionSpace ||
+    this->LogarithmicDepth != this->BuiltLogarithmicDepth)
   {
     this->BuiltChannels = this->Channels;
     this->BuiltPositionSpace = this->PositionSpace;
+    this->BuiltLogarithmicDepth = this->LogarithmicDepth;
     this->ShaderStageTime.Modified();
   }
   this->AllocateTextures(renWin, w, h);
@@ -342,8 +349,8 @@ void vtkStylizeGBufferPass::CompositeToOutput(const vtkRenderState* s)
     return;
   }
   vtkOpenGLState* ostate = renWin->GetState();
-  vtkShaderProgram* program =
-    this->Internals->CompositeQuad.Prepare(renWin, vtkStylizeCompositeFS, "  stylizeComposite();\n");
+  vtkShaderProgram* program = this->Internals->CompositeQuad.Prepare(renWin,
+    std::string(vtkStylizeDepthFS) + vtkStylizeCompositeFS, "  stylizeComposite();\n");
   if (!program)
   {
     vtkErrorMacro("Could not build the G-buffer composite shader.");
@@ -367,6 +374,7 @@ void vtkStylizeGBufferPass::CompositeToOutput(const vtkRenderState* s)
   program->SetUniformi("stylizeColorTexture", this->ColorTexture->GetTextureUnit());
   program->SetUniformi("stylizeDepthTexture", this->DepthTexture->GetTextureUnit());
   program->SetUniformi("stylizeDiscardBackground", ren->Transparent() ? 1 : 0);
+  this->SetDepthMappingUniforms(program);
   this->Internals->CompositeQuad.Render();
   this->DepthTexture->Deactivate();
   this->ColorTexture->Deactivate();
@@ -604,8 +612,32 @@ bool vtkStylizeGBufferPass::PostReplaceShaderValues(
     }
     code += line + "\n";
   }
+  if (this->LogarithmicDepth) // after VTK's own depth code (//VTK::Depth::Impl): overrides it
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
+      "//VTK::System::Dec\nuniform vec2 stylizeLogDepthRange;\n", false);
+    const std::string z = surface ? "-vertexVC.z"
+                                  : "(2.0 * stylizeLogDepthRange.x * stylizeLogDepthRange.y / "
+                                    "(stylizeLogDepthRange.y + stylizeLogDepthRange.x - "
+                                    "(2.0 * gl_FragCoord.z - 1.0) * (stylizeLogDepthRange.y - "
+                                    "stylizeLogDepthRange.x)))";
+    code += "  gl_FragDepth = clamp(log(max(" + z +
+      ", stylizeLogDepthRange.x) / stylizeLogDepthRange.x) / log(stylizeLogDepthRange.y / "
+      "stylizeLogDepthRange.x), 0.0, 1.0);\n";
+  }
   vtkShaderProgram::Substitute(fragmentShader, GBufferTag, code);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::SetDepthMappingUniforms(vtkShaderProgram* program)
+{
+  if (program && program->IsUniformUsed("stylizeDepthMapping"))
+  {
+    const float mapping[3] = { static_cast<float>(this->DepthRange[0]),
+      static_cast<float>(this->DepthRange[1]), this->LogarithmicDepth ? 1.0f : 0.0f };
+    program->SetUniform3f("stylizeDepthMapping", mapping);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -623,6 +655,12 @@ bool vtkStylizeGBufferPass::SetShaderParameters(
   else
   {
     this->FrameBufferObject->ActivateDrawBuffers(1);
+  }
+  if (program->IsUniformUsed("stylizeLogDepthRange"))
+  {
+    const float range[2] = { static_cast<float>(this->DepthRange[0]),
+      static_cast<float>(this->DepthRange[1]) };
+    program->SetUniform2f("stylizeLogDepthRange", range);
   }
   if (program->IsUniformUsed("stylizeVCToMC"))
   {

@@ -50,6 +50,7 @@ class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkRenderPass;
 class vtkSequencePass;
+class vtkShaderProgram;
 class vtkStylizeLightingPass;
 class vtkTextureObject;
 
@@ -156,6 +157,23 @@ public:
   vtkGetObjectMacro(DepthTexture, vtkTextureObject);
   ///@}
 
+  /**
+   * Perspective near/far ratio above which the G-buffer stores a logarithmic depth
+   * (log(z/near)/log(far/near)) instead of the window depth, so that the depth test keeps its
+   * precision at extreme ratios (at 1e7 a window depth has a handful of distinct values across
+   * the scene). Screen passes convert it back (stylizeWindowDepth() in vtkStylizeDepthFS.glsl,
+   * uniforms from SetDepthMappingUniforms()). Lines drawn over surfaces lose VTK's polygon
+   * offset in this mode. Range [1, 1e30], default 1e4.
+   */
+  vtkSetClampMacro(LogarithmicDepthRatio, double, 1.0, 1.0e30);
+  vtkGetMacro(LogarithmicDepthRatio, double);
+
+  /** Whether the last frame stored a logarithmic depth. */
+  vtkGetMacro(LogarithmicDepth, bool);
+
+  /** Sets stylizeDepthMapping (see vtkStylizeDepthFS.glsl) for the last frame. */
+  void SetDepthMappingUniforms(vtkShaderProgram* program);
+
   /** Size (width, height) and origin (x, y) in the window of the last frame's viewport. */
   vtkGetVector4Macro(Viewport, int);
 
@@ -188,6 +206,10 @@ protected:
   void FreeTextures(vtkWindow* w);
 
   int Channels = 0;
+  double LogarithmicDepthRatio = 1.0e4;
+  bool LogarithmicDepth = false;
+  bool BuiltLogarithmicDepth = false;
+  double DepthRange[2] = { 0.0, 1.0 };
   int PositionSpace = VIEW;
   int Precision = HALF;
   int AllocatedPrecision = -1;

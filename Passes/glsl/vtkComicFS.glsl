@@ -5,6 +5,7 @@
 //   COMIC_DOTS, COMIC_HATCH, COMIC_CROSS                       the enabled patterns
 //   COMIC_OBJECT_ANCHOR   patterns anchored to the object-space position, not the screen
 //   COMIC_TINTED          keep the data's hue under the ink
+//   COMIC_LAYER           0 the comic image, 1 the edge factor alone, 2 the pattern alone
 // Lengths arrive in pixels of the final (possibly magnified) image, already multiplied by the
 // pixels-per-point factor on the CPU, so the shader is resolution-free.
 
@@ -13,8 +14,7 @@ uniform sampler2D stylizeDepthTexture;       // window depth (written back as gl
 uniform sampler2D stylizeLinearDepthTexture; // -z_view, 0 where there is no surface
 uniform sampler2D stylizeNormalTexture;      // view-space normal, a = 1 on surfaces
 uniform sampler2D stylizePositionTexture;    // object-space position, a = 1 on surfaces
-uniform sampler2D comicEdgeTexture;          // stage 1 output: rgb f_normal, a k1
-uniform sampler2D comicEdgeTexture2;         // stage 1 output: r k2
+uniform sampler2D comicEdgeTexture;          // stage 1 output: luminance of f_normal, k1, k2
 
 uniform ivec2 comicSize;           // viewport size (pixels)
 uniform vec2 comicPixelOffset;     // this tile's offset in the full image (pixels)
@@ -155,14 +155,14 @@ vec2 comicGeometryEdges(ivec2 p)
 
 #ifdef COMIC_STAGE_EDGES
 
-// Stage 1 of the colour-edge path: f_normal = E k1 k2 (eq. 5-7) for the colour Sobel of stage 2.
+// Stage 1 of the colour-edge path: f_normal = E k1 k2 (eq. 5-7) for the colour Sobel of stage 2,
+// which runs on its luminance (the tone the pattern is drawn from), with k1 and k2.
 void comicMain()
 {
   ivec2 p = comicPixel();
   vec2 k = comicGeometryEdges(p);
-  vec3 e = texelFetch(stylizeColorTexture, p, 0).rgb;
-  gl_FragData[0] = vec4(stylizeSaturateFinite(e) * k.x * k.y, k.x);
-  gl_FragData[1] = vec4(k.y, 0.0, 0.0, 1.0);
+  vec3 e = stylizeSaturateFinite(texelFetch(stylizeColorTexture, p, 0).rgb);
+  gl_FragData[0] = vec4(comicLuminance(e) * k.x * k.y, k.x, k.y, 1.0);
 }
 
 #else
@@ -208,17 +208,17 @@ void comicMain()
   float e = 1.0;
 #if defined(COMIC_COLOR_EDGES)
   vec4 fc = texelFetch(comicEdgeTexture, p, 0);
-  float k1 = fc.a;
-  float k2 = texelFetch(comicEdgeTexture2, p, 0).r;
-  vec3 fn[9];
+  float k1 = fc.g;
+  float k2 = fc.b;
+  float fn[9];
   for (int j = -1; j <= 1; ++j)
   {
     for (int i = -1; i <= 1; ++i)
     {
-      fn[(j + 1) * 3 + i + 1] = texelFetch(comicEdgeTexture, comicTap(p, i, j), 0).rgb;
+      fn[(j + 1) * 3 + i + 1] = texelFetch(comicEdgeTexture, comicTap(p, i, j), 0).r;
     }
   }
-  float k3 = 1.0 - comicEdgeStrength(comicSobelLength(fn), comicColorThreshold);
+  float k3 = 1.0 - comicEdgeStrength(length(comicSobel(fn)), comicColorThreshold);
   e = k1 * (comicEdgeWeights.x + k2 * (comicEdgeWeights.y + comicEdgeWeights.z * k3));
 #elif defined(COMIC_DEPTH_EDGES) || defined(COMIC_NORMAL_EDGES)
   vec2 k = comicGeometryEdges(p);
@@ -298,12 +298,17 @@ void comicMain()
 #else
   vec3 result = background ? colour * e : vec3(pattern * e);
 #endif
+#if COMIC_LAYER == 1
+  result = vec3(e);
+#elif COMIC_LAYER == 2
+  result = background ? colour : vec3(pattern);
+#endif
   if (comicDiscardBackground == 1 && background && e >= 1.0)
   {
     discard;
   }
   gl_FragData[0] = vec4(stylizeSaturateFinite(result), 1.0);
-  gl_FragDepth = depth;
+  gl_FragDepth = stylizeWindowDepth(depth);
 }
 
 #endif

@@ -11,5 +11,5 @@ void stylizeComposite()
     discard;
   }
   gl_FragData[0] = texture(stylizeColorTexture, texCoord);
-  gl_FragDepth = depth;
+  gl_FragDepth = stylizeWindowDepth(depth);
 }

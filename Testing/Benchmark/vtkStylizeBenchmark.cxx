@@ -8,6 +8,7 @@
 // ms, ratios to plain, light-count slopes, triangle-count flatness). Run with --help.
 
 #include "vtkCamera.h"
+#include "vtkComicPass.h"
 #include "vtkEDLShading.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -71,7 +72,7 @@ const std::vector<std::string>& AllConfigs()
 {
   static const std::vector<std::string> configs = { "plain", "sobel", "ssao", "edl",
     "light-standard", "light-comic", "light-pixelart", "gbuf-standard", "gbuf-comic",
-    "gbuf-pixelart", "gbuf-standard-color" };
+    "gbuf-pixelart", "gbuf-standard-color", "gbuf-comic-lin", "comic", "comic-geometric" };
   return configs;
 }
 
@@ -431,6 +432,31 @@ ConfigPasses MakeConfig(const std::string& name, double diagonal)
     c.Root = pass;
     c.Description = "vtkStylizeLightingPass (" + name.substr(6) + "), default delegate";
   }
+  else if (name == "gbuf-comic-lin")
+  {
+    // What the comic pass renders before its screen-space stage: the Comic lighting into a
+    // G-buffer with the comic pass's default channels, composited.
+    auto pass = lighting("comic");
+    auto gbuf = vtkSmartPointer<vtkStylizeGBufferPass>::New();
+    gbuf->SetLightingPass(pass);
+    gbuf->SetChannels(vtkStylizeGBufferPass::NORMAL | vtkStylizeGBufferPass::LINEAR_DEPTH);
+    c.Root = gbuf;
+    c.Keep = { pass };
+    c.Description = "vtkStylizeGBufferPass with vtkStylizeLightingPass (comic), channels "
+                    "NORMAL|LINEAR_DEPTH (the comic pass's G-buffer, without its screen stage)";
+  }
+  else if (name == "comic" || name == "comic-geometric")
+  {
+    auto comic = vtkSmartPointer<vtkComicPass>::New();
+    if (name == "comic-geometric")
+    {
+      comic->SetEdgeWeights(1, 1, 0);
+    }
+    c.Root = comic;
+    c.Description = name == "comic"
+      ? "vtkComicPass, defaults (three edge phases, dots, hatching, screen anchor)"
+      : "vtkComicPass, depth and normal edges only (single screen pass), dots, hatching";
+  }
   else if (name.rfind("gbuf-", 0) == 0)
   {
     const bool colorOnly = name == "gbuf-standard-color";
@@ -619,6 +645,37 @@ public:
             }
           }
           os << "\n";
+        }
+      }
+    }
+
+    // Comic: the screen-space stage next to VTK's own screen-space passes.
+    const auto has = [&](const char* c) { return std::find(cfgs.begin(), cfgs.end(), c) != cfgs.end(); };
+    if (has("plain") && has("sobel") && has("comic") && has("gbuf-comic-lin"))
+    {
+      os << "\n### Comic: added cost per frame next to VTK's screen-space passes (ms)\n\n";
+      os << "Added = configuration − plain. Comic stage = comic − gbuf-comic-lin: the comic "
+            "pass's screen-space stage (edges, dots, hatching) over its own G-buffer, the cost "
+            "the target compares with VTK's single colour Sobel pass (sobel − plain, which "
+            "includes its own render to a texture).\n\n";
+      os << "| scene | lights | sobel added | ssao added | comic added | comic stage | "
+            "comic-geometric stage | comic stage / sobel added |\n";
+      os << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+      for (const auto& sc : this->Opt.Scenes)
+      {
+        for (int n : this->Opt.Lights)
+        {
+          const double plain = this->MedianOf(sc.Name, n, "plain");
+          const double base = this->MedianOf(sc.Name, n, "gbuf-comic-lin");
+          const double sobel = this->MedianOf(sc.Name, n, "sobel") - plain;
+          const double ssao = has("ssao") ? this->MedianOf(sc.Name, n, "ssao") - plain : NAN;
+          const double comic = this->MedianOf(sc.Name, n, "comic");
+          const double geo =
+            has("comic-geometric") ? this->MedianOf(sc.Name, n, "comic-geometric") - base : NAN;
+          os << "| sphere " << sc.Name << " | " << n << " | " << Fixed(sobel, 1) << " | "
+             << Fixed(ssao, 1) << " | " << Fixed(comic - plain, 1) << " | "
+             << Fixed(comic - base, 1) << " | " << Fixed(geo, 1) << " | "
+             << Fixed((comic - base) / sobel, 2) << " |\n";
         }
       }
     }

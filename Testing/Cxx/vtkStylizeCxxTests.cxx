@@ -8,6 +8,12 @@ int TestLightCountNoRebuild(int argc, char* argv[]);
 int TestLightingReference(int argc, char* argv[]);
 int TestLightingExtremes(int argc, char* argv[]);
 int TestGBuffer(int argc, char* argv[]);
+int TestComicRegression(int argc, char* argv[]);
+int TestComicScale(int argc, char* argv[]);
+int TestComicMagnify(int argc, char* argv[]);
+int TestComicExtremes(int argc, char* argv[]);
+int TestComicMotion(int argc, char* argv[]);
+int TestComicEdgeAccuracy(int argc, char* argv[]);
 
 namespace
 {
@@ -23,6 +29,12 @@ const Entry Tests[] = {
   { "TestLightingReference", TestLightingReference },
   { "TestLightingExtremes", TestLightingExtremes },
   { "TestGBuffer", TestGBuffer },
+  { "TestComicRegression", TestComicRegression },
+  { "TestComicScale", TestComicScale },
+  { "TestComicMagnify", TestComicMagnify },
+  { "TestComicExtremes", TestComicExtremes },
+  { "TestComicMotion", TestComicMotion },
+  { "TestComicEdgeAccuracy", TestComicEdgeAccuracy },
 };
 }
 
