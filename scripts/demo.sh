@@ -10,12 +10,11 @@ OUT="${1:-$STYLIZE_ROOT/out}"
 mkdir -p "$OUT"
 STYLIZE="$STYLIZE_BUILD/bin/vtkstylize"
 echo "== rendering the built-in scene"
-for style in none; do
-  for model in standard comic pixelart; do
-    "$STYLIZE" --style "$style" --lighting "$model" --size 1280x720 \
-      --output "$OUT/demo-$style-$model.png"
-  done
+for model in standard comic pixelart; do
+  "$STYLIZE" --style none --lighting "$model" --size 1280x720 --output "$OUT/demo-none-$model.png"
 done
+"$STYLIZE" --style comic --size 1280x720 --output "$OUT/demo-comic.png"
 "$STYLIZE" --style none --lighting comic --lights 8 --size 1280x720 --output "$OUT/demo-none-comic-8lights.png"
+"$STYLIZE" --style comic --tinted --size 1280x720 --output "$OUT/demo-comic-tinted.png"
 echo "== done: the images are in $OUT"
 ls -1 "$OUT"/*.png
