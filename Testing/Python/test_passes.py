@@ -77,4 +77,51 @@ comic, _ = render(1, False)
 check(vtkstylize.vtkStylizeImageMetrics.MaximumDifference(plain, comic) > 10,
       "comic looks like standard")
 
+
+def render_comic(configure):
+    """The comic pass on a white background; returns the number of ink (dark) pixels."""
+    win = vtkRenderWindow()
+    win.SetSize(200, 150)
+    win.SetMultiSamples(0)
+    win.OffScreenRenderingOn()
+    ren = vtkRenderer()
+    ren.SetBackground(1, 1, 1)
+    win.AddRenderer(ren)
+    sphere = vtkSphereSource()
+    sphere.SetThetaResolution(64)
+    sphere.SetPhiResolution(32)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(sphere.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    ren.AddActor(actor)
+    ren.GetActiveCamera().SetPosition(0, 0, 3)
+    ren.ResetCameraClippingRange()
+    comic_pass = vtkstylize.vtkComicPass()
+    comic_pass.SetReferenceHeight(150)
+    configure(comic_pass)
+    ren.SetPass(comic_pass)
+    win.Render()
+    w2i = vtkWindowToImageFilter()
+    w2i.SetInput(win)
+    w2i.ReadFrontBufferOff()
+    w2i.Update()
+    scalars = w2i.GetOutput().GetPointData().GetScalars()
+    ink = sum(1 for i in range(scalars.GetNumberOfTuples()) if scalars.GetComponent(i, 0) < 128)
+    win.Finalize()
+    return ink
+
+
+# The comic pass: settings clamp, the edge layer is a thin outline, the full image has more ink.
+c = vtkstylize.vtkComicPass()
+c.SetDotSpacing(0.5)
+check(c.GetDotSpacing() == c.GetDotSpacingMinValue(), "DotSpacing does not clamp")
+check(c.GetLightingPass().GetModel() == vtkstylize.vtkStylizeLightingPass.COMIC,
+      "the comic pass does not use the Comic lighting model")
+edges = render_comic(lambda p: p.SetLayer(vtkstylize.vtkComicPass.EDGES))
+full = render_comic(lambda p: None)
+print("comic: %d ink pixels in the edge layer, %d in the full image" % (edges, full))
+check(200 < edges < 3000, "edge layer: %d ink pixels" % edges)
+check(full > edges, "the full comic image has no more ink than its edges")
+
 sys.exit(1 if failures else 0)
