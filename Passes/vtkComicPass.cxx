@@ -33,17 +33,13 @@ public:
   vtkOpenGLFramebufferObject* EdgeFramebuffer = nullptr;
   vtkTextureObject* EdgeTexture = nullptr; // luminance of f_normal, k1, k2
 
+  std::string Defines;      // the #defines of the last frame
+  std::string Declarations; // the shader declarations built from them
+  std::string EdgeDeclarations; // the same for the colour-edge stage
+
   void FreeEdgeBuffers(vtkWindow* w)
   {
-    if (this->EdgeTexture)
-    {
-      if (w)
-      {
-        this->EdgeTexture->ReleaseGraphicsResources(w);
-      }
-      this->EdgeTexture->Delete();
-      this->EdgeTexture = nullptr;
-    }
+    vtkStylizeShaderUtilities::FreeTexture(this->EdgeTexture, w);
     if (this->EdgeFramebuffer)
     {
       if (w)
@@ -57,31 +53,7 @@ public:
 
   void AllocateEdgeBuffers(vtkOpenGLRenderWindow* renWin, int w, int h)
   {
-    auto make = [&](vtkTextureObject*& tex, int internalFormat, int format, int comps) {
-      if (tex && tex->GetContext() != renWin)
-      {
-        tex->Delete();
-        tex = nullptr;
-      }
-      if (!tex)
-      {
-        tex = vtkTextureObject::New();
-        tex->SetContext(renWin);
-        tex->SetMinificationFilter(vtkTextureObject::Nearest);
-        tex->SetMagnificationFilter(vtkTextureObject::Nearest);
-        tex->SetWrapS(vtkTextureObject::ClampToEdge);
-        tex->SetWrapT(vtkTextureObject::ClampToEdge);
-        tex->SetInternalFormat(internalFormat);
-        tex->SetFormat(format);
-        tex->SetDataType(GL_FLOAT);
-        tex->Allocate2D(w, h, comps, VTK_FLOAT);
-      }
-      else
-      {
-        tex->Resize(w, h);
-      }
-    };
-    make(this->EdgeTexture, GL_RGBA16F, GL_RGBA, 4);
+    vtkStylizeShaderUtilities::EnsureScreenTexture(this->EdgeTexture, renWin, w, h, GL_RGBA16F);
     if (!this->EdgeFramebuffer)
     {
       this->EdgeFramebuffer = vtkOpenGLFramebufferObject::New();
@@ -369,7 +341,15 @@ void vtkComicPass::Render(const vtkRenderState* s)
     }
   };
 
-  const std::string declarations = defines + vtkStylizeCommonFS + vtkStylizeDepthFS + vtkComicFS;
+  if (defines != this->Internals->Defines || this->Internals->Declarations.empty())
+  {
+    this->Internals->Defines = defines;
+    this->Internals->Declarations =
+      defines + vtkStylizeCommonFS + vtkStylizeDepthFS + vtkComicFS;
+    this->Internals->EdgeDeclarations =
+      "#define COMIC_STAGE_EDGES\n" + this->Internals->Declarations;
+  }
+  const std::string& declarations = this->Internals->Declarations;
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
@@ -392,7 +372,7 @@ void vtkComicPass::Render(const vtkRenderState* s)
     ostate->vtkglScissor(0, 0, w, h);
     ostate->vtkglDisable(GL_DEPTH_TEST);
     vtkShaderProgram* program = this->Internals->EdgeQuad.Prepare(
-      renWin, "#define COMIC_STAGE_EDGES\n" + declarations, "  comicMain();\n");
+      renWin, this->Internals->EdgeDeclarations, "  comicMain();\n");
     if (program)
     {
       setCommon(program);

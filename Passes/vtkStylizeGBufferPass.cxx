@@ -149,50 +149,17 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
   const bool precisionChanged = this->AllocatedPrecision != this->Precision;
   this->AllocatedPrecision = this->Precision;
   const int colorFormat = this->Precision == FULL ? GL_RGBA32F : GL_RGBA16F;
-  auto make = [&](vtkTextureObject*& tex, int internalFormat, bool isDepth, int comps = 4) {
-    if (tex && (tex->GetContext() != renWin || (!isDepth && precisionChanged)))
-    {
-      tex->Delete();
-      tex = nullptr;
-    }
-    if (!tex)
-    {
-      tex = vtkTextureObject::New();
-      tex->SetContext(renWin);
-      tex->SetMinificationFilter(vtkTextureObject::Nearest);
-      tex->SetMagnificationFilter(vtkTextureObject::Nearest);
-      tex->SetWrapS(vtkTextureObject::ClampToEdge);
-      tex->SetWrapT(vtkTextureObject::ClampToEdge);
-      if (isDepth)
-      {
-        tex->AllocateDepth(w, h, vtkTextureObject::Float32);
-      }
-      else
-      {
-        tex->SetInternalFormat(internalFormat);
-        tex->SetFormat(comps == 1 ? GL_RED : GL_RGBA);
-        tex->SetDataType(GL_FLOAT);
-        tex->Allocate2D(w, h, comps, VTK_FLOAT);
-      }
-    }
-    else
-    {
-      tex->Resize(w, h);
-    }
+  using Utilities = vtkStylizeShaderUtilities;
+  auto make = [&](vtkTextureObject*& tex, int internalFormat) {
+    Utilities::EnsureScreenTexture(tex, renWin, w, h, internalFormat,
+      precisionChanged && internalFormat == colorFormat);
   };
-  auto drop = [&](vtkTextureObject*& tex) {
-    if (tex)
-    {
-      tex->ReleaseGraphicsResources(renWin);
-      tex->Delete();
-      tex = nullptr;
-    }
-  };
-  make(this->ColorTexture, colorFormat, false);
-  make(this->DepthTexture, 0, true);
+  auto drop = [&](vtkTextureObject*& tex) { Utilities::FreeTexture(tex, renWin); };
+  make(this->ColorTexture, colorFormat);
+  make(this->DepthTexture, GL_DEPTH_COMPONENT32F);
   if (this->Channels & NORMAL)
   {
-    make(this->NormalTexture, colorFormat, false);
+    make(this->NormalTexture, colorFormat);
   }
   else
   {
@@ -200,7 +167,7 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
   }
   if (this->Channels & POSITION)
   {
-    make(this->PositionTexture, GL_RGBA32F, false);
+    make(this->PositionTexture, GL_RGBA32F);
   }
   else
   {
@@ -208,7 +175,7 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
   }
   if (this->Channels & LINEAR_DEPTH)
   {
-    make(this->LinearDepthTexture, GL_R32F, false, 1);
+    make(this->LinearDepthTexture, GL_R32F);
   }
   else
   {
@@ -224,19 +191,10 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
 //------------------------------------------------------------------------------
 void vtkStylizeGBufferPass::FreeTextures(vtkWindow* w)
 {
-  for (vtkTextureObject** tex :
-    { &this->ColorTexture, &this->NormalTexture, &this->PositionTexture,
-      &this->LinearDepthTexture, &this->DepthTexture })
+  for (vtkTextureObject** tex : { &this->ColorTexture, &this->NormalTexture,
+         &this->PositionTexture, &this->LinearDepthTexture, &this->DepthTexture })
   {
-    if (*tex)
-    {
-      if (w)
-      {
-        (*tex)->ReleaseGraphicsResources(w);
-      }
-      (*tex)->Delete();
-      *tex = nullptr;
-    }
+    vtkStylizeShaderUtilities::FreeTexture(*tex, w);
   }
   if (this->FrameBufferObject)
   {
@@ -349,8 +307,9 @@ void vtkStylizeGBufferPass::CompositeToOutput(const vtkRenderState* s)
     return;
   }
   vtkOpenGLState* ostate = renWin->GetState();
-  vtkShaderProgram* program = this->Internals->CompositeQuad.Prepare(renWin,
-    std::string(vtkStylizeDepthFS) + vtkStylizeCompositeFS, "  stylizeComposite();\n");
+  static const std::string declarations = std::string(vtkStylizeDepthFS) + vtkStylizeCompositeFS;
+  vtkShaderProgram* program =
+    this->Internals->CompositeQuad.Prepare(renWin, declarations, "  stylizeComposite();\n");
   if (!program)
   {
     vtkErrorMacro("Could not build the G-buffer composite shader.");

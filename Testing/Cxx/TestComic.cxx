@@ -150,15 +150,9 @@ int TestComicRegression(int argc, char* argv[])
     it->second(ren, comic);
   }
   win->Render();
-  int ret = vtkRegressionTestImage(win);
-  auto baseline = ReadPNG(args.Baseline);
-  if (baseline)
-  {
-    auto img = Capture(win);
-    StrictCompare(img, baseline, 2, 0.002, 255, "strict comparison with " + args.Baseline);
-  }
+  const int verdict = RegressionVerdict(win, argc, argv, args, 2, 0.002, 255);
   win->Finalize();
-  return (ret == vtkTesting::PASSED && stylizetest::Failures == 0) ? 0 : 1;
+  return verdict;
 }
 
 // The same scene scaled by 1e-6, 1 and 1e6, and seen with a near/far ratio of 1e7, gives the

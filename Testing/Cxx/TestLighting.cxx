@@ -75,16 +75,9 @@ int TestLightingRegression(int argc, char* argv[])
   lighting->SetModel(model);
   ren->SetPass(lighting);
   win->Render();
-
-  int ret = vtkRegressionTestImage(win);
-  auto baseline = ReadPNG(args.Baseline);
-  if (baseline)
-  {
-    auto img = Capture(win);
-    StrictCompare(img, baseline, 2, 0.0005, 24, "strict comparison with " + args.Baseline);
-  }
+  const int verdict = RegressionVerdict(win, argc, argv, args, 2, 0.0005, 24);
   win->Finalize();
-  return (ret == vtkTesting::PASSED && stylizetest::Failures == 0) ? 0 : 1;
+  return verdict;
 }
 
 // Standard equals VTK's own lighting to within 2/255, through the lighting pass alone and

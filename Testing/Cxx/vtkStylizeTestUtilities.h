@@ -17,6 +17,8 @@
 #include "vtkParametricTorus.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkTesting.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
@@ -368,6 +370,24 @@ inline Args ParseArgs(int argc, char* argv[])
     }
   }
   return a;
+}
+
+/**
+ * A regression test's verdict: VTK's harness (vtkRegressionTestImage: baseline from -V, output
+ * to -T) on the rendered window, then our strict comparison with the same baseline.
+ */
+inline int RegressionVerdict(vtkRenderWindow* win, int argc, char* argv[], const Args& args,
+  double tol, double maxFraction, double maxDiff)
+{
+  const int ret = vtkRegressionTestImage(win);
+  auto baseline = ReadPNG(args.Baseline);
+  if (baseline)
+  {
+    auto img = Capture(win);
+    StrictCompare(img, baseline, tol, maxFraction, maxDiff,
+      "strict comparison with " + args.Baseline);
+  }
+  return (ret == vtkTesting::PASSED && Failures == 0) ? 0 : 1;
 }
 }
 
