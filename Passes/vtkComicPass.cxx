@@ -19,6 +19,7 @@
 #include "vtkComicFS.h"
 #include "vtkStylizeCommonFS.h"
 #include "vtkStylizeDepthFS.h"
+#include "vtkStylizeScreenFS.h"
 
 #include <algorithm>
 #include <cmath>
@@ -345,7 +346,7 @@ void vtkComicPass::Render(const vtkRenderState* s)
   {
     this->Internals->Defines = defines;
     this->Internals->Declarations =
-      defines + vtkStylizeCommonFS + vtkStylizeDepthFS + vtkComicFS;
+      defines + vtkStylizeCommonFS + vtkStylizeDepthFS + vtkStylizeScreenFS + vtkComicFS;
     this->Internals->EdgeDeclarations =
       "#define COMIC_STAGE_EDGES\n" + this->Internals->Declarations;
   }

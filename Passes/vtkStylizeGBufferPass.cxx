@@ -22,6 +22,9 @@
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeShaderUtilities.h"
 #include "vtkTextureObject.h"
+#include "vtkHomogeneousTransform.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransform.h"
 #include "vtkTranslucentPass.h"
 #include "vtkVolumetricPass.h"
 #include "vtk_glew.h"
@@ -30,6 +33,8 @@
 #include "vtkStylizeDepthFS.h"
 #include "vtkStylizeGBufferImpl.h"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace
@@ -76,6 +81,56 @@ protected:
   ~vtkStylizeGBufferClearPass() override = default;
 };
 vtkStandardNewMacro(vtkStylizeGBufferClearPass);
+
+/**
+ * Maps the camera's normalized device coordinates by x' = sx x + tx, y' = sy y + ty while it
+ * lives (through the camera's user transform, composed after the user's own), then restores it.
+ */
+class ScopedScreenTransform
+{
+public:
+  ScopedScreenTransform(vtkCamera* camera, const double t[4])
+  {
+    if (!camera || (t[0] == 1.0 && t[1] == 1.0 && t[2] == 0.0 && t[3] == 0.0))
+    {
+      return;
+    }
+    for (int i = 0; i < 4; ++i)
+    {
+      if (!std::isfinite(t[i]) || (i < 2 && !(t[i] > 0.0)))
+      {
+        return;
+      }
+    }
+    this->Camera = camera;
+    this->Saved = camera->GetUserTransform();
+    vtkNew<vtkMatrix4x4> m;
+    m->SetElement(0, 0, t[0]);
+    m->SetElement(1, 1, t[1]);
+    m->SetElement(0, 3, t[2]);
+    m->SetElement(1, 3, t[3]);
+    vtkNew<vtkTransform> transform;
+    transform->SetMatrix(m);
+    if (this->Saved)
+    {
+      transform->Concatenate(this->Saved->GetMatrix());
+    }
+    camera->SetUserTransform(transform);
+  }
+  ~ScopedScreenTransform()
+  {
+    if (this->Camera)
+    {
+      this->Camera->SetUserTransform(this->Saved);
+    }
+  }
+  ScopedScreenTransform(const ScopedScreenTransform&) = delete;
+  ScopedScreenTransform& operator=(const ScopedScreenTransform&) = delete;
+
+private:
+  vtkCamera* Camera = nullptr;
+  vtkSmartPointer<vtkHomogeneousTransform> Saved;
+};
 }
 
 class vtkStylizeGBufferPass::vtkInternals
@@ -141,6 +196,41 @@ void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->Viewport[2] << " " << this->Viewport[3] << "\n";
   os << indent << "LightingPass: " << (this->LightingPass ? "set" : "(none: VTK lighting)")
      << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::SetGeometryResolution(int w, int h)
+{
+  w = std::max(0, w);
+  h = std::max(0, h);
+  if (w != this->GeometryResolution[0] || h != this->GeometryResolution[1])
+  {
+    this->GeometryResolution[0] = w;
+    this->GeometryResolution[1] = h;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::SetGeometryScreenTransform(double sx, double sy, double tx, double ty)
+{
+  const double t[4] = { sx, sy, tx, ty };
+  if (!std::isfinite(sx) || !std::isfinite(sy) || !std::isfinite(tx) || !std::isfinite(ty) ||
+    !(sx > 0.0) || !(sy > 0.0))
+  {
+    return;
+  }
+  std::copy(t, t + 4, this->GeometryScreenTransform);
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::SetAfterScreenShift(double tx, double ty)
+{
+  if (std::isfinite(tx) && std::isfinite(ty))
+  {
+    this->AfterScreenShift[0] = tx;
+    this->AfterScreenShift[1] = ty;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -240,6 +330,13 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
     this->BuiltLogarithmicDepth = this->LogarithmicDepth;
     this->ShaderStageTime.Modified();
   }
+  if (this->GeometryResolution[0] > 0 && this->GeometryResolution[1] > 0)
+  {
+    w = this->GeometryResolution[0];
+    h = this->GeometryResolution[1];
+  }
+  this->GeometrySize[0] = w;
+  this->GeometrySize[1] = h;
   this->AllocateTextures(renWin, w, h);
 
   vtkOpenGLFramebufferObject* fbo = this->FrameBufferObject;
@@ -279,6 +376,7 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   sfbo.SetFrameBuffer(fbo);
   sfbo.SetRequiredKeys(s->GetRequiredKeys());
 
+  ScopedScreenTransform screen(camera, this->GeometryScreenTransform);
   this->PreRender(&sfbo);
   if (this->LightingPass)
   {
@@ -361,6 +459,8 @@ void vtkStylizeGBufferPass::RenderAfterGeometry(const vtkRenderState* s)
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_LEQUAL);
 
+  const double shift[4] = { 1.0, 1.0, this->AfterScreenShift[0], this->AfterScreenShift[1] };
+  ScopedScreenTransform screen(ren->GetActiveCamera(), shift);
   if (this->LightingPass)
   {
     this->LightingPass->RenderWithLighting(s, this->AfterSequence);

@@ -177,6 +177,28 @@ public:
   /** Size (width, height) and origin (x, y) in the window of the last frame's viewport. */
   vtkGetVector4Macro(Viewport, int);
 
+  ///@{
+  /**
+   * Resolution and screen transform of the geometry render, for styles that render the scene
+   * at another resolution or shifted by a fraction of a pixel (vtkPixelArtPass):
+   * - SetGeometryResolution(w, h): the opaque geometry is rendered into a w x h G-buffer
+   *   instead of the viewport's size (0 x 0, the default). CompositeToOutput() then stretches it.
+   * - SetGeometryScreenTransform(sx, sy, tx, ty): after the camera's projection (and its user
+   *   transform), normalized device coordinates are mapped by x' = sx x + tx, y' = sy y + ty.
+   *   Default (1, 1, 0, 0). Scales must be positive and finite; others are ignored.
+   * - SetAfterScreenShift(tx, ty): the shift applied to translucent geometry and volumes in
+   *   RenderAfterGeometry() (they are drawn at the viewport's resolution), in normalized device
+   *   coordinates. Default (0, 0).
+   * The camera's user transform is restored after each render.
+   */
+  void SetGeometryResolution(int w, int h);
+  void SetGeometryScreenTransform(double sx, double sy, double tx, double ty);
+  void SetAfterScreenShift(double tx, double ty);
+  ///@}
+
+  /** Size of the last geometry render: the G-buffer textures' width and height. */
+  vtkGetVector2Macro(GeometrySize, int);
+
   /**
    * Reads a buffer of the last frame back as floats (4 components per pixel for colour, normal
    * and position, 1 for depth and linear depth), rows bottom to top. The window's context must be current, as it
@@ -214,6 +236,10 @@ protected:
   int Precision = HALF;
   int AllocatedPrecision = -1;
   int Viewport[4] = { 0, 0, 0, 0 };
+  int GeometryResolution[2] = { 0, 0 };
+  int GeometrySize[2] = { 0, 0 };
+  double GeometryScreenTransform[4] = { 1.0, 1.0, 0.0, 0.0 };
+  double AfterScreenShift[2] = { 0.0, 0.0 };
   unsigned int NumberOfAttachments = 1;
   vtkTimeStamp ShaderStageTime;
   int BuiltChannels = -1;

@@ -231,15 +231,7 @@ void comicMain()
 #ifdef COMIC_OBJECT_ANCHOR
   // Triplanar projection of the object-space position on the plane facing its geometric normal
   // (from the neighbouring positions), in world units.
-  vec4 pos = texelFetch(stylizePositionTexture, p, 0);
-  ivec2 sx = p.x + 1 < comicSize.x ? ivec2(1, 0) : ivec2(-1, 0);
-  ivec2 sy = p.y + 1 < comicSize.y ? ivec2(0, 1) : ivec2(0, -1);
-  vec4 px = texelFetch(stylizePositionTexture, p + sx, 0);
-  vec4 py = texelFetch(stylizePositionTexture, p + sy, 0);
-  vec3 gn = cross((px.xyz - pos.xyz) * float(sx.x), (py.xyz - pos.xyz) * float(sy.y));
-  gn = (px.a > 0.5 && py.a > 0.5) ? abs(gn) : vec3(0.0, 0.0, 1.0);
-  vec2 plane = gn.x >= gn.y && gn.x >= gn.z ? pos.yz : (gn.y >= gn.z ? pos.zx : pos.xy);
-  plane = pos.a > 0.5 ? plane : pixel;
+  vec2 plane = stylizeTriplanar(stylizePositionTexture, p, comicSize, pixel);
 #else
   vec2 plane = pixel;
 #endif

@@ -1,0 +1,354 @@
+// VTK Stylize: the pixel-art stages (ALGORITHMS.md section 1), one full-screen pass each.
+// One stage is compiled per program, chosen by a define:
+//   PIXEL_STAGE_REDUCE      (FAITHFUL) average each block of the full-resolution G-buffer
+//   PIXEL_STAGE_GAUSS       gray = mean(R, G, B), the paper's 3x3 Gaussian (sigma = 1)
+//   PIXEL_STAGE_GRADIENT    Sobel: (Gx, Gy, |G|)
+//   PIXEL_STAGE_CLASSIFY    non-maximum suppression and double threshold (Canny) or threshold
+//                           (Sobel); depth and normal edges. 1 strong, 0.5 weak, 0 none
+//   PIXEL_STAGE_HYSTERESIS  one step: weak art pixels next to a strong one become strong
+//   PIXEL_STAGE_STYLIZE     edges, 8x8 ordered dither, palette: the art-pixel image
+//   PIXEL_STAGE_UPSAMPLE    each screen pixel takes its art pixel's colour; writes the depth
+// Every stage but the last runs at the art-pixel resolution (pixelArtSize). Other defines:
+//   PIXEL_FAST, PIXEL_CANNY, PIXEL_SOBEL, PIXEL_DEPTH_EDGES, PIXEL_NORMAL_EDGES, PIXEL_NORMALS,
+//   PIXEL_POSITIONS, PIXEL_EDGES (an edge image exists), PIXEL_SURFACE_ANCHOR,
+//   PIXEL_STYLIZE_BACKGROUND, PIXEL_PALETTE (0 levels, 1 grays, 2 list), PIXEL_LAYER
+//   (0 pixel art, 1 pixelated, 2 edges).
+
+uniform sampler2D stylizeColorTexture;       // lit colour (full resolution or art pixels)
+uniform sampler2D stylizeDepthTexture;       // window depth
+uniform sampler2D stylizeLinearDepthTexture; // -z_view, 0 where there is no surface
+uniform sampler2D stylizeNormalTexture;      // view-space normal, a = 1 on surfaces
+uniform sampler2D stylizePositionTexture;    // object-space position, a = 1 on surfaces
+uniform sampler2D pixelInputTexture;         // the previous stage's output
+uniform sampler2D pixelArtTexture;           // the art-pixel image (upsample)
+uniform sampler2D pixelPaletteTexture;       // palette colours, N x 1
+
+uniform ivec2 pixelArtSize;      // art pixels in this viewport (nx, ny)
+uniform ivec2 pixelViewportSize; // screen pixels in this viewport (w, h)
+uniform ivec2 pixelBlock;        // screen pixels per art pixel (x, y)
+uniform ivec2 pixelGridOrigin;   // viewport pixel where art pixel (0, 0) starts (<= 0)
+uniform ivec2 pixelDitherOrigin; // dither index of art pixel (0, 0)
+uniform int pixelDitherSize;     // art pixels per matrix cell
+uniform float pixelDitherStrength;
+uniform int pixelLevels;         // K
+uniform int pixelPaletteSize;    // colours in pixelPaletteTexture
+uniform float pixelPaletteSpread; // median spacing of the palette's colours
+uniform float pixelLow;          // Canny's low threshold
+uniform float pixelHigh;         // Canny's high threshold (Sobel's threshold)
+uniform float pixelDepthThreshold;
+uniform float pixelNormalThreshold;
+uniform float pixelArtWorld;     // world size of an art pixel: times depth (perspective) or as is
+uniform int pixelParallel;
+uniform float pixelAnchorUnit;   // world size of a dither cell (surface anchor)
+uniform vec3 pixelOutlineColor;
+uniform int pixelDiscardBackground;
+
+// This fragment's art pixel (art-resolution stages) from the quad's texture coordinate.
+ivec2 pixelArtCoord()
+{
+  return clamp(ivec2(texCoord * vec2(pixelArtSize)), ivec2(0), pixelArtSize - 1);
+}
+
+// texelFetch clamped to the art-pixel grid (clamp-to-edge for the kernels).
+vec4 pixelFetch(sampler2D tex, ivec2 p)
+{
+  return texelFetch(tex, clamp(p, ivec2(0), pixelArtSize - 1), 0);
+}
+
+#ifdef PIXEL_STAGE_REDUCE
+// The art pixel's block of full-resolution pixels, clipped to the viewport; blocks wider than
+// 16 pixels are sampled at 16 evenly spaced pixels per axis.
+void pixelMain()
+{
+  ivec2 k = pixelArtCoord();
+  ivec2 lo = max(pixelGridOrigin + k * pixelBlock, ivec2(0));
+  ivec2 hi = min(pixelGridOrigin + (k + 1) * pixelBlock, pixelViewportSize);
+  ivec2 extent = max(hi - lo, ivec2(1));
+  ivec2 n = min(extent, ivec2(16));
+  vec3 colour = vec3(0.0);
+  float surface = 0.0;
+  float depth = 0.0;
+  vec3 normal = vec3(0.0);
+  vec3 position = vec3(0.0);
+  for (int j = 0; j < n.y; ++j)
+  {
+    for (int i = 0; i < n.x; ++i)
+    {
+      ivec2 p = lo + (ivec2(i, j) * extent) / n;
+      colour += texelFetch(stylizeColorTexture, p, 0).rgb;
+      float z = texelFetch(stylizeLinearDepthTexture, p, 0).r;
+      if (z > 0.0)
+      {
+        surface += 1.0;
+        depth += z;
+#ifdef PIXEL_NORMALS
+        normal += texelFetch(stylizeNormalTexture, p, 0).xyz;
+#endif
+#ifdef PIXEL_POSITIONS
+        position += texelFetch(stylizePositionTexture, p, 0).xyz;
+#endif
+      }
+    }
+  }
+  float count = float(n.x * n.y);
+  bool covered = surface >= 0.5 * count && surface > 0.0;
+  gl_FragData[0] = vec4(colour / count, surface / count);
+  gl_FragData[1] = vec4(covered ? depth / surface : 0.0, 0.0, 0.0, 1.0);
+#ifdef PIXEL_NORMALS
+  float nl = length(normal);
+  vec4 normalOut = covered && nl > 0.0 ? vec4(normal / nl, 1.0) : vec4(0.0, 0.0, 1.0, 0.0);
+  gl_FragData[2] = normalOut;
+#endif
+#ifdef PIXEL_POSITIONS
+  vec4 positionOut = covered ? vec4(position / surface, 1.0) : vec4(0.0);
+#ifdef PIXEL_NORMALS
+  gl_FragData[3] = positionOut;
+#else
+  gl_FragData[2] = positionOut;
+#endif
+#endif
+}
+#endif
+
+#ifdef PIXEL_STAGE_GAUSS
+// Eq. 6: corner 0.0751136, edge 0.1238414, centre 0.2041799 (sigma = 1).
+float pixelGray(ivec2 p)
+{
+  vec3 c = pixelFetch(stylizeColorTexture, p).rgb;
+  return (c.r + c.g + c.b) / 3.0;
+}
+void pixelMain()
+{
+  ivec2 p = pixelArtCoord();
+  float corners = pixelGray(p + ivec2(-1, -1)) + pixelGray(p + ivec2(1, -1)) +
+    pixelGray(p + ivec2(-1, 1)) + pixelGray(p + ivec2(1, 1));
+  float edges = pixelGray(p + ivec2(0, -1)) + pixelGray(p + ivec2(-1, 0)) +
+    pixelGray(p + ivec2(1, 0)) + pixelGray(p + ivec2(0, 1));
+  float g = 0.0751136 * corners + 0.1238414 * edges + 0.2041799 * pixelGray(p);
+  gl_FragData[0] = vec4(g, 0.0, 0.0, 1.0);
+}
+#endif
+
+#ifdef PIXEL_STAGE_GRADIENT
+// Sobel with y up: Gx = right - left, Gy = top - bottom, weights 1 2 1.
+void pixelMain()
+{
+  ivec2 p = pixelArtCoord();
+  float a = pixelFetch(pixelInputTexture, p + ivec2(-1, 1)).r;
+  float b = pixelFetch(pixelInputTexture, p + ivec2(0, 1)).r;
+  float c = pixelFetch(pixelInputTexture, p + ivec2(1, 1)).r;
+  float d = pixelFetch(pixelInputTexture, p + ivec2(-1, 0)).r;
+  float f = pixelFetch(pixelInputTexture, p + ivec2(1, 0)).r;
+  float g = pixelFetch(pixelInputTexture, p + ivec2(-1, -1)).r;
+  float h = pixelFetch(pixelInputTexture, p + ivec2(0, -1)).r;
+  float i = pixelFetch(pixelInputTexture, p + ivec2(1, -1)).r;
+  float gx = (c + 2.0 * f + i) - (a + 2.0 * d + g);
+  float gy = (a + 2.0 * b + c) - (g + 2.0 * h + i);
+  gl_FragData[0] = vec4(gx, gy, sqrt(gx * gx + gy * gy), 1.0);
+}
+#endif
+
+#ifdef PIXEL_STAGE_CLASSIFY
+// Neighbour along the quantized gradient direction (0, 45, 90 or 135 degrees).
+ivec2 pixelDirection(vec2 g)
+{
+  vec2 a = abs(g);
+  const float t1 = 0.41421356; // tan(22.5 deg)
+  const float t2 = 2.41421356; // tan(67.5 deg)
+  if (a.y <= t1 * a.x)
+  {
+    return ivec2(1, 0);
+  }
+  if (a.y >= t2 * a.x)
+  {
+    return ivec2(0, 1);
+  }
+  return (g.x > 0.0) == (g.y > 0.0) ? ivec2(1, 1) : ivec2(-1, 1);
+}
+
+void pixelMain()
+{
+  ivec2 p = pixelArtCoord();
+  float result = 0.0;
+#if defined(PIXEL_CANNY) || defined(PIXEL_SOBEL)
+  vec3 g = pixelFetch(pixelInputTexture, p).xyz;
+#ifdef PIXEL_CANNY
+  // Non-maximum suppression: a maximum along the gradient; on a plateau of equal magnitudes
+  // (a step between two art pixels) the art pixel on the positive side is kept.
+  ivec2 dir = pixelDirection(g.xy);
+  float m = g.z;
+  float ahead = pixelFetch(pixelInputTexture, p + dir).z;
+  float behind = pixelFetch(pixelInputTexture, p - dir).z;
+  float eps = 1e-5 * max(m, 1e-6);
+  bool keep = m > 0.0 && m >= ahead - eps && m > behind + eps;
+  float low = min(pixelLow, pixelHigh);
+  result = !keep ? 0.0 : (m >= pixelHigh ? 1.0 : (m >= low ? 0.5 : 0.0));
+#else
+  result = g.z >= pixelHigh ? 1.0 : 0.0;
+#endif
+#endif
+#if defined(PIXEL_DEPTH_EDGES) || defined(PIXEL_NORMAL_EDGES)
+  float z = pixelFetch(stylizeLinearDepthTexture, p).r;
+  if (z > 0.0)
+  {
+    const ivec2 offsets[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
+#ifdef PIXEL_NORMAL_EDGES
+    vec3 n = pixelFetch(stylizeNormalTexture, p).xyz;
+#endif
+    for (int i = 0; i < 4; ++i)
+    {
+      ivec2 q = p + offsets[i];
+      if (q.x < 0 || q.y < 0 || q.x >= pixelArtSize.x || q.y >= pixelArtSize.y)
+      {
+        continue;
+      }
+      float zq = texelFetch(stylizeLinearDepthTexture, q, 0).r;
+#ifdef PIXEL_DEPTH_EDGES
+      // The slope against the screen: the depth step over the world size of an art pixel.
+      // Background neighbours count as infinitely far; the nearer side is outlined.
+      float world = pixelParallel == 1 ? pixelArtWorld : pixelArtWorld * z;
+      if (!(zq > 0.0) || (zq > z && (zq - z) > pixelDepthThreshold * world))
+      {
+        result = 1.0;
+      }
+#endif
+#ifdef PIXEL_NORMAL_EDGES
+      // Creases: the one-sided difference, so the outline is one art pixel wide.
+      if (zq > 0.0 && (i == 0 || i == 2) &&
+        length(texelFetch(stylizeNormalTexture, q, 0).xyz - n) > pixelNormalThreshold)
+      {
+        result = 1.0;
+      }
+#endif
+    }
+  }
+#endif
+  gl_FragData[0] = vec4(result, 0.0, 0.0, 1.0);
+}
+#endif
+
+#ifdef PIXEL_STAGE_HYSTERESIS
+void pixelMain()
+{
+  ivec2 p = pixelArtCoord();
+  float c = pixelFetch(pixelInputTexture, p).r;
+  if (c > 0.25 && c < 0.75)
+  {
+    for (int j = -1; j <= 1; ++j)
+    {
+      for (int i = -1; i <= 1; ++i)
+      {
+        ivec2 q = p + ivec2(i, j);
+        if (q.x >= 0 && q.y >= 0 && q.x < pixelArtSize.x && q.y < pixelArtSize.y &&
+          texelFetch(pixelInputTexture, q, 0).r > 0.75)
+        {
+          c = 1.0;
+        }
+      }
+    }
+  }
+  gl_FragData[0] = vec4(c, 0.0, 0.0, 1.0);
+}
+#endif
+
+#ifdef PIXEL_STAGE_STYLIZE
+// Eq. 10, row-major: entry (y mod 8) * 8 + (x mod 8).
+const int pixelBayer[64] = int[64](
+   1, 49, 13, 61,  4, 52, 16, 64,
+  33, 17, 45, 29, 36, 20, 48, 32,
+   9, 57,  5, 53, 12, 60,  8, 56,
+  41, 25, 37, 21, 44, 28, 40, 24,
+   3, 51, 15, 63,  2, 50, 14, 62,
+  35, 19, 47, 31, 34, 18, 46, 30,
+  11, 59,  7, 55, 10, 58,  6, 54,
+  43, 27, 39, 23, 42, 26, 38, 22);
+
+// Eq. 11: the threshold (M[R] - 0.5) / 64 of dither cell q.
+float pixelThreshold(ivec2 q)
+{
+  ivec2 m = q & 7; // two's complement: also right for negative cells
+  return (float(pixelBayer[m.y * 8 + m.x]) - 0.5) / 64.0;
+}
+
+vec3 pixelQuantize(vec3 c, float t)
+{
+#if PIXEL_PALETTE == 0
+  float k = float(pixelLevels - 1);
+  return min(floor(c * k + t), vec3(k)) / k;
+#elif PIXEL_PALETTE == 1
+  float k = float(pixelLevels - 1);
+  float g = (c.r + c.g + c.b) / 3.0;
+  return vec3(min(floor(g * k + t), k) / k);
+#else
+  vec3 target = c + (t - 0.5) * pixelPaletteSpread;
+  vec3 best = vec3(0.0);
+  float bestDistance = 1e30;
+  for (int i = 0; i < pixelPaletteSize; ++i)
+  {
+    vec3 p = texelFetch(pixelPaletteTexture, ivec2(i, 0), 0).rgb;
+    vec3 d = p - target;
+    float e = dot(d, d);
+    if (e < bestDistance)
+    {
+      bestDistance = e;
+      best = p;
+    }
+  }
+  return best;
+#endif
+}
+
+void pixelMain()
+{
+  ivec2 p = pixelArtCoord();
+  vec3 c = stylizeSaturateFinite(texelFetch(stylizeColorTexture, p, 0).rgb);
+  bool surface = texelFetch(stylizeLinearDepthTexture, p, 0).r > 0.0;
+#ifdef PIXEL_EDGES
+  bool edge = texelFetch(pixelInputTexture, p, 0).r > 0.75;
+#else
+  bool edge = false;
+#endif
+
+#if PIXEL_LAYER == 1
+  vec3 result = c;
+#elif PIXEL_LAYER == 2
+  vec3 result = edge ? vec3(0.0) : vec3(1.0);
+#else
+#ifdef PIXEL_SURFACE_ANCHOR
+  vec2 plane = stylizeTriplanar(stylizePositionTexture, p, pixelArtSize, vec2(p + pixelDitherOrigin));
+  ivec2 cell = surface ? ivec2(floor(plane / pixelAnchorUnit)) :
+                         (p + pixelDitherOrigin) / pixelDitherSize;
+#else
+  ivec2 q = p + pixelDitherOrigin;
+  ivec2 cell = q / pixelDitherSize;
+#endif
+  float t = 0.5 + (pixelThreshold(cell) - 0.5) * pixelDitherStrength;
+  vec3 result = pixelQuantize(c, t);
+#ifndef PIXEL_STYLIZE_BACKGROUND
+  result = surface ? result : c;
+#endif
+  result = edge ? pixelOutlineColor : result;
+#endif
+  gl_FragData[0] = vec4(result, surface ? 1.0 : 0.0);
+}
+#endif
+
+#ifdef PIXEL_STAGE_UPSAMPLE
+void pixelMain()
+{
+  ivec2 v = clamp(ivec2(texCoord * vec2(pixelViewportSize)), ivec2(0), pixelViewportSize - 1);
+  ivec2 k = clamp((v - pixelGridOrigin) / pixelBlock, ivec2(0), pixelArtSize - 1);
+  vec4 art = texelFetch(pixelArtTexture, k, 0);
+#ifdef PIXEL_FAST
+  float depth = texelFetch(stylizeDepthTexture, k, 0).r;
+#else
+  float depth = texelFetch(stylizeDepthTexture, v, 0).r;
+#endif
+  if (pixelDiscardBackground == 1 && art.a < 0.5 && depth >= 1.0)
+  {
+    discard;
+  }
+  gl_FragData[0] = vec4(art.rgb, 1.0);
+  gl_FragDepth = stylizeWindowDepth(depth);
+}
+#endif

@@ -1,0 +1,816 @@
+#include "vtkPixelArtPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkMapper.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkScalarsToColors.h"
+#include "vtkShaderProgram.h"
+#include "vtkStylizeGBufferPass.h"
+#include "vtkStylizeLightingPass.h"
+#include "vtkStylizeShaderUtilities.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include "vtkPixelArtFS.h"
+#include "vtkStylizeCommonFS.h"
+#include "vtkStylizeDepthFS.h"
+#include "vtkStylizeScreenFS.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace
+{
+// Eq. 10 of the pixel-art paper (values 1..64), row-major.
+const int DitherMatrix[64] = { 1, 49, 13, 61, 4, 52, 16, 64, 33, 17, 45, 29, 36, 20, 48, 32, 9,
+  57, 5, 53, 12, 60, 8, 56, 41, 25, 37, 21, 44, 28, 40, 24, 3, 51, 15, 63, 2, 50, 14, 62, 35, 19,
+  47, 31, 34, 18, 46, 30, 11, 59, 7, 55, 10, 58, 6, 54, 43, 27, 39, 23, 42, 26, 38, 22 };
+
+// DawnBringer's 16-colour palette (2011), a pixel-art standard.
+const double Palette16[48] = { 20 / 255., 12 / 255., 28 / 255., 68 / 255., 36 / 255., 52 / 255.,
+  48 / 255., 52 / 255., 109 / 255., 78 / 255., 74 / 255., 78 / 255., 133 / 255., 76 / 255.,
+  48 / 255., 52 / 255., 101 / 255., 36 / 255., 208 / 255., 70 / 255., 72 / 255., 117 / 255.,
+  113 / 255., 97 / 255., 89 / 255., 125 / 255., 206 / 255., 210 / 255., 125 / 255., 44 / 255.,
+  133 / 255., 149 / 255., 161 / 255., 109 / 255., 170 / 255., 44 / 255., 210 / 255., 170 / 255.,
+  153 / 255., 109 / 255., 194 / 255., 202 / 255., 218 / 255., 212 / 255., 94 / 255., 222 / 255.,
+  238 / 255., 214 / 255. };
+
+// Floor division and a non-negative modulo for possibly negative integers.
+long long FloorDiv(long long a, long long b)
+{
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+int PositiveMod(long long a, long long b)
+{
+  const long long m = a % b;
+  return static_cast<int>(m < 0 ? m + b : m);
+}
+}
+
+class vtkPixelArtPass::vtkInternals
+{
+public:
+  vtkNew<vtkStylizeLightingPass> Lighting;
+  vtkNew<vtkStylizeGBufferPass> GBuffer;
+  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
+
+  // Art-resolution textures.
+  vtkTextureObject* ReducedColor = nullptr;
+  vtkTextureObject* ReducedLinear = nullptr;
+  vtkTextureObject* ReducedNormal = nullptr;
+  vtkTextureObject* ReducedPosition = nullptr;
+  vtkTextureObject* Gray = nullptr;
+  vtkTextureObject* Gradient = nullptr;
+  vtkTextureObject* Classes[2] = { nullptr, nullptr };
+  vtkTextureObject* Art = nullptr;
+  vtkTextureObject* PaletteTexture = nullptr;
+  std::vector<float> PaletteData; // what PaletteTexture holds (RGBA)
+
+  vtkStylizeShaderUtilities::ScreenQuad ReduceQuad, GaussQuad, GradientQuad, ClassifyQuad,
+    HysteresisQuad, StylizeQuad, UpsampleQuad;
+  std::string Defines;
+  std::array<std::string, 7> Declarations;
+
+  std::vector<double> Custom; // the CUSTOM palette, RGB
+  int Block[2] = { 1, 1 };
+  int Grid[2] = { 0, 0 };
+
+  void FreeTextures(vtkWindow* w)
+  {
+    using U = vtkStylizeShaderUtilities;
+    for (vtkTextureObject** t : { &this->ReducedColor, &this->ReducedLinear, &this->ReducedNormal,
+           &this->ReducedPosition, &this->Gray, &this->Gradient, &this->Classes[0],
+           &this->Classes[1], &this->Art, &this->PaletteTexture })
+    {
+      U::FreeTexture(*t, w);
+    }
+    this->PaletteData.clear();
+    if (this->Framebuffer)
+    {
+      if (w)
+      {
+        this->Framebuffer->ReleaseGraphicsResources(w);
+      }
+      this->Framebuffer->Delete();
+      this->Framebuffer = nullptr;
+    }
+  }
+};
+
+vtkStandardNewMacro(vtkPixelArtPass);
+vtkCxxSetObjectMacro(vtkPixelArtPass, LookupTable, vtkScalarsToColors);
+
+//------------------------------------------------------------------------------
+vtkPixelArtPass::vtkPixelArtPass()
+  : Internals(new vtkInternals)
+{
+  this->Internals->Lighting->SetModel(vtkStylizeLightingPass::PIXEL_ART);
+  this->Internals->GBuffer->SetLightingPass(this->Internals->Lighting);
+}
+
+//------------------------------------------------------------------------------
+vtkPixelArtPass::~vtkPixelArtPass()
+{
+  this->SetLookupTable(nullptr);
+  this->Internals->FreeTextures(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeLightingPass* vtkPixelArtPass::GetLightingPass()
+{
+  return this->Internals->Lighting;
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeGBufferPass* vtkPixelArtPass::GetGBufferPass()
+{
+  return this->Internals->GBuffer;
+}
+
+//------------------------------------------------------------------------------
+const int* vtkPixelArtPass::GetDitherMatrix()
+{
+  return DitherMatrix;
+}
+
+//------------------------------------------------------------------------------
+const double* vtkPixelArtPass::GetPalette16()
+{
+  return Palette16;
+}
+
+namespace
+{
+double Clamp01(double v)
+{
+  return std::isfinite(v) ? std::min(1.0, std::max(0.0, v)) : 0.0;
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::SetOutlineColor(double r, double g, double b)
+{
+  const double c[3] = { Clamp01(r), Clamp01(g), Clamp01(b) };
+  if (c[0] != this->OutlineColor[0] || c[1] != this->OutlineColor[1] ||
+    c[2] != this->OutlineColor[2])
+  {
+    std::copy(c, c + 3, this->OutlineColor);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::AddPaletteColor(double r, double g, double b)
+{
+  if (this->Internals->Custom.size() >= 3 * 256)
+  {
+    vtkWarningMacro("The custom palette holds at most 256 colours; colour ignored.");
+    return;
+  }
+  this->Internals->Custom.insert(this->Internals->Custom.end(), { Clamp01(r), Clamp01(g), Clamp01(b) });
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::RemoveAllPaletteColors()
+{
+  if (!this->Internals->Custom.empty())
+  {
+    this->Internals->Custom.clear();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkPixelArtPass::GetNumberOfPaletteColors() const
+{
+  return static_cast<int>(this->Internals->Custom.size() / 3);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPixelArtPass::GetPaletteColor(int i, double rgb[3]) const
+{
+  if (i < 0 || i >= this->GetNumberOfPaletteColors())
+  {
+    return false;
+  }
+  std::copy(&this->Internals->Custom[3 * i], &this->Internals->Custom[3 * i] + 3, rgb);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::GetLastGrid(int blockSize[2], int gridSize[2]) const
+{
+  blockSize[0] = this->Internals->Block[0];
+  blockSize[1] = this->Internals->Block[1];
+  gridSize[0] = this->Internals->Grid[0];
+  gridSize[1] = this->Internals->Grid[1];
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  static const char* const modes[] = { "fast", "faithful" };
+  static const char* const detectors[] = { "none", "sobel", "canny" };
+  static const char* const palettes[] = { "levels", "grays", "palette16", "custom", "colormap" };
+  static const char* const anchors[] = { "screen", "grid", "surface" };
+  static const char* const layers[] = { "pixel-art", "pixelated", "edges" };
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Mode: " << modes[this->Mode] << "\n";
+  os << indent << "PixelSize: " << this->PixelSize << " px\n";
+  os << indent << "ArtPixelsAcross: " << this->ArtPixelsAcross << "\n";
+  os << indent << "EdgeDetector: " << detectors[this->EdgeDetector] << "\n";
+  os << indent << "LowThreshold: " << this->LowThreshold << "\n";
+  os << indent << "HighThreshold: " << this->HighThreshold << "\n";
+  os << indent << "HysteresisIterations: " << this->HysteresisIterations << "\n";
+  os << indent << "DepthEdges: " << this->DepthEdges << " (threshold " << this->DepthThreshold
+     << ")\n";
+  os << indent << "NormalEdges: " << this->NormalEdges << " (threshold " << this->NormalThreshold
+     << ")\n";
+  os << indent << "OutlineColor: " << this->OutlineColor[0] << " " << this->OutlineColor[1] << " "
+     << this->OutlineColor[2] << "\n";
+  os << indent << "Palette: " << palettes[this->Palette] << "\n";
+  os << indent << "Levels: " << this->Levels << "\n";
+  os << indent << "PaletteColors: " << this->GetNumberOfPaletteColors() << "\n";
+  os << indent << "LookupTable: " << (this->LookupTable ? "set" : "(the data's)") << "\n";
+  os << indent << "ColormapColors: " << this->ColormapColors << "\n";
+  os << indent << "ColormapShades: " << this->ColormapShades << "\n";
+  os << indent << "DitherStrength: " << this->DitherStrength << "\n";
+  os << indent << "DitherSize: " << this->DitherSize << "\n";
+  os << indent << "DitherAnchor: " << anchors[this->DitherAnchor] << "\n";
+  os << indent << "SnapToGrid: " << this->SnapToGrid << "\n";
+  os << indent << "StylizeBackground: " << this->StylizeBackground << "\n";
+  os << indent << "Layer: " << layers[this->Layer] << "\n";
+  os << indent << "LightingPass:\n";
+  this->Internals->Lighting->PrintSelf(os, indent.GetNextIndent());
+}
+
+namespace
+{
+// The lookup table of the first visible actor that colours by scalars.
+vtkScalarsToColors* FindLookupTable(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+    if (actor && actor->GetVisibility() && mapper && mapper->GetScalarVisibility() &&
+      mapper->GetLookupTable())
+    {
+      return mapper->GetLookupTable();
+    }
+  }
+  return nullptr;
+}
+
+// The median distance from each colour to its nearest other colour.
+double MedianSpacing(const std::vector<float>& rgba)
+{
+  const size_t n = rgba.size() / 4;
+  if (n < 2)
+  {
+    return 0.0;
+  }
+  std::vector<double> nearest(n, 1e30);
+  for (size_t i = 0; i < n; ++i)
+  {
+    for (size_t j = 0; j < n; ++j)
+    {
+      if (i == j)
+      {
+        continue;
+      }
+      double d = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        const double e = rgba[4 * i + c] - rgba[4 * j + c];
+        d += e * e;
+      }
+      nearest[i] = std::min(nearest[i], std::sqrt(d));
+    }
+  }
+  std::nth_element(nearest.begin(), nearest.begin() + n / 2, nearest.end());
+  return nearest[n / 2] < 1e29 ? nearest[n / 2] : 0.0;
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkStylizeGBufferPass* gbuffer = this->Internals->GBuffer;
+  vtkInternals& in = *this->Internals;
+  if (!renWin)
+  {
+    return;
+  }
+  int w, h, ox, oy;
+  ren->GetTiledSizeAndOrigin(&w, &h, &ox, &oy);
+  if (w < 1 || h < 1)
+  {
+    gbuffer->SetGeometryResolution(0, 0);
+    gbuffer->RenderGeometry(s);
+    gbuffer->RenderAfterGeometry(s);
+    this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+    return;
+  }
+
+  // The full (possibly tiled, magnified) image: its size and this tile's offset in it.
+  const int* fullWindow = renWin->GetSize();
+  const double* rvp = ren->GetViewport();
+  double tvp[4];
+  renWin->GetTileViewport(tvp);
+  int tileScale[2];
+  renWin->GetTileScale(tileScale);
+  const double fullWidth = std::max(1.0, (rvp[2] - rvp[0]) * fullWindow[0]);
+  const long long offset[2] = { std::llround(tvp[0] * fullWindow[0] + ox - rvp[0] * fullWindow[0]),
+    std::llround(tvp[1] * fullWindow[1] + oy - rvp[1] * fullWindow[1]) };
+
+  // Art pixel size in screen pixels.
+  int block[2];
+  if (this->ArtPixelsAcross > 0)
+  {
+    block[0] = block[1] = static_cast<int>(
+      std::max(1.0, std::min(1.0e6, std::round(fullWidth / this->ArtPixelsAcross))));
+  }
+  else
+  {
+    block[0] = this->PixelSize * std::max(1, tileScale[0]);
+    block[1] = this->PixelSize * std::max(1, tileScale[1]);
+  }
+
+  // The grid: art columns i0 .. i1 of the full image cover this viewport.
+  int grid[2], origin[2];
+  const int size[2] = { w, h };
+  for (int a = 0; a < 2; ++a)
+  {
+    const long long i0 = FloorDiv(offset[a], block[a]);
+    const long long i1 = FloorDiv(offset[a] + size[a] - 1, block[a]);
+    grid[a] = static_cast<int>(i1 - i0 + 1);
+    origin[a] = static_cast<int>(i0 * block[a] - offset[a]);
+  }
+  in.Block[0] = block[0];
+  in.Block[1] = block[1];
+  in.Grid[0] = grid[0];
+  in.Grid[1] = grid[1];
+
+  // Where the world origin falls, in full-image pixels; the snap shift that puts it on the grid.
+  vtkCamera* cam = ren->GetActiveCamera();
+  const bool parallel = cam->GetParallelProjection() != 0;
+  double shift[2] = { 0.0, 0.0 };
+  long long gridOrigin[2] = { 0, 0 }; // art index of the world origin in the full image
+  {
+    double aspect = ren->GetTiledAspectRatio();
+    vtkMatrix4x4* m = cam->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0);
+    const double clip[4] = { m->GetElement(0, 3), m->GetElement(1, 3), m->GetElement(2, 3),
+      m->GetElement(3, 3) };
+    if (clip[3] > 0.0 && std::isfinite(clip[0]) && std::isfinite(clip[1]))
+    {
+      for (int a = 0; a < 2; ++a)
+      {
+        const double ndc = clip[a] / clip[3];
+        const double pixel = (ndc + 1.0) * 0.5 * size[a] + static_cast<double>(offset[a]);
+        if (std::isfinite(pixel) && std::abs(pixel) < 1.0e15)
+        {
+          const double cells = std::round(pixel / block[a]);
+          gridOrigin[a] = static_cast<long long>(cells);
+          if (parallel && this->SnapToGrid)
+          {
+            shift[a] = cells * block[a] - pixel;
+          }
+        }
+      }
+    }
+  }
+  int ditherOrigin[2];
+  for (int a = 0; a < 2; ++a)
+  {
+    const long long firstArt = FloorDiv(offset[a], block[a]);
+    const long long index = this->DitherAnchor == SCREEN ? firstArt : firstArt - gridOrigin[a];
+    ditherOrigin[a] = PositiveMod(index, 8LL * this->DitherSize);
+  }
+
+  // What this frame computes.
+  const bool fast = this->Mode == FAST;
+  const bool layerEdges = this->Layer != PIXELATED;
+  const bool canny = layerEdges && this->EdgeDetector == CANNY;
+  const bool sobel = layerEdges && this->EdgeDetector == SOBEL;
+  const bool depthEdges = layerEdges && this->DepthEdges;
+  const bool normalEdges = layerEdges && this->NormalEdges;
+  const bool edges = canny || sobel || depthEdges || normalEdges;
+  const bool surfaceAnchor = this->Layer == PIXEL_ART && this->DitherAnchor == SURFACE;
+  int channels = vtkStylizeGBufferPass::LINEAR_DEPTH;
+  if (normalEdges)
+  {
+    channels |= vtkStylizeGBufferPass::NORMAL;
+  }
+  if (surfaceAnchor)
+  {
+    channels |= vtkStylizeGBufferPass::POSITION;
+    gbuffer->SetPositionSpace(vtkStylizeGBufferPass::OBJECT);
+  }
+  gbuffer->SetChannels(channels);
+
+  // Geometry: at the art-pixel resolution (FAST) or the viewport's (FAITHFUL), shifted.
+  const double shiftNDC[2] = { 2.0 * shift[0] / w, 2.0 * shift[1] / h };
+  if (fast)
+  {
+    gbuffer->SetGeometryResolution(grid[0], grid[1]);
+    double t[4];
+    for (int a = 0; a < 2; ++a)
+    {
+      const double span = static_cast<double>(grid[a]) * block[a];
+      t[a] = size[a] / span;
+      t[2 + a] = t[a] - 1.0 - 2.0 * origin[a] / span + 2.0 * shift[a] / span;
+    }
+    gbuffer->SetGeometryScreenTransform(t[0], t[1], t[2], t[3]);
+  }
+  else
+  {
+    gbuffer->SetGeometryResolution(0, 0);
+    gbuffer->SetGeometryScreenTransform(1.0, 1.0, shiftNDC[0], shiftNDC[1]);
+  }
+  gbuffer->SetAfterScreenShift(shiftNDC[0], shiftNDC[1]);
+  if (!gbuffer->RenderGeometry(s))
+  {
+    gbuffer->RenderAfterGeometry(s);
+    this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+    return;
+  }
+
+  // The palette (list palettes only).
+  int palette = this->Palette;
+  std::vector<float> colours;
+  auto addColour = [&](double r, double g, double b) {
+    colours.insert(colours.end(),
+      { static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), 1.0f });
+  };
+  if (palette == PALETTE16)
+  {
+    for (int i = 0; i < 16; ++i)
+    {
+      addColour(Palette16[3 * i], Palette16[3 * i + 1], Palette16[3 * i + 2]);
+    }
+  }
+  else if (palette == CUSTOM)
+  {
+    for (size_t i = 0; i + 2 < in.Custom.size(); i += 3)
+    {
+      addColour(in.Custom[i], in.Custom[i + 1], in.Custom[i + 2]);
+    }
+  }
+  else if (palette == COLORMAP)
+  {
+    vtkScalarsToColors* lut = this->LookupTable ? this->LookupTable : FindLookupTable(s);
+    if (lut)
+    {
+      const double* range = lut->GetRange();
+      addColour(0.0, 0.0, 0.0);
+      for (int i = 0; i < this->ColormapColors; ++i)
+      {
+        const double v =
+          range[0] + (i + 0.5) / this->ColormapColors * (range[1] - range[0]);
+        double rgb[3];
+        lut->GetColor(v, rgb);
+        for (int k = 1; k <= this->ColormapShades; ++k)
+        {
+          const double f = static_cast<double>(k) / this->ColormapShades;
+          addColour(Clamp01(rgb[0] * f), Clamp01(rgb[1] * f), Clamp01(rgb[2] * f));
+        }
+      }
+    }
+  }
+  if (palette >= PALETTE16 && colours.empty())
+  {
+    palette = LEVELS; // an empty list or no colormap
+  }
+  const int shaderPalette = palette == LEVELS ? 0 : (palette == GRAYS ? 1 : 2);
+  const bool quantize = this->Layer == PIXEL_ART;
+  if (quantize && shaderPalette == 2)
+  {
+    if (colours != in.PaletteData || !in.PaletteTexture || in.PaletteTexture->GetContext() != renWin)
+    {
+      vtkStylizeShaderUtilities::FreeTexture(in.PaletteTexture, renWin);
+      in.PaletteTexture = vtkTextureObject::New();
+      in.PaletteTexture->SetContext(renWin);
+      in.PaletteTexture->Create2DFromRaw(static_cast<unsigned int>(colours.size() / 4), 1, 4,
+        VTK_FLOAT, colours.data());
+      in.PaletteData = colours;
+    }
+  }
+  const double spread = MedianSpacing(colours);
+
+  // Shader sources: one program per stage, rebuilt when the defines change.
+  std::string defines;
+  auto define = [&](bool on, const char* name) {
+    if (on)
+    {
+      defines += std::string("#define ") + name + "\n";
+    }
+  };
+  define(fast, "PIXEL_FAST");
+  define(canny, "PIXEL_CANNY");
+  define(sobel, "PIXEL_SOBEL");
+  define(depthEdges, "PIXEL_DEPTH_EDGES");
+  define(normalEdges, "PIXEL_NORMAL_EDGES");
+  define(normalEdges, "PIXEL_NORMALS");
+  define(surfaceAnchor, "PIXEL_POSITIONS");
+  define(edges, "PIXEL_EDGES");
+  define(surfaceAnchor, "PIXEL_SURFACE_ANCHOR");
+  define(this->StylizeBackground, "PIXEL_STYLIZE_BACKGROUND");
+  defines += "#define PIXEL_PALETTE " + std::to_string(shaderPalette) + "\n";
+  defines += "#define PIXEL_LAYER " + std::to_string(this->Layer) + "\n";
+  if (defines != in.Defines || in.Declarations[0].empty())
+  {
+    in.Defines = defines;
+    static const char* const stages[7] = { "REDUCE", "GAUSS", "GRADIENT", "CLASSIFY",
+      "HYSTERESIS", "STYLIZE", "UPSAMPLE" };
+    for (int i = 0; i < 7; ++i)
+    {
+      in.Declarations[i] = std::string("#define PIXEL_STAGE_") + stages[i] + "\n" + defines +
+        vtkStylizeCommonFS + vtkStylizeDepthFS + vtkStylizeScreenFS + vtkPixelArtFS;
+    }
+  }
+
+  // World size of an art pixel (depth edges) and of a dither cell on the surface.
+  double pixelWorld;
+  if (parallel)
+  {
+    pixelWorld = 2.0 * cam->GetParallelScale() / h;
+  }
+  else
+  {
+    const double t = std::tan(vtkMath::RadiansFromDegrees(cam->GetViewAngle()) * 0.5);
+    pixelWorld = 2.0 * t / (cam->GetUseHorizontalViewAngle() ? w : h);
+  }
+  if (!(pixelWorld > 0.0) || !std::isfinite(pixelWorld))
+  {
+    pixelWorld = 1.0;
+  }
+  const double artWorld = pixelWorld * block[1];
+  double anchorUnit = (parallel ? artWorld : artWorld * cam->GetDistance()) * this->DitherSize;
+  if (!(anchorUnit > 0.0) || !std::isfinite(anchorUnit))
+  {
+    anchorUnit = 1.0;
+  }
+
+  // Inputs of the art-resolution stages.
+  vtkTextureObject* colour = gbuffer->GetColorTexture();
+  vtkTextureObject* linear = gbuffer->GetLinearDepthTexture();
+  vtkTextureObject* normal = gbuffer->GetNormalTexture();
+  vtkTextureObject* position = gbuffer->GetPositionTexture();
+  vtkTextureObject* depth = gbuffer->GetDepthTexture();
+
+  using U = vtkStylizeShaderUtilities;
+  const int nx = grid[0], ny = grid[1];
+  const bool full = gbuffer->GetPrecision() == vtkStylizeGBufferPass::FULL;
+  if (!in.Framebuffer)
+  {
+    in.Framebuffer = vtkOpenGLFramebufferObject::New();
+    in.Framebuffer->SetContext(renWin);
+  }
+  vtkOpenGLFramebufferObject* fbo = in.Framebuffer;
+
+  std::vector<vtkTextureObject*> bound;
+  auto setUniforms = [&](vtkShaderProgram* program, vtkTextureObject* input) {
+    auto seti = [&](const char* name, int v) {
+      if (program->IsUniformUsed(name))
+      {
+        program->SetUniformi(name, v);
+      }
+    };
+    auto setf = [&](const char* name, double v) {
+      if (program->IsUniformUsed(name))
+      {
+        program->SetUniformf(name, static_cast<float>(v));
+      }
+    };
+    auto set2i = [&](const char* name, int x, int y) {
+      if (program->IsUniformUsed(name))
+      {
+        const int v[2] = { x, y };
+        program->SetUniform2i(name, v);
+      }
+    };
+    auto bind = [&](const char* name, vtkTextureObject* tex) {
+      if (tex && program->IsUniformUsed(name))
+      {
+        tex->Activate();
+        bound.push_back(tex);
+        program->SetUniformi(name, tex->GetTextureUnit());
+      }
+    };
+    bind("stylizeColorTexture", colour);
+    bind("stylizeLinearDepthTexture", linear);
+    bind("stylizeNormalTexture", normal);
+    bind("stylizePositionTexture", position);
+    bind("stylizeDepthTexture", depth);
+    bind("pixelInputTexture", input);
+    bind("pixelArtTexture", in.Art);
+    bind("pixelPaletteTexture", in.PaletteTexture);
+    set2i("pixelArtSize", nx, ny);
+    set2i("pixelViewportSize", w, h);
+    set2i("pixelBlock", block[0], block[1]);
+    set2i("pixelGridOrigin", origin[0], origin[1]);
+    set2i("pixelDitherOrigin", ditherOrigin[0], ditherOrigin[1]);
+    seti("pixelDitherSize", this->DitherSize);
+    setf("pixelDitherStrength", this->DitherStrength);
+    seti("pixelLevels", this->Levels);
+    seti("pixelPaletteSize", static_cast<int>(in.PaletteData.size() / 4));
+    setf("pixelPaletteSpread", spread);
+    setf("pixelLow", this->LowThreshold);
+    setf("pixelHigh", this->HighThreshold);
+    setf("pixelDepthThreshold", this->DepthThreshold);
+    setf("pixelNormalThreshold", this->NormalThreshold);
+    setf("pixelArtWorld", artWorld);
+    seti("pixelParallel", parallel ? 1 : 0);
+    setf("pixelAnchorUnit", anchorUnit);
+    if (program->IsUniformUsed("pixelOutlineColor"))
+    {
+      const float c[3] = { static_cast<float>(this->OutlineColor[0]),
+        static_cast<float>(this->OutlineColor[1]), static_cast<float>(this->OutlineColor[2]) };
+      program->SetUniform3f("pixelOutlineColor", c);
+    }
+    seti("pixelDiscardBackground", ren->Transparent() ? 1 : 0);
+    gbuffer->SetDepthMappingUniforms(program);
+  };
+  auto unbind = [&]() {
+    for (vtkTextureObject* tex : bound)
+    {
+      if (tex->GetTextureUnit() >= 0)
+      {
+        tex->Deactivate();
+      }
+    }
+    bound.clear();
+  };
+  bool ok = true;
+  // Runs one art-resolution stage into `targets`.
+  auto stage = [&](vtkStylizeShaderUtilities::ScreenQuad& quad, int index,
+                 std::initializer_list<vtkTextureObject*> targets, vtkTextureObject* input) {
+    fbo->RemoveColorAttachments(4);
+    unsigned int i = 0;
+    for (vtkTextureObject* t : targets)
+    {
+      fbo->AddColorAttachment(i++, t);
+    }
+    fbo->ActivateDrawBuffers(i);
+    vtkShaderProgram* program =
+      quad.Prepare(renWin, in.Declarations[index], "  pixelMain();\n");
+    if (!program)
+    {
+      ok = false;
+      return;
+    }
+    setUniforms(program, input);
+    quad.Render();
+    unbind();
+  };
+
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  ostate->vtkglViewport(0, 0, nx, ny);
+  ostate->vtkglScissor(0, 0, nx, ny);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+
+  // Faithful mode: average each block of the full-resolution G-buffer.
+  if (!fast)
+  {
+    U::EnsureScreenTexture(in.ReducedColor, renWin, nx, ny, full ? GL_RGBA32F : GL_RGBA16F);
+    U::EnsureScreenTexture(in.ReducedLinear, renWin, nx, ny, GL_R32F);
+    if (normalEdges)
+    {
+      U::EnsureScreenTexture(in.ReducedNormal, renWin, nx, ny, GL_RGBA16F);
+    }
+    if (surfaceAnchor)
+    {
+      U::EnsureScreenTexture(in.ReducedPosition, renWin, nx, ny, GL_RGBA32F);
+    }
+    if (normalEdges && surfaceAnchor)
+    {
+      stage(in.ReduceQuad, 0, { in.ReducedColor, in.ReducedLinear, in.ReducedNormal,
+                                in.ReducedPosition }, nullptr);
+    }
+    else if (normalEdges)
+    {
+      stage(in.ReduceQuad, 0, { in.ReducedColor, in.ReducedLinear, in.ReducedNormal }, nullptr);
+    }
+    else if (surfaceAnchor)
+    {
+      stage(in.ReduceQuad, 0, { in.ReducedColor, in.ReducedLinear, in.ReducedPosition }, nullptr);
+    }
+    else
+    {
+      stage(in.ReduceQuad, 0, { in.ReducedColor, in.ReducedLinear }, nullptr);
+    }
+    colour = in.ReducedColor;
+    linear = in.ReducedLinear;
+    normal = normalEdges ? in.ReducedNormal : nullptr;
+    position = surfaceAnchor ? in.ReducedPosition : nullptr;
+  }
+  vtkTextureObject* fullDepth = depth;
+  depth = nullptr; // not read at the art resolution
+
+  // Edges: Gaussian, Sobel, classification, hysteresis.
+  vtkTextureObject* edgeImage = nullptr;
+  if (edges)
+  {
+    U::EnsureScreenTexture(in.Classes[0], renWin, nx, ny, GL_R32F);
+    if (canny || sobel)
+    {
+      U::EnsureScreenTexture(in.Gray, renWin, nx, ny, GL_R32F);
+      U::EnsureScreenTexture(in.Gradient, renWin, nx, ny, GL_RGBA32F);
+      stage(in.GaussQuad, 1, { in.Gray }, nullptr);
+      stage(in.GradientQuad, 2, { in.Gradient }, in.Gray);
+    }
+    stage(in.ClassifyQuad, 3, { in.Classes[0] }, in.Gradient);
+    edgeImage = in.Classes[0];
+    if (canny && this->HysteresisIterations > 0)
+    {
+      U::EnsureScreenTexture(in.Classes[1], renWin, nx, ny, GL_R32F);
+      for (int i = 0; i < this->HysteresisIterations; ++i)
+      {
+        vtkTextureObject* target = edgeImage == in.Classes[0] ? in.Classes[1] : in.Classes[0];
+        stage(in.HysteresisQuad, 4, { target }, edgeImage);
+        edgeImage = target;
+      }
+    }
+  }
+
+  // The art-pixel image.
+  U::EnsureScreenTexture(in.Art, renWin, nx, ny, GL_RGBA16F);
+  {
+    vtkTextureObject* art = in.Art;
+    in.Art = nullptr; // not an input of its own stage
+    stage(in.StylizeQuad, 5, { art }, edgeImage);
+    in.Art = art;
+  }
+  fbo->RemoveColorAttachments(4);
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+
+  // Upsample into the output framebuffer, with the depth.
+  ostate->vtkglViewport(ox, oy, w, h);
+  ostate->vtkglScissor(ox, oy, w, h);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  depth = fullDepth;
+  vtkShaderProgram* program = in.UpsampleQuad.Prepare(renWin, in.Declarations[6], "  pixelMain();\n");
+  if (program)
+  {
+    setUniforms(program, nullptr);
+    in.UpsampleQuad.Render();
+    unbind();
+  }
+  else
+  {
+    ok = false;
+  }
+  if (!ok)
+  {
+    vtkErrorMacro("Could not build a pixel-art shader.");
+  }
+  vtkOpenGLCheckErrorMacro("failed after vtkPixelArtPass::Render");
+
+  gbuffer->RenderAfterGeometry(s);
+  this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  vtkInternals& in = *this->Internals;
+  for (auto* quad : { &in.ReduceQuad, &in.GaussQuad, &in.GradientQuad, &in.ClassifyQuad,
+         &in.HysteresisQuad, &in.StylizeQuad, &in.UpsampleQuad })
+  {
+    quad->Release(w);
+  }
+  in.FreeTextures(w);
+  in.GBuffer->ReleaseGraphicsResources(w);
+}

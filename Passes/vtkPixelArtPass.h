@@ -1,0 +1,369 @@
+/**
+ * @class   vtkPixelArtPass
+ * @brief   Pixel-art rendering: the pixel-art lighting model, pixelation to a grid of art
+ *          pixels, Canny outlines, and 8x8 ordered dithering to a small palette.
+ *
+ * The method of "real-time pixel-art rendering" (ALGORITHMS.md section 1) as one render pass.
+ * Use it like any VTK pass: `renderer->SetPass(pixelArt)`; it needs no delegate.
+ *
+ * 1. The opaque geometry is rendered into the shared G-buffer (vtkStylizeGBufferPass) with the
+ *    PixelArt lighting model (vtkStylizeLightingPass: Ld = sqrt(s) kd I att max(0, N.L),
+ *    Ls = M ks Ip max(0, N.H)^beta). The screen is divided into art pixels of PixelSize x
+ *    PixelSize screen pixels (or ArtPixelsAcross across the image). Two ways to get one colour
+ *    per art pixel:
+ *    - FAST: the geometry is rendered directly at the art-pixel resolution (one sample per art
+ *      pixel at its centre; aliased, and the cheapest: fragment work falls by PixelSize^2).
+ *    - FAITHFUL: the geometry is rendered at full resolution and each block is averaged (a box
+ *      filter: silhouettes and thin features keep their share of the art pixel). Blocks larger
+ *      than 16 x 16 pixels are averaged over 16 x 16 evenly spaced samples.
+ * 2. Edges on the art-pixel image (eq. 5-7): grayscale (mean of R, G, B), the paper's 3x3
+ *    Gaussian (sigma = 1), Sobel, then either a plain threshold (SOBEL, the paper's first
+ *    version, ragged) or Canny (CANNY: non-maximum suppression along the gradient, double
+ *    threshold, hysteresis). Optional geometric outlines: depth edges (scale-free slope of the
+ *    linear depth, drawn on the nearer side) and normal edges (creases). Edge art pixels take
+ *    the OutlineColor. The paper's Lagrange "shape reconstruction" (eq. 8) is not implemented:
+ *    outlines are whole art pixels.
+ * 3. Ordered dither (eq. 9-11): the paper's 8x8 matrix M, index (y mod 8) * 8 + (x mod 8) on the
+ *    art-pixel grid (x to the right, y up from the bottom of the image, as in OpenGL), threshold
+ *    t = (M - 0.5) / 64, then quantization to a palette: K levels per channel
+ *    (floor(c (K - 1) + t) / (K - 1)), K levels of gray (K = 2: 1-bit), the 16-colour
+ *    DawnBringer palette, a user list, or a palette derived from the data's colormap (its colours
+ *    at several shades, so data coloured by a scalar stay readable). For colour lists the colour
+ *    is offset by (t - 1/2) times the palette's median colour spacing, then mapped to the nearest
+ *    palette colour.
+ *
+ * A stable grid: with parallel projection and SnapToGrid, the image is shifted by less than one
+ * art pixel so that the world origin falls on a grid corner; a panning camera then moves the
+ * picture by whole art pixels and each art pixel keeps sampling the same part of the scene. The
+ * dither pattern is anchored to the window (SCREEN), to that world-aligned grid (GRID), or to the
+ * surface (SURFACE: the art pixel's object-space position, triplanar).
+ *
+ * Lengths are in screen pixels of the window; a screenshot magnified through
+ * vtkWindowToImageFilter (tiled rendering) multiplies them by its scale, so it shows the same
+ * art pixels at higher detail. The background is pixelated but not dithered unless
+ * StylizeBackground is on. Translucent geometry, volumes and the 2D overlay are drawn afterwards,
+ * unstylized, depth-tested against the pixel-art image.
+ *
+ * @sa vtkStylizeGBufferPass vtkStylizeLightingPass vtkComicPass
+ */
+
+#ifndef vtkPixelArtPass_h
+#define vtkPixelArtPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkStylizePassesModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkScalarsToColors;
+class vtkStylizeGBufferPass;
+class vtkStylizeLightingPass;
+
+class VTKSTYLIZEPASSES_EXPORT vtkPixelArtPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkPixelArtPass* New();
+  vtkTypeMacro(vtkPixelArtPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** How the colour of an art pixel is obtained. */
+  enum Modes
+  {
+    FAST = 0,    ///< render the scene at the art-pixel resolution (one sample per art pixel)
+    FAITHFUL = 1 ///< render at full resolution and average each block
+  };
+
+  /** The edge detector run on the art-pixel image. */
+  enum EdgeDetectors
+  {
+    NO_EDGES = 0, ///< no image edges (depth and normal edges may still be on)
+    SOBEL = 1,    ///< Gaussian, Sobel, magnitude above HighThreshold
+    CANNY = 2     ///< Gaussian, Sobel, non-maximum suppression, double threshold, hysteresis
+  };
+
+  /** The colours art pixels are reduced to. */
+  enum Palettes
+  {
+    LEVELS = 0,   ///< Levels values per channel (Levels^3 colours)
+    GRAYS = 1,    ///< Levels grays (Levels = 2: 1-bit black and white)
+    PALETTE16 = 2, ///< the 16-colour DawnBringer palette
+    CUSTOM = 3,   ///< the user's list (AddPaletteColor); empty list: LEVELS
+    COLORMAP = 4  ///< the data's colormap at ColormapColors values x ColormapShades shades
+  };
+
+  /** What the dither pattern is attached to. */
+  enum DitherAnchors
+  {
+    SCREEN = 0, ///< the window's art-pixel grid
+    GRID = 1,   ///< the art-pixel grid aligned to the world origin (moves with a pan)
+    SURFACE = 2 ///< the surface: the art pixel's object-space position (triplanar)
+  };
+
+  /** What the pass writes (for figures and tests). */
+  enum Layers
+  {
+    PIXEL_ART = 0, ///< the final image
+    PIXELATED = 1, ///< the art-pixel colours before edges and dither
+    EDGES = 2      ///< black edge art pixels on white
+  };
+
+  /** The lighting pass (PixelArt model by default); change its model or settings freely. */
+  vtkStylizeLightingPass* GetLightingPass();
+
+  /** The G-buffer pass (its channels and resolution are set by this pass each frame). */
+  vtkStylizeGBufferPass* GetGBufferPass();
+
+  ///@{
+  /** FAST or FAITHFUL (default) pixelation. */
+  vtkSetClampMacro(Mode, int, FAST, FAITHFUL);
+  vtkGetMacro(Mode, int);
+  void SetModeToFast() { this->SetMode(FAST); }
+  void SetModeToFaithful() { this->SetMode(FAITHFUL); }
+  ///@}
+
+  ///@{
+  /**
+   * Size of an art pixel in screen pixels of the window (times the tile scale of a magnified
+   * screenshot). 1 keeps the full resolution; sizes as large as the window or larger give one
+   * art pixel. Range [1, 8192], default 4. Ignored when ArtPixelsAcross is set.
+   */
+  vtkSetClampMacro(PixelSize, int, 1, 8192);
+  vtkGetMacro(PixelSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Number of art pixels across the image's width: the pixel size becomes the image width
+   * divided by it, rounded (at least 1 screen pixel). 0 (default) uses PixelSize.
+   * Range [0, 16384].
+   */
+  vtkSetClampMacro(ArtPixelsAcross, int, 0, 16384);
+  vtkGetMacro(ArtPixelsAcross, int);
+  ///@}
+
+  ///@{
+  /** The edge detector: NO_EDGES, SOBEL or CANNY (default). */
+  vtkSetClampMacro(EdgeDetector, int, NO_EDGES, CANNY);
+  vtkGetMacro(EdgeDetector, int);
+  ///@}
+
+  ///@{
+  /**
+   * Canny's thresholds on the Sobel magnitude of the smoothed gray image (gray in [0, 1]; a
+   * step of height g gives a magnitude of about 2.9 g after the Gaussian). Art pixels above
+   * HighThreshold are edges, those between the two are edges when connected to one (hysteresis).
+   * SOBEL uses HighThreshold alone. Range [0, 8], defaults 0.25 and 0.5. The low threshold is
+   * used as min(Low, High).
+   */
+  vtkSetClampMacro(LowThreshold, double, 0.0, 8.0);
+  vtkGetMacro(LowThreshold, double);
+  vtkSetClampMacro(HighThreshold, double, 0.0, 8.0);
+  vtkGetMacro(HighThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Hysteresis steps: a weak art pixel becomes an edge when a chain of weak art pixels at most
+   * this long connects it to a strong one (one full-screen pass per step, at the art-pixel
+   * resolution). 0: strong edges only. Range [0, 256], default 16.
+   */
+  vtkSetClampMacro(HysteresisIterations, int, 0, 256);
+  vtkGetMacro(HysteresisIterations, int);
+  ///@}
+
+  ///@{
+  /** Outline the depth discontinuities (silhouettes), on the nearer art pixel. Default on. */
+  vtkSetMacro(DepthEdges, bool);
+  vtkGetMacro(DepthEdges, bool);
+  vtkBooleanMacro(DepthEdges, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Depth-edge threshold, dimensionless: the slope of the linear depth against the screen, in
+   * world units per world unit, between neighbouring art pixels. Scale-free (the same at any
+   * scene size). Range [0.01, 1e4], default 4.
+   */
+  vtkSetClampMacro(DepthThreshold, double, 0.01, 1.0e4);
+  vtkGetMacro(DepthThreshold, double);
+  ///@}
+
+  ///@{
+  /** Outline creases: the normal changes by more than NormalThreshold to the next art pixel. */
+  vtkSetMacro(NormalEdges, bool);
+  vtkGetMacro(NormalEdges, bool);
+  vtkBooleanMacro(NormalEdges, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Normal-edge threshold: the length of the difference of unit normals between neighbouring
+   * art pixels (0.5 is about 29 degrees). Range [0.001, 2], default 0.5.
+   */
+  vtkSetClampMacro(NormalThreshold, double, 0.001, 2.0);
+  vtkGetMacro(NormalThreshold, double);
+  ///@}
+
+  ///@{
+  /** Colour of the outline art pixels, RGB in [0, 1]. Default black. */
+  virtual void SetOutlineColor(double r, double g, double b);
+  virtual void SetOutlineColor(const double c[3]) { this->SetOutlineColor(c[0], c[1], c[2]); }
+  vtkGetVector3Macro(OutlineColor, double);
+  ///@}
+
+  ///@{
+  /** The palette: LEVELS (default), GRAYS, PALETTE16, CUSTOM or COLORMAP. */
+  vtkSetClampMacro(Palette, int, LEVELS, COLORMAP);
+  vtkGetMacro(Palette, int);
+  /** GRAYS with 2 levels: black and white. */
+  void SetPaletteToOneBit()
+  {
+    this->SetPalette(GRAYS);
+    this->SetLevels(2);
+  }
+  /** GRAYS with 4 levels. */
+  void SetPaletteToFourGrays()
+  {
+    this->SetPalette(GRAYS);
+    this->SetLevels(4);
+  }
+  ///@}
+
+  ///@{
+  /** K, the levels per channel (LEVELS) or of gray (GRAYS). Range [2, 256], default 4. */
+  vtkSetClampMacro(Levels, int, 2, 256);
+  vtkGetMacro(Levels, int);
+  ///@}
+
+  ///@{
+  /**
+   * The CUSTOM palette: RGB colours in [0, 1] (clamped; NaN becomes 0), at most 256.
+   */
+  void AddPaletteColor(double r, double g, double b);
+  void RemoveAllPaletteColors();
+  int GetNumberOfPaletteColors() const;
+  /** Copies colour i into rgb; returns false when i is out of range. */
+  bool GetPaletteColor(int i, double rgb[3]) const;
+  ///@}
+
+  ///@{
+  /**
+   * The colormap for the COLORMAP palette. nullptr (default): the lookup table of the first
+   * visible actor that colours by scalars. Without one, COLORMAP falls back to LEVELS.
+   */
+  virtual void SetLookupTable(vtkScalarsToColors* lut);
+  vtkGetObjectMacro(LookupTable, vtkScalarsToColors);
+  ///@}
+
+  ///@{
+  /**
+   * COLORMAP palette size: ColormapColors evenly spaced values of the colormap's range, each at
+   * ColormapShades brightness levels (k / ColormapShades, k = 1 .. ColormapShades), plus black.
+   * Ranges [2, 64] (default 8) and [1, 8] (default 4).
+   */
+  vtkSetClampMacro(ColormapColors, int, 2, 64);
+  vtkGetMacro(ColormapColors, int);
+  vtkSetClampMacro(ColormapShades, int, 1, 8);
+  vtkGetMacro(ColormapShades, int);
+  ///@}
+
+  ///@{
+  /**
+   * Dither strength in [0, 1]: 1 uses the full threshold range of the matrix (the paper's
+   * ordered dither), 0 plain rounding to the nearest level or colour. Default 1.
+   */
+  vtkSetClampMacro(DitherStrength, double, 0.0, 1.0);
+  vtkGetMacro(DitherStrength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Dither size: art pixels per cell of the 8x8 matrix (the pattern repeats every 8 x DitherSize
+   * art pixels). Range [1, 64], default 1.
+   */
+  vtkSetClampMacro(DitherSize, int, 1, 64);
+  vtkGetMacro(DitherSize, int);
+  ///@}
+
+  ///@{
+  /** SCREEN, GRID (default) or SURFACE. */
+  vtkSetClampMacro(DitherAnchor, int, SCREEN, SURFACE);
+  vtkGetMacro(DitherAnchor, int);
+  ///@}
+
+  ///@{
+  /**
+   * With parallel projection, shift the image by less than an art pixel so the world origin lies
+   * on the art-pixel grid: a pan moves the picture by whole art pixels. Default on. No effect in
+   * perspective (where no shift can align every depth).
+   */
+  vtkSetMacro(SnapToGrid, bool);
+  vtkGetMacro(SnapToGrid, bool);
+  vtkBooleanMacro(SnapToGrid, bool);
+  ///@}
+
+  ///@{
+  /** Dither and quantize the background too. Default off: it is only pixelated. */
+  vtkSetMacro(StylizeBackground, bool);
+  vtkGetMacro(StylizeBackground, bool);
+  vtkBooleanMacro(StylizeBackground, bool);
+  ///@}
+
+  ///@{
+  /** The layer written to the output: PIXEL_ART (default), PIXELATED or EDGES. */
+  vtkSetClampMacro(Layer, int, PIXEL_ART, EDGES);
+  vtkGetMacro(Layer, int);
+  ///@}
+
+  /**
+   * The art pixel size (x, y) in screen pixels and the art-pixel grid size of the last frame.
+   * For tests and measurement.
+   */
+  void GetLastGrid(int blockSize[2], int gridSize[2]) const;
+
+  /** The 8x8 dither matrix of eq. 10 (values 1..64), row-major: entry (y mod 8) * 8 + x mod 8. */
+  static const int* GetDitherMatrix();
+
+  /** The 16-colour DawnBringer palette, RGB in [0, 1], 48 values. */
+  static const double* GetPalette16();
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkPixelArtPass();
+  ~vtkPixelArtPass() override;
+
+  int Mode = FAITHFUL;
+  int PixelSize = 4;
+  int ArtPixelsAcross = 0;
+  int EdgeDetector = CANNY;
+  double LowThreshold = 0.25;
+  double HighThreshold = 0.5;
+  int HysteresisIterations = 16;
+  bool DepthEdges = true;
+  double DepthThreshold = 4.0;
+  bool NormalEdges = false;
+  double NormalThreshold = 0.5;
+  double OutlineColor[3] = { 0.0, 0.0, 0.0 };
+  int Palette = LEVELS;
+  int Levels = 4;
+  vtkScalarsToColors* LookupTable = nullptr;
+  int ColormapColors = 8;
+  int ColormapShades = 4;
+  double DitherStrength = 1.0;
+  int DitherSize = 1;
+  int DitherAnchor = GRID;
+  bool SnapToGrid = true;
+  bool StylizeBackground = false;
+  int Layer = PIXEL_ART;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+
+private:
+  vtkPixelArtPass(const vtkPixelArtPass&) = delete;
+  void operator=(const vtkPixelArtPass&) = delete;
+};
+
+#endif
