@@ -22,6 +22,7 @@
  */
 
 #include "vtkComicPass.h"
+#include "vtkPixelArtPass.h"
 #include "vtkStylizeDemoScene.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
@@ -247,6 +248,7 @@ void CopyLighting(vtkStylizeLightingPass* from, vtkStylizeLightingPass* to)
 struct StyleSettings
 {
   std::vector<std::function<void(vtkComicPass*)>> Comic;
+  std::vector<std::function<void(vtkPixelArtPass*)>> Pixel;
 };
 
 /**
@@ -288,6 +290,19 @@ const std::vector<StyleSpec>& Styles()
           apply(comic);
         }
         return comic;
+      } },
+    { "pixel", "pixel art: pixelation, Canny outlines, 8x8 ordered dither to a palette "
+               "(vtkPixelArtPass)",
+      vtkStylizeLightingPass::PIXEL_ART,
+      [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
+        const StyleSettings& settings) -> vtkSmartPointer<vtkRenderPass> {
+        auto pixel = vtkSmartPointer<vtkPixelArtPass>::New();
+        CopyLighting(lighting, pixel->GetLightingPass());
+        for (const auto& apply : settings.Pixel)
+        {
+          apply(pixel);
+        }
+        return pixel;
       } },
   };
   return styles;
@@ -569,6 +584,266 @@ void AddComicOptions(std::vector<OptionSpec>& t)
   }
 }
 
+/** Parses "R,G,B" with components in [0, 1], or "#rrggbb". */
+std::array<double, 3> ParseColor(const std::string& option, const std::string& v)
+{
+  std::array<double, 3> c{};
+  if (!v.empty() && v[0] == '#')
+  {
+    if (v.size() != 7 || v.find_first_not_of("0123456789abcdefABCDEF", 1) != std::string::npos)
+    {
+      UsageError("invalid colour " + Quote(v) + " for " + option + ": expected #rrggbb or R,G,B");
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      c[i] = std::stoi(v.substr(1 + 2 * i, 2), nullptr, 16) / 255.0;
+    }
+    return c;
+  }
+  const auto parts = Split(v, ',');
+  if (parts.size() != 3)
+  {
+    UsageError("invalid colour " + Quote(v) + " for " + option + ": expected #rrggbb or R,G,B");
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    c[i] = DoubleInRange(option, parts[i], 0.0, 1.0);
+  }
+  return c;
+}
+
+/**
+ * The pixel-art options. Ranges and defaults come from vtkPixelArtPass itself, as for comic.
+ * --depth-threshold and --normal-threshold (comic options with the same ranges) also set the
+ * pixel-art pass's thresholds.
+ */
+void AddPixelOptions(std::vector<OptionSpec>& t)
+{
+  vtkNew<vtkPixelArtPass> d;
+  using P = vtkPixelArtPass;
+  struct Number
+  {
+    const char* Name;
+    const char* Argument;
+    const char* Help;
+    double (P::*Get)();
+    double (P::*Min)();
+    double (P::*Max)();
+    void (P::*Set)(double);
+  };
+  const Number numbers[] = {
+    { "--low-threshold", "T", "pixel: Canny low threshold on the Sobel magnitude of the gray image",
+      &P::GetLowThreshold, &P::GetLowThresholdMinValue, &P::GetLowThresholdMaxValue,
+      &P::SetLowThreshold },
+    { "--high-threshold", "T",
+      "pixel: Canny high threshold (and the Sobel detector's threshold)", &P::GetHighThreshold,
+      &P::GetHighThresholdMinValue, &P::GetHighThresholdMaxValue, &P::SetHighThreshold },
+    { "--dither-strength", "S", "pixel: share of the dither matrix's threshold range used",
+      &P::GetDitherStrength, &P::GetDitherStrengthMinValue, &P::GetDitherStrengthMaxValue,
+      &P::SetDitherStrength },
+  };
+  for (const Number& n : numbers)
+  {
+    const double lo = (d.Get()->*n.Min)();
+    const double hi = (d.Get()->*n.Max)();
+    const std::string name = n.Name;
+    auto set = n.Set;
+    t.push_back({ name, n.Argument,
+      std::string(n.Help) + ", [" + FormatNumber(lo) + ", " + FormatNumber(hi) +
+        "] (default: " + FormatNumber((d.Get()->*n.Get)()) + ")",
+      [name, lo, hi, set](Options& opt, const std::string& v) {
+        const double value = DoubleInRange(name, v, lo, hi);
+        opt.StyleOptions.Pixel.push_back([set, value](P* p) { (p->*set)(value); });
+      } });
+  }
+  struct Integer
+  {
+    const char* Name;
+    const char* Argument;
+    const char* Help;
+    int (P::*Get)();
+    int (P::*Min)();
+    int (P::*Max)();
+    void (P::*Set)(int);
+  };
+  const Integer integers[] = {
+    { "--pixel-size", "PX", "pixel: art pixel size in window pixels", &P::GetPixelSize,
+      &P::GetPixelSizeMinValue, &P::GetPixelSizeMaxValue, &P::SetPixelSize },
+    { "--art-pixels", "N", "pixel: art pixels across the image width, 0 = use --pixel-size",
+      &P::GetArtPixelsAcross, &P::GetArtPixelsAcrossMinValue, &P::GetArtPixelsAcrossMaxValue,
+      &P::SetArtPixelsAcross },
+    { "--hysteresis", "N", "pixel: Canny hysteresis steps (0 = strong edges only)",
+      &P::GetHysteresisIterations, &P::GetHysteresisIterationsMinValue,
+      &P::GetHysteresisIterationsMaxValue, &P::SetHysteresisIterations },
+    { "--levels", "K", "pixel: levels per channel (levels palette) or of gray (grays palette)",
+      &P::GetLevels, &P::GetLevelsMinValue, &P::GetLevelsMaxValue, &P::SetLevels },
+    { "--dither-size", "N", "pixel: art pixels per cell of the 8x8 dither matrix",
+      &P::GetDitherSize, &P::GetDitherSizeMinValue, &P::GetDitherSizeMaxValue,
+      &P::SetDitherSize },
+    { "--colormap-colors", "N", "pixel: colormap palette: values sampled from the colormap",
+      &P::GetColormapColors, &P::GetColormapColorsMinValue, &P::GetColormapColorsMaxValue,
+      &P::SetColormapColors },
+    { "--colormap-shades", "N", "pixel: colormap palette: shades of each sampled colour",
+      &P::GetColormapShades, &P::GetColormapShadesMinValue, &P::GetColormapShadesMaxValue,
+      &P::SetColormapShades },
+  };
+  for (const Integer& n : integers)
+  {
+    const int lo = (d.Get()->*n.Min)();
+    const int hi = (d.Get()->*n.Max)();
+    const std::string name = n.Name;
+    auto set = n.Set;
+    t.push_back({ name, n.Argument,
+      std::string(n.Help) + ", [" + std::to_string(lo) + ", " + std::to_string(hi) +
+        "] (default: " + std::to_string((d.Get()->*n.Get)()) + ")",
+      [name, lo, hi, set](Options& opt, const std::string& v) {
+        const int value = IntInRange(name, v, lo, hi);
+        opt.StyleOptions.Pixel.push_back([set, value](P* p) { (p->*set)(value); });
+      } });
+  }
+  // Keyword options.
+  struct Keyword
+  {
+    const char* Name;
+    const char* Argument;
+    const char* Help;
+    std::vector<std::pair<const char*, std::function<void(P*)>>> Values;
+  };
+  const Keyword keywords[] = {
+    { "--mode", "fast|faithful",
+      "pixel: render at the art-pixel resolution (fast) or at full resolution and average each "
+      "block (faithful) (default: faithful)",
+      { { "fast", [](P* p) { p->SetModeToFast(); } },
+        { "faithful", [](P* p) { p->SetModeToFaithful(); } } } },
+    { "--edge-detector", "none|sobel|canny",
+      "pixel: edges of the lit art-pixel image (default: canny)",
+      { { "none", [](P* p) { p->SetEdgeDetector(P::NO_EDGES); } },
+        { "sobel", [](P* p) { p->SetEdgeDetector(P::SOBEL); } },
+        { "canny", [](P* p) { p->SetEdgeDetector(P::CANNY); } } } },
+    { "--palette", "levels|grays|1bit|4grays|16|custom|colormap",
+      "pixel: levels per channel, grays, black and white, 4 grays, the 16-colour DawnBringer "
+      "palette, the --colors list, or the data's colormap (default: levels)",
+      { { "levels", [](P* p) { p->SetPalette(P::LEVELS); } },
+        { "grays", [](P* p) { p->SetPalette(P::GRAYS); } },
+        { "1bit", [](P* p) { p->SetPaletteToOneBit(); } },
+        { "4grays", [](P* p) { p->SetPaletteToFourGrays(); } },
+        { "16", [](P* p) { p->SetPalette(P::PALETTE16); } },
+        { "custom", [](P* p) { p->SetPalette(P::CUSTOM); } },
+        { "colormap", [](P* p) { p->SetPalette(P::COLORMAP); } } } },
+    { "--dither-anchor", "screen|grid|surface",
+      "pixel: attach the dither pattern to the window, to the world-aligned art-pixel grid, or "
+      "to the surface (default: grid)",
+      { { "screen", [](P* p) { p->SetDitherAnchor(P::SCREEN); } },
+        { "grid", [](P* p) { p->SetDitherAnchor(P::GRID); } },
+        { "surface", [](P* p) { p->SetDitherAnchor(P::SURFACE); } } } },
+    { "--pixel-layer", "art|pixelated|edges",
+      "pixel: write the pixel art, the art-pixel colours before edges and dither, or the edges "
+      "alone (default: art)",
+      { { "art", [](P* p) { p->SetLayer(P::PIXEL_ART); } },
+        { "pixelated", [](P* p) { p->SetLayer(P::PIXELATED); } },
+        { "edges", [](P* p) { p->SetLayer(P::EDGES); } } } },
+  };
+  for (const Keyword& k : keywords)
+  {
+    const std::string name = k.Name;
+    const auto values = k.Values;
+    t.push_back({ name, k.Argument, k.Help, [name, values](Options& opt, const std::string& v) {
+                   std::string known;
+                   for (const auto& value : values)
+                   {
+                     if (Lower(v) == value.first)
+                     {
+                       opt.StyleOptions.Pixel.push_back(value.second);
+                       return;
+                     }
+                     known += (known.empty() ? "" : ", ") + std::string(value.first);
+                   }
+                   UsageError("unknown value " + Quote(v) + " for " + name + " (expected " +
+                     known + ")");
+                 } });
+  }
+  t.push_back({ "--outline", "COLOR",
+    "pixel: outline colour, R,G,B in [0, 1] or #rrggbb (default: 0,0,0)",
+    [](Options& opt, const std::string& v) {
+      const auto c = ParseColor("--outline", v);
+      opt.StyleOptions.Pixel.push_back([c](P* p) { p->SetOutlineColor(c[0], c[1], c[2]); });
+    } });
+  t.push_back({ "--colors", "LIST",
+    "pixel: the custom palette, colours separated by ';' (R,G,B or #rrggbb), at most 256; "
+    "selects --palette custom",
+    [](Options& opt, const std::string& v) {
+      std::vector<std::array<double, 3>> colours;
+      for (const std::string& part : Split(v, ';'))
+      {
+        colours.push_back(ParseColor("--colors", part));
+      }
+      if (colours.size() > 256)
+      {
+        UsageError("--colors: at most 256 colours");
+      }
+      opt.StyleOptions.Pixel.push_back([colours](P* p) {
+        p->RemoveAllPaletteColors();
+        for (const auto& c : colours)
+        {
+          p->AddPaletteColor(c[0], c[1], c[2]);
+        }
+        p->SetPalette(P::CUSTOM);
+      });
+    } });
+  struct Flag
+  {
+    const char* Name;
+    const char* Help;
+    void (P::*Set)(bool);
+    bool Value;
+  };
+  const Flag flags[] = {
+    { "--no-depth-edges", "pixel: no silhouette outlines (default: on)", &P::SetDepthEdges,
+      false },
+    { "--normal-edges", "pixel: outline creases (default: off)", &P::SetNormalEdges, true },
+    { "--no-snap", "pixel: do not snap a parallel camera to the art-pixel grid (default: snap)",
+      &P::SetSnapToGrid, false },
+    { "--stylize-background", "pixel: dither and quantize the background too (default: off)",
+      &P::SetStylizeBackground, true },
+  };
+  for (const Flag& f : flags)
+  {
+    auto set = f.Set;
+    const bool value = f.Value;
+    t.push_back({ f.Name, nullptr, f.Help, [set, value](Options& opt, const std::string&) {
+                   opt.StyleOptions.Pixel.push_back([set, value](P* p) { (p->*set)(value); });
+                 } });
+  }
+  // Thresholds shared with comic (same ranges): set both passes.
+  for (OptionSpec& o : t)
+  {
+    if (o.Name == "--depth-threshold" || o.Name == "--normal-threshold")
+    {
+      const bool depth = o.Name == "--depth-threshold";
+      const std::string name = o.Name;
+      const double lo = depth ? d->GetDepthThresholdMinValue() : d->GetNormalThresholdMinValue();
+      const double hi = depth ? d->GetDepthThresholdMaxValue() : d->GetNormalThresholdMaxValue();
+      auto comic = o.Apply;
+      o.Help += "; pixel: the same for its depth and normal outlines (default: " +
+        FormatNumber(depth ? d->GetDepthThreshold() : d->GetNormalThreshold()) + ")";
+      o.Apply = [comic, depth, name, lo, hi](Options& opt, const std::string& v) {
+        comic(opt, v);
+        const double value = DoubleInRange(name, v, lo, hi);
+        opt.StyleOptions.Pixel.push_back([depth, value](P* p) {
+          if (depth)
+          {
+            p->SetDepthThreshold(value);
+          }
+          else
+          {
+            p->SetNormalThreshold(value);
+          }
+        });
+      };
+    }
+  }
+}
+
 std::vector<OptionSpec> OptionTable(const LightingSettings& d)
 {
   const Options o; // default values
@@ -709,6 +984,7 @@ std::vector<OptionSpec> OptionTable(const LightingSettings& d)
     "render through the shared G-buffer pass (default: the lighting pass alone)",
     [](Options& opt, const std::string&) { opt.GBuffer = true; } });
   AddComicOptions(t);
+  AddPixelOptions(t);
   t.push_back({ "--magnify", "N",
     "write an image N times the window size, rendered in N x N tiles (vtkWindowToImageFilter "
     "scale), [1, " + std::to_string(MaxMagnify) + "] (default: 1)",

@@ -5,8 +5,10 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 vtkStandardNewMacro(vtkStylizeImageMetrics);
 
@@ -119,4 +121,89 @@ vtkIdType vtkStylizeImageMetrics::CountNonFinite(vtkDataArray* array)
     }
   }
   return count;
+}
+
+//------------------------------------------------------------------------------
+double vtkStylizeImageMetrics::SSIM(vtkImageData* a, vtkImageData* b, double peak)
+{
+  if (!a || !b)
+  {
+    return -2.0;
+  }
+  int da[3], db[3];
+  a->GetDimensions(da);
+  b->GetDimensions(db);
+  vtkDataArray* sa = a->GetPointData()->GetScalars();
+  vtkDataArray* sb = b->GetPointData()->GetScalars();
+  if (!sa || !sb || da[0] != db[0] || da[1] != db[1] || da[2] != 1 || db[2] != 1)
+  {
+    return -2.0;
+  }
+  const int w = da[0], h = da[1];
+  auto luminance = [](vtkDataArray* s, vtkIdType i) {
+    const int n = s->GetNumberOfComponents();
+    if (n < 3)
+    {
+      return s->GetComponent(i, 0);
+    }
+    return (s->GetComponent(i, 0) + s->GetComponent(i, 1) + s->GetComponent(i, 2)) / 3.0;
+  };
+  std::vector<double> x(static_cast<size_t>(w) * h), y(x.size());
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(x.size()); ++i)
+  {
+    x[i] = luminance(sa, i);
+    y[i] = luminance(sb, i);
+  }
+  const int radius = 5;
+  double kernel[2 * radius + 1];
+  for (int i = -radius; i <= radius; ++i)
+  {
+    kernel[i + radius] = std::exp(-0.5 * i * i / (1.5 * 1.5));
+  }
+  const double c1 = (0.01 * peak) * (0.01 * peak);
+  const double c2 = (0.03 * peak) * (0.03 * peak);
+  // Window centres: inside the image by the radius, or the centre of a small image.
+  const int x0 = w > 2 * radius ? radius : w / 2, x1 = w > 2 * radius ? w - radius : w / 2 + 1;
+  const int y0 = h > 2 * radius ? radius : h / 2, y1 = h > 2 * radius ? h - radius : h / 2 + 1;
+  double sum = 0.0;
+  long long count = 0;
+  for (int cy = y0; cy < y1; ++cy)
+  {
+    for (int cx = x0; cx < x1; ++cx)
+    {
+      double wsum = 0, mx = 0, my = 0, mxx = 0, myy = 0, mxy = 0;
+      for (int j = -radius; j <= radius; ++j)
+      {
+        const int yy = cy + j;
+        if (yy < 0 || yy >= h)
+        {
+          continue;
+        }
+        for (int i = -radius; i <= radius; ++i)
+        {
+          const int xx = cx + i;
+          if (xx < 0 || xx >= w)
+          {
+            continue;
+          }
+          const double k = kernel[i + radius] * kernel[j + radius];
+          const size_t p = static_cast<size_t>(yy) * w + xx;
+          wsum += k;
+          mx += k * x[p];
+          my += k * y[p];
+          mxx += k * x[p] * x[p];
+          myy += k * y[p] * y[p];
+          mxy += k * x[p] * y[p];
+        }
+      }
+      mx /= wsum;
+      my /= wsum;
+      const double vx = std::max(0.0, mxx / wsum - mx * mx);
+      const double vy = std::max(0.0, myy / wsum - my * my);
+      const double cxy = mxy / wsum - mx * my;
+      sum += ((2 * mx * my + c1) * (2 * cxy + c2)) / ((mx * mx + my * my + c1) * (vx + vy + c2));
+      ++count;
+    }
+  }
+  return count > 0 ? sum / count : -2.0;
 }

@@ -37,6 +37,15 @@ public:
   /** PSNR in dB over all components for the given peak value (255 for 8-bit images). */
   static double PSNR(vtkImageData* a, vtkImageData* b, double peak);
 
+  /**
+   * Mean structural similarity (SSIM, Wang et al. 2004) of the luminance (mean of the first three
+   * components, or the only one) of two images of the same size, for the given peak value: an
+   * 11 x 11 Gaussian window (sigma 1.5), C1 = (0.01 peak)^2, C2 = (0.03 peak)^2, averaged over
+   * the window positions inside the image (the whole image when it is smaller than the window).
+   * 1 for identical images; -2 when the sizes differ or an image is missing.
+   */
+  static double SSIM(vtkImageData* a, vtkImageData* b, double peak);
+
   /** Number of NaN or infinite values among all components of the array. */
   static vtkIdType CountNonFinite(vtkDataArray* array);
 

@@ -2,6 +2,8 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -259,15 +261,27 @@ void vtkPixelArtPass::PrintSelf(ostream& os, vtkIndent indent)
 
 namespace
 {
-// The lookup table of the first visible actor that colours by scalars.
+// The lookup table of the first visible actor that maps scalars through one (not a mapper
+// that merely could: vtkMapper::GetLookupTable() makes a default table on demand).
 vtkScalarsToColors* FindLookupTable(const vtkRenderState* s)
 {
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
     vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
-    if (actor && actor->GetVisibility() && mapper && mapper->GetScalarVisibility() &&
-      mapper->GetLookupTable())
+    if (!actor || !actor->GetVisibility() || !mapper || !mapper->GetScalarVisibility() ||
+      mapper->GetColorMode() == VTK_COLOR_MODE_DIRECT_SCALARS)
+    {
+      continue;
+    }
+    int cellFlag = 0;
+    vtkDataSet* input = mapper->GetInputAsDataSet();
+    vtkDataArray* scalars = input
+      ? vtkDataArray::SafeDownCast(vtkAbstractMapper::GetAbstractScalars(input,
+          mapper->GetScalarMode(), mapper->GetArrayAccessMode(), mapper->GetArrayId(),
+          mapper->GetArrayName(), cellFlag))
+      : nullptr;
+    if (scalars && scalars->GetNumberOfComponents() == 1)
     {
       return mapper->GetLookupTable();
     }
@@ -354,8 +368,11 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
     block[1] = this->PixelSize * std::max(1, tileScale[1]);
   }
 
-  // The grid: art columns i0 .. i1 of the full image cover this viewport.
-  int grid[2], origin[2];
+  // The grid: art columns i0 .. i1 of the full image cover this viewport. FAITHFUL renders the
+  // full-resolution extent of these blocks (clipped to the full image), so that an art pixel
+  // that straddles two tiles of a magnified screenshot averages the same pixels in both.
+  const double fullSize[2] = { fullWidth, std::max(1.0, (rvp[3] - rvp[1]) * fullWindow[1]) };
+  int grid[2], origin[2], extentOrigin[2], extent[2];
   const int size[2] = { w, h };
   for (int a = 0; a < 2; ++a)
   {
@@ -363,6 +380,11 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
     const long long i1 = FloorDiv(offset[a] + size[a] - 1, block[a]);
     grid[a] = static_cast<int>(i1 - i0 + 1);
     origin[a] = static_cast<int>(i0 * block[a] - offset[a]);
+    const long long lo = std::max(i0 * block[a], 0LL);
+    const long long hi = std::max(std::min((i1 + 1) * block[a],
+      static_cast<long long>(std::llround(fullSize[a]))), offset[a] + size[a]);
+    extentOrigin[a] = static_cast<int>(std::min(lo, offset[a]) - offset[a]);
+    extent[a] = static_cast<int>(hi - offset[a] - extentOrigin[a]);
   }
   in.Block[0] = block[0];
   in.Block[1] = block[1];
@@ -426,24 +448,31 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   }
   gbuffer->SetChannels(channels);
 
-  // Geometry: at the art-pixel resolution (FAST) or the viewport's (FAITHFUL), shifted.
+  // Geometry: at the art-pixel resolution over the grid (FAST) or at full resolution over the
+  // blocks' extent (FAITHFUL), shifted onto the grid.
   const double shiftNDC[2] = { 2.0 * shift[0] / w, 2.0 * shift[1] / h };
-  if (fast)
   {
-    gbuffer->SetGeometryResolution(grid[0], grid[1]);
     double t[4];
     for (int a = 0; a < 2; ++a)
     {
-      const double span = static_cast<double>(grid[a]) * block[a];
+      const double first = fast ? origin[a] : extentOrigin[a];
+      const double span = fast ? static_cast<double>(grid[a]) * block[a] : extent[a];
       t[a] = size[a] / span;
-      t[2 + a] = t[a] - 1.0 - 2.0 * origin[a] / span + 2.0 * shift[a] / span;
+      t[2 + a] = t[a] - 1.0 - 2.0 * first / span + 2.0 * shift[a] / span;
     }
     gbuffer->SetGeometryScreenTransform(t[0], t[1], t[2], t[3]);
-  }
-  else
-  {
-    gbuffer->SetGeometryResolution(0, 0);
-    gbuffer->SetGeometryScreenTransform(1.0, 1.0, shiftNDC[0], shiftNDC[1]);
+    if (fast)
+    {
+      gbuffer->SetGeometryResolution(grid[0], grid[1]);
+    }
+    else if (extent[0] == w && extent[1] == h)
+    {
+      gbuffer->SetGeometryResolution(0, 0);
+    }
+    else
+    {
+      gbuffer->SetGeometryResolution(extent[0], extent[1]);
+    }
   }
   gbuffer->SetAfterScreenShift(shiftNDC[0], shiftNDC[1]);
   if (!gbuffer->RenderGeometry(s))
@@ -627,6 +656,8 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
     set2i("pixelViewportSize", w, h);
     set2i("pixelBlock", block[0], block[1]);
     set2i("pixelGridOrigin", origin[0], origin[1]);
+    set2i("pixelExtentOrigin", extentOrigin[0], extentOrigin[1]);
+    set2i("pixelExtentSize", extent[0], extent[1]);
     set2i("pixelDitherOrigin", ditherOrigin[0], ditherOrigin[1]);
     seti("pixelDitherSize", this->DitherSize);
     setf("pixelDitherStrength", this->DitherStrength);

@@ -27,6 +27,8 @@ uniform ivec2 pixelArtSize;      // art pixels in this viewport (nx, ny)
 uniform ivec2 pixelViewportSize; // screen pixels in this viewport (w, h)
 uniform ivec2 pixelBlock;        // screen pixels per art pixel (x, y)
 uniform ivec2 pixelGridOrigin;   // viewport pixel where art pixel (0, 0) starts (<= 0)
+uniform ivec2 pixelExtentOrigin; // FAITHFUL: viewport pixel of the G-buffer's texel (0, 0)
+uniform ivec2 pixelExtentSize;   // FAITHFUL: the G-buffer's size (the blocks' extent)
 uniform ivec2 pixelDitherOrigin; // dither index of art pixel (0, 0)
 uniform int pixelDitherSize;     // art pixels per matrix cell
 uniform float pixelDitherStrength;
@@ -56,13 +58,13 @@ vec4 pixelFetch(sampler2D tex, ivec2 p)
 }
 
 #ifdef PIXEL_STAGE_REDUCE
-// The art pixel's block of full-resolution pixels, clipped to the viewport; blocks wider than
+// The art pixel's block of full-resolution pixels, clipped to the full image; blocks wider than
 // 16 pixels are sampled at 16 evenly spaced pixels per axis.
 void pixelMain()
 {
   ivec2 k = pixelArtCoord();
-  ivec2 lo = max(pixelGridOrigin + k * pixelBlock, ivec2(0));
-  ivec2 hi = min(pixelGridOrigin + (k + 1) * pixelBlock, pixelViewportSize);
+  ivec2 lo = max(pixelGridOrigin + k * pixelBlock - pixelExtentOrigin, ivec2(0));
+  ivec2 hi = min(pixelGridOrigin + (k + 1) * pixelBlock - pixelExtentOrigin, pixelExtentSize);
   ivec2 extent = max(hi - lo, ivec2(1));
   ivec2 n = min(extent, ivec2(16));
   vec3 colour = vec3(0.0);
@@ -342,7 +344,7 @@ void pixelMain()
 #ifdef PIXEL_FAST
   float depth = texelFetch(stylizeDepthTexture, k, 0).r;
 #else
-  float depth = texelFetch(stylizeDepthTexture, v, 0).r;
+  float depth = texelFetch(stylizeDepthTexture, v - pixelExtentOrigin, 0).r;
 #endif
   if (pixelDiscardBackground == 1 && art.a < 0.5 && depth >= 1.0)
   {

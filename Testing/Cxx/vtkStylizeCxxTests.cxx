@@ -14,6 +14,13 @@ int TestComicMagnify(int argc, char* argv[]);
 int TestComicExtremes(int argc, char* argv[]);
 int TestComicMotion(int argc, char* argv[]);
 int TestComicEdgeAccuracy(int argc, char* argv[]);
+int TestPixelArtRegression(int argc, char* argv[]);
+int TestPixelArtDither(int argc, char* argv[]);
+int TestPixelArtCanny(int argc, char* argv[]);
+int TestPixelArtStability(int argc, char* argv[]);
+int TestPixelArtFidelity(int argc, char* argv[]);
+int TestPixelArtMagnify(int argc, char* argv[]);
+int TestPixelArtExtremes(int argc, char* argv[]);
 
 namespace
 {
@@ -35,6 +42,13 @@ const Entry Tests[] = {
   { "TestComicExtremes", TestComicExtremes },
   { "TestComicMotion", TestComicMotion },
   { "TestComicEdgeAccuracy", TestComicEdgeAccuracy },
+  { "TestPixelArtRegression", TestPixelArtRegression },
+  { "TestPixelArtDither", TestPixelArtDither },
+  { "TestPixelArtCanny", TestPixelArtCanny },
+  { "TestPixelArtStability", TestPixelArtStability },
+  { "TestPixelArtFidelity", TestPixelArtFidelity },
+  { "TestPixelArtMagnify", TestPixelArtMagnify },
+  { "TestPixelArtExtremes", TestPixelArtExtremes },
 };
 }
 
