@@ -63,6 +63,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
@@ -769,13 +770,29 @@ void AddPixelOptions(std::vector<OptionSpec>& t)
       opt.StyleOptions.Pixel.push_back([c](P* p) { p->SetOutlineColor(c[0], c[1], c[2]); });
     } });
   t.push_back({ "--colors", "LIST",
-    "pixel: the custom palette, colours separated by ';' (R,G,B or #rrggbb), at most 256; "
-    "selects --palette custom",
+    "pixel: the custom palette: colours (R,G,B or #rrggbb) separated by spaces or ';', at most "
+    "256; selects --palette custom",
     [](Options& opt, const std::string& v) {
+      // Colours separated by ';' or white space; hex colours may also be separated by ','.
+      std::string list = v;
+      for (size_t i = 0; i < list.size(); ++i)
+      {
+        const bool hexComma = list[i] == ',' && i + 1 < list.size() && list[i + 1] == '#';
+        if (list[i] == ';' || std::isspace(static_cast<unsigned char>(list[i])) || hexComma)
+        {
+          list[i] = ' ';
+        }
+      }
       std::vector<std::array<double, 3>> colours;
-      for (const std::string& part : Split(v, ';'))
+      std::istringstream words(list);
+      std::string part;
+      while (words >> part)
       {
         colours.push_back(ParseColor("--colors", part));
+      }
+      if (colours.empty())
+      {
+        UsageError("--colors: no colour given");
       }
       if (colours.size() > 256)
       {

@@ -255,6 +255,8 @@ void vtkPixelArtPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SnapToGrid: " << this->SnapToGrid << "\n";
   os << indent << "StylizeBackground: " << this->StylizeBackground << "\n";
   os << indent << "Layer: " << layers[this->Layer] << "\n";
+  os << indent << "DepthOutput: " << (this->DepthOutput == DEPTH_ALWAYS ? "always" : "auto")
+     << "\n";
   os << indent << "LightingPass:\n";
   this->Internals->Lighting->PrintSelf(os, indent.GetNextIndent());
 }
@@ -429,6 +431,13 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
 
   // What this frame computes.
   const bool fast = this->Mode == FAST;
+  bool writeDepth = this->DepthOutput == DEPTH_ALWAYS;
+  for (int i = 0; i < s->GetPropArrayCount() && !writeDepth; ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    writeDepth = prop->GetVisibility() &&
+      (prop->HasTranslucentPolygonalGeometry() || prop->IsA("vtkVolume"));
+  }
   const bool layerEdges = this->Layer != PIXELATED;
   const bool canny = layerEdges && this->EdgeDetector == CANNY;
   const bool sobel = layerEdges && this->EdgeDetector == SOBEL;
@@ -562,6 +571,7 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   define(edges, "PIXEL_EDGES");
   define(surfaceAnchor, "PIXEL_SURFACE_ANCHOR");
   define(this->StylizeBackground, "PIXEL_STYLIZE_BACKGROUND");
+  define(writeDepth, "PIXEL_WRITE_DEPTH");
   defines += "#define PIXEL_PALETTE " + std::to_string(shaderPalette) + "\n";
   defines += "#define PIXEL_LAYER " + std::to_string(this->Layer) + "\n";
   if (defines != in.Defines || in.Declarations[0].empty())
@@ -719,6 +729,7 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
   vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
   vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
@@ -807,9 +818,19 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   // Upsample into the output framebuffer, with the depth.
   ostate->vtkglViewport(ox, oy, w, h);
   ostate->vtkglScissor(ox, oy, w, h);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
   ostate->vtkglDepthMask(GL_TRUE);
+  if (writeDepth)
+  {
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+  }
+  else
+  {
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
+    ostate->vtkglClearDepth(1.0);
+    ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+  }
   depth = fullDepth;
   vtkShaderProgram* program = in.UpsampleQuad.Prepare(renWin, in.Declarations[6], "  pixelMain();\n");
   if (program)

@@ -13,9 +13,11 @@
  *    per art pixel:
  *    - FAST: the geometry is rendered directly at the art-pixel resolution (one sample per art
  *      pixel at its centre; aliased, and the cheapest: fragment work falls by PixelSize^2).
- *    - FAITHFUL: the geometry is rendered at full resolution and each block is averaged (a box
- *      filter: silhouettes and thin features keep their share of the art pixel). Blocks larger
- *      than 16 x 16 pixels are averaged over 16 x 16 evenly spaced samples.
+ *    - FAITHFUL: the geometry is rendered at full resolution and each block is reduced: an art
+ *      pixel belongs to the surface when at least half of its block does, and takes the mean of
+ *      the block's surface samples (the background's otherwise): every surface pixel counts,
+ *      thin features and shading are not aliased, silhouettes stay hard (no halo of background
+ *      colour). Blocks larger than 16 x 16 pixels are reduced from 16 x 16 evenly spaced samples.
  * 2. Edges on the art-pixel image (eq. 5-7): grayscale (mean of R, G, B), the paper's 3x3
  *    Gaussian (sigma = 1), Sobel, then either a plain threshold (SOBEL, the paper's first
  *    version, ragged) or Canny (CANNY: non-maximum suppression along the gradient, double
@@ -165,7 +167,8 @@ public:
   /**
    * Hysteresis steps: a weak art pixel becomes an edge when a chain of weak art pixels at most
    * this long connects it to a strong one (one full-screen pass per step, at the art-pixel
-   * resolution). 0: strong edges only. Range [0, 256], default 16.
+   * resolution, about 1.2 ms each at 1920x1080 with 4 px art pixels on llvmpipe). 0: strong
+   * edges only. Range [0, 256], default 4.
    */
   vtkSetClampMacro(HysteresisIterations, int, 0, 256);
   vtkGetMacro(HysteresisIterations, int);
@@ -309,6 +312,24 @@ public:
   vtkBooleanMacro(StylizeBackground, bool);
   ///@}
 
+  /** When the pass writes the scene's depth into the output's depth buffer. */
+  enum DepthOutputs
+  {
+    DEPTH_AUTO = 0,  ///< when translucent geometry or volumes follow; otherwise cleared to far
+    DEPTH_ALWAYS = 1 ///< always (for readers of the depth buffer: vtkRenderer::GetZ, z-buffer capture)
+  };
+
+  ///@{
+  /**
+   * DEPTH_AUTO (default) writes the depth only when the scene has translucent geometry or volumes
+   * (drawn afterwards and depth-tested against the pixel art); otherwise the depth buffer is
+   * cleared, which saves a full-resolution depth write (about 4 ms per frame at 1920x1080 on
+   * llvmpipe). DEPTH_ALWAYS writes it every frame.
+   */
+  vtkSetClampMacro(DepthOutput, int, DEPTH_AUTO, DEPTH_ALWAYS);
+  vtkGetMacro(DepthOutput, int);
+  ///@}
+
   ///@{
   /** The layer written to the output: PIXEL_ART (default), PIXELATED or EDGES. */
   vtkSetClampMacro(Layer, int, PIXEL_ART, EDGES);
@@ -340,7 +361,7 @@ protected:
   int EdgeDetector = CANNY;
   double LowThreshold = 0.25;
   double HighThreshold = 0.5;
-  int HysteresisIterations = 16;
+  int HysteresisIterations = 4;
   bool DepthEdges = true;
   double DepthThreshold = 4.0;
   bool NormalEdges = false;
@@ -357,6 +378,7 @@ protected:
   bool SnapToGrid = true;
   bool StylizeBackground = false;
   int Layer = PIXEL_ART;
+  int DepthOutput = DEPTH_AUTO;
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

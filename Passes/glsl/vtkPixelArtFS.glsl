@@ -67,7 +67,8 @@ void pixelMain()
   ivec2 hi = min(pixelGridOrigin + (k + 1) * pixelBlock - pixelExtentOrigin, pixelExtentSize);
   ivec2 extent = max(hi - lo, ivec2(1));
   ivec2 n = min(extent, ivec2(16));
-  vec3 colour = vec3(0.0);
+  vec3 surfaceColour = vec3(0.0);
+  vec3 backgroundColour = vec3(0.0);
   float surface = 0.0;
   float depth = 0.0;
   vec3 normal = vec3(0.0);
@@ -77,11 +78,12 @@ void pixelMain()
     for (int i = 0; i < n.x; ++i)
     {
       ivec2 p = lo + (ivec2(i, j) * extent) / n;
-      colour += texelFetch(stylizeColorTexture, p, 0).rgb;
+      vec3 c = texelFetch(stylizeColorTexture, p, 0).rgb;
       float z = texelFetch(stylizeLinearDepthTexture, p, 0).r;
       if (z > 0.0)
       {
         surface += 1.0;
+        surfaceColour += c;
         depth += z;
 #ifdef PIXEL_NORMALS
         normal += texelFetch(stylizeNormalTexture, p, 0).xyz;
@@ -90,11 +92,22 @@ void pixelMain()
         position += texelFetch(stylizePositionTexture, p, 0).xyz;
 #endif
       }
+      else
+      {
+        backgroundColour += c;
+      }
     }
   }
+  // An art pixel belongs to the surface when at least half of its block does; it then takes the
+  // mean of its surface samples (hard silhouettes, no halo of background colour), otherwise
+  // the mean of its background samples.
+  // A tie (exactly half) goes to the sample nearest the block's centre.
   float count = float(n.x * n.y);
-  bool covered = surface >= 0.5 * count && surface > 0.0;
-  gl_FragData[0] = vec4(colour / count, surface / count);
+  ivec2 centre = clamp(lo + extent / 2, ivec2(0), pixelExtentSize - 1);
+  bool centreOnSurface = texelFetch(stylizeLinearDepthTexture, centre, 0).r > 0.0;
+  bool covered = surface > 0.5 * count || (surface == 0.5 * count && centreOnSurface);
+  vec3 colour = covered ? surfaceColour / surface : backgroundColour / max(count - surface, 1.0);
+  gl_FragData[0] = vec4(colour, surface / count);
   gl_FragData[1] = vec4(covered ? depth / surface : 0.0, 0.0, 0.0, 1.0);
 #ifdef PIXEL_NORMALS
   float nl = length(normal);
@@ -341,16 +354,18 @@ void pixelMain()
   ivec2 v = clamp(ivec2(texCoord * vec2(pixelViewportSize)), ivec2(0), pixelViewportSize - 1);
   ivec2 k = clamp((v - pixelGridOrigin) / pixelBlock, ivec2(0), pixelArtSize - 1);
   vec4 art = texelFetch(pixelArtTexture, k, 0);
+  if (pixelDiscardBackground == 1 && art.a < 0.5)
+  {
+    discard;
+  }
+  gl_FragData[0] = vec4(art.rgb, 1.0);
+#ifdef PIXEL_WRITE_DEPTH
 #ifdef PIXEL_FAST
   float depth = texelFetch(stylizeDepthTexture, k, 0).r;
 #else
   float depth = texelFetch(stylizeDepthTexture, v - pixelExtentOrigin, 0).r;
 #endif
-  if (pixelDiscardBackground == 1 && art.a < 0.5 && depth >= 1.0)
-  {
-    discard;
-  }
-  gl_FragData[0] = vec4(art.rgb, 1.0);
   gl_FragDepth = stylizeWindowDepth(depth);
+#endif
 }
 #endif

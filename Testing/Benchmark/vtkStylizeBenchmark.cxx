@@ -9,6 +9,7 @@
 
 #include "vtkCamera.h"
 #include "vtkComicPass.h"
+#include "vtkPixelArtPass.h"
 #include "vtkEDLShading.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -72,7 +73,8 @@ const std::vector<std::string>& AllConfigs()
 {
   static const std::vector<std::string> configs = { "plain", "sobel", "ssao", "edl",
     "light-standard", "light-comic", "light-pixelart", "gbuf-standard", "gbuf-comic",
-    "gbuf-pixelart", "gbuf-standard-color", "gbuf-comic-lin", "comic", "comic-geometric" };
+    "gbuf-pixelart", "gbuf-standard-color", "gbuf-comic-lin", "comic", "comic-geometric", "pixel-fast-2",
+    "pixel-fast-4", "pixel-fast-8", "pixel-faithful-2", "pixel-faithful-4", "pixel-faithful-8" };
   return configs;
 }
 
@@ -457,6 +459,20 @@ ConfigPasses MakeConfig(const std::string& name, double diagonal)
       ? "vtkComicPass, defaults (three edge phases, dots, hatching, screen anchor)"
       : "vtkComicPass, depth and normal edges only (single screen pass), dots, hatching";
   }
+  else if (name.rfind("pixel-", 0) == 0)
+  {
+    // pixel-MODE-SIZE: vtkPixelArtPass with its defaults (Canny and depth edges, 4 levels per
+    // channel, grid-anchored dither) in the given mode at the given art pixel size.
+    const auto dash = name.rfind('-');
+    const std::string mode = name.substr(6, dash - 6);
+    const int size = std::atoi(name.c_str() + dash + 1);
+    auto pixel = vtkSmartPointer<vtkPixelArtPass>::New();
+    pixel->SetMode(mode == "fast" ? vtkPixelArtPass::FAST : vtkPixelArtPass::FAITHFUL);
+    pixel->SetPixelSize(std::max(1, size));
+    c.Root = pixel;
+    c.Description = "vtkPixelArtPass, " + mode + " pixelation, art pixel " +
+      std::to_string(std::max(1, size)) + " px, defaults (Canny + depth edges, 4 levels, dither)";
+  }
   else if (name.rfind("gbuf-", 0) == 0)
   {
     const bool colorOnly = name == "gbuf-standard-color";
@@ -676,6 +692,42 @@ public:
              << Fixed(ssao, 1) << " | " << Fixed(comic - plain, 1) << " | "
              << Fixed(comic - base, 1) << " | " << Fixed(geo, 1) << " | "
              << Fixed((comic - base) / sobel, 2) << " |\n";
+        }
+      }
+    }
+
+    // Pixel art: both pixelation modes at sizes 2, 4, 8 against plain VTK.
+    if (has("plain") && (has("pixel-fast-4") || has("pixel-faithful-4")))
+    {
+      os << "\n### Pixel art: whole frame against plain VTK (ratio, same run)\n\n";
+      os << "Target: pixel-fast-4 / plain <= 0.5 at 10k triangles and <= 1 at 2M.\n\n";
+      os << "| scene | lights |";
+      std::vector<std::string> pixelCfgs;
+      for (const auto& c : cfgs)
+      {
+        if (c.rfind("pixel-", 0) == 0)
+        {
+          pixelCfgs.push_back(c);
+          os << " " << c << " / plain |";
+        }
+      }
+      os << "\n| --- | ---: |";
+      for (size_t i = 0; i < pixelCfgs.size(); ++i)
+      {
+        os << " ---: |";
+      }
+      os << "\n";
+      for (const auto& sc : this->Opt.Scenes)
+      {
+        for (int n : this->Opt.Lights)
+        {
+          const double plain = this->MedianOf(sc.Name, n, "plain");
+          os << "| sphere " << sc.Name << " | " << n << " |";
+          for (const auto& c : pixelCfgs)
+          {
+            os << " " << Fixed(this->MedianOf(sc.Name, n, c) / plain, 2) << " |";
+          }
+          os << "\n";
         }
       }
     }

@@ -965,13 +965,12 @@ int TestPixelArtFidelity(int, char*[])
                   "(%.1f ms), faithful %.4f (%.1f ms) at %dx%d\n",
         block, layer == P::PIXELATED ? "pixelated" : "final", ssim[P::FAST], ms[P::FAST],
         ssim[P::FAITHFUL], ms[P::FAITHFUL], w, h);
-      if (layer == P::PIXELATED)
-      {
-        STYLIZE_CHECK(ssim[P::FAITHFUL] > ssim[P::FAST],
-          "faithful is not closer to the supersampled reference than fast at %d px", block);
-        STYLIZE_CHECK(ssim[P::FAITHFUL] > 0.9, "faithful SSIM %.3f at %d px", ssim[P::FAITHFUL],
-          block);
-      }
+      // Larger art pixels make the fast mode's single sample a worse estimate of the block;
+      // at 2 px its centre sample decides silhouettes about as well as a 2x2 majority.
+      STYLIZE_CHECK(block < 8 || ssim[P::FAITHFUL] > ssim[P::FAST],
+        "faithful is not closer to the supersampled reference than fast at %d px", block);
+      STYLIZE_CHECK(ssim[P::FAITHFUL] > 0.95, "faithful SSIM %.3f at %d px", ssim[P::FAITHFUL],
+        block);
     }
   }
   return Failures == 0 ? 0 : 1;

@@ -124,4 +124,64 @@ print("comic: %d ink pixels in the edge layer, %d in the full image" % (edges, f
 check(200 < edges < 3000, "edge layer: %d ink pixels" % edges)
 check(full > edges, "the full comic image has no more ink than its edges")
 
+
+def render_pixel(configure):
+    """The pixel-art pass on a white background; returns (image colours as a set, block, grid)."""
+    win = vtkRenderWindow()
+    win.SetSize(200, 150)
+    win.SetMultiSamples(0)
+    win.OffScreenRenderingOn()
+    ren = vtkRenderer()
+    ren.SetBackground(1, 1, 1)
+    win.AddRenderer(ren)
+    sphere = vtkSphereSource()
+    sphere.SetThetaResolution(64)
+    sphere.SetPhiResolution(32)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(sphere.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(0.9, 0.5, 0.2)
+    ren.AddActor(actor)
+    ren.GetActiveCamera().SetPosition(0, 0, 3)
+    ren.ResetCameraClippingRange()
+    pixel_pass = vtkstylize.vtkPixelArtPass()
+    configure(pixel_pass)
+    ren.SetPass(pixel_pass)
+    win.Render()
+    w2i = vtkWindowToImageFilter()
+    w2i.SetInput(win)
+    w2i.ReadFrontBufferOff()
+    w2i.Update()
+    scalars = w2i.GetOutput().GetPointData().GetScalars()
+    colours = set(scalars.GetTuple3(i) for i in range(scalars.GetNumberOfTuples()))
+    block, grid = [0, 0], [0, 0]
+    pixel_pass.GetLastGrid(block, grid)
+    win.Finalize()
+    return colours, block, grid
+
+
+# The pixel-art pass: settings clamp, the 1-bit palette gives black and white only, the grid
+# follows the pixel size, the dither matrix is the paper's.
+P = vtkstylize.vtkPixelArtPass
+p = P()
+p.SetPixelSize(0)
+check(p.GetPixelSize() == p.GetPixelSizeMinValue(), "PixelSize does not clamp")
+check(p.GetLightingPass().GetModel() == vtkstylize.vtkStylizeLightingPass.PIXEL_ART,
+      "the pixel-art pass does not use the PixelArt lighting model")
+matrix = P.GetDitherMatrix()
+check(sorted(matrix[i] for i in range(64)) == list(range(1, 65)),
+      "the dither matrix is not a permutation of 1..64")
+colours, block, grid = render_pixel(lambda q: (q.SetPaletteToOneBit(), q.SetPixelSize(5)))
+print("pixel art: 1-bit colours %s, block %s, grid %s" % (sorted(colours), block, grid))
+check(colours <= {(0.0, 0.0, 0.0), (255.0, 255.0, 255.0)}, "1-bit output has other colours")
+check(len(colours) == 2, "1-bit output is not black and white")
+check(block == [5, 5] and grid == [40, 30], "unexpected grid %s %s" % (block, grid))
+colours16, _, _ = render_pixel(lambda q: (q.SetPalette(P.PALETTE16), q.DepthEdgesOff(),
+                                          q.SetEdgeDetector(P.NO_EDGES)))
+palette = P.GetPalette16()
+allowed = {tuple(float(round(255 * palette[3 * i + c])) for c in range(3)) for i in range(16)}
+allowed.add((255.0, 255.0, 255.0))  # the background is not quantized
+check(colours16 <= allowed, "16-colour output leaves the palette: %s" % (colours16 - allowed))
+
 sys.exit(1 if failures else 0)
