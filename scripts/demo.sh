@@ -16,5 +16,8 @@ done
 "$STYLIZE" --style comic --size 1280x720 --output "$OUT/demo-comic.png"
 "$STYLIZE" --style none --lighting comic --lights 8 --size 1280x720 --output "$OUT/demo-none-comic-8lights.png"
 "$STYLIZE" --style comic --tinted --size 1280x720 --output "$OUT/demo-comic-tinted.png"
+"$STYLIZE" --style pixel --size 1280x720 --output "$OUT/demo-pixel.png"
+"$STYLIZE" --style pixel --mode fast --palette 16 --size 1280x720 --output "$OUT/demo-pixel-16.png"
+"$STYLIZE" --style pixel --palette 1bit --size 1280x720 --output "$OUT/demo-pixel-1bit.png"
 echo "== done: the images are in $OUT"
 ls -1 "$OUT"/*.png
