@@ -387,6 +387,13 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
       static_cast<long long>(std::llround(fullSize[a]))), offset[a] + size[a]);
     extentOrigin[a] = static_cast<int>(std::min(lo, offset[a]) - offset[a]);
     extent[a] = static_cast<int>(hi - offset[a] - extentOrigin[a]);
+    if (extent[a] > 3 * size[a])
+    {
+      // Art pixels far larger than a tile: reduce the tile's own pixels only (a seam is
+      // possible) rather than render a texture many times the tile's size.
+      extentOrigin[a] = 0;
+      extent[a] = size[a];
+    }
   }
   in.Block[0] = block[0];
   in.Block[1] = block[1];

@@ -3,6 +3,7 @@
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkFloatArray.h"
+#include "vtkHomogeneousTransform.h"
 #include "vtkLightsPass.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -19,11 +20,10 @@
 #include "vtkRenderState.h"
 #include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeShaderUtilities.h"
 #include "vtkTextureObject.h"
-#include "vtkHomogeneousTransform.h"
-#include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkTranslucentPass.h"
 #include "vtkVolumetricPass.h"
@@ -196,6 +196,14 @@ void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->Viewport[2] << " " << this->Viewport[3] << "\n";
   os << indent << "LightingPass: " << (this->LightingPass ? "set" : "(none: VTK lighting)")
      << "\n";
+  os << indent << "GeometryResolution: " << this->GeometryResolution[0] << " x "
+     << this->GeometryResolution[1] << (this->GeometryResolution[0] > 0 ? "" : " (viewport)")
+     << "\n";
+  os << indent << "GeometryScreenTransform: " << this->GeometryScreenTransform[0] << " "
+     << this->GeometryScreenTransform[1] << " " << this->GeometryScreenTransform[2] << " "
+     << this->GeometryScreenTransform[3] << "\n";
+  os << indent << "AfterScreenShift: " << this->AfterScreenShift[0] << " "
+     << this->AfterScreenShift[1] << "\n";
 }
 
 //------------------------------------------------------------------------------
