@@ -54,6 +54,7 @@
 
 #include "vtkOpenGLRenderPass.h"
 #include "vtkStylizePassesModule.h" // for export macro
+#include "vtkWrappingHints.h"        // for VTK_SIZEHINT
 
 #include <memory> // for std::unique_ptr
 
@@ -343,10 +344,10 @@ public:
   void GetLastGrid(int blockSize[2], int gridSize[2]) const;
 
   /** The 8x8 dither matrix of eq. 10 (values 1..64), row-major: entry (y mod 8) * 8 + x mod 8. */
-  static const int* GetDitherMatrix();
+  static const int* GetDitherMatrix() VTK_SIZEHINT(64);
 
   /** The 16-colour DawnBringer palette, RGB in [0, 1], 48 values. */
-  static const double* GetPalette16();
+  static const double* GetPalette16() VTK_SIZEHINT(48);
 
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
