@@ -21,6 +21,7 @@ int TestPixelArtStability(int argc, char* argv[]);
 int TestPixelArtFidelity(int argc, char* argv[]);
 int TestPixelArtMagnify(int argc, char* argv[]);
 int TestPixelArtExtremes(int argc, char* argv[]);
+int TestPrincipalCurvatures(int argc, char* argv[]);
 
 namespace
 {
@@ -49,6 +50,7 @@ const Entry Tests[] = {
   { "TestPixelArtFidelity", TestPixelArtFidelity },
   { "TestPixelArtMagnify", TestPixelArtMagnify },
   { "TestPixelArtExtremes", TestPixelArtExtremes },
+  { "TestPrincipalCurvatures", TestPrincipalCurvatures },
 };
 }
 

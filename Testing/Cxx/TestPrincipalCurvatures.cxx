@@ -1,0 +1,374 @@
+// vtkStylizePrincipalCurvatures against the analytic principal curvatures and directions of a
+// sphere, a cylinder, a torus and an ellipsoid (directions compared modulo pi), at two mesh
+// resolutions; plus degenerate input. Prints median, 95th percentile and maximum errors.
+#include "vtkCellArray.h"
+#include "vtkCleanPolyData.h"
+#include "vtkDoubleArray.h"
+#include "vtkMath.h"
+#include "vtkParametricEllipsoid.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricTorus.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkSphereSource.h"
+#include "vtkStylizeImageMetrics.h"
+#include "vtkStylizePrincipalCurvatures.h"
+#include "vtkStylizeTestUtilities.h"
+
+#include <algorithm>
+#include <array>
+#include <functional>
+#include <limits>
+
+using namespace stylizetest;
+
+namespace
+{
+/** Analytic values at a point: k1 >= k2 and their unit directions (zero when undefined). */
+struct Truth
+{
+  double K1, K2;
+  std::array<double, 3> D1, D2;
+  bool Use; // false: skip (boundary, umbilic)
+};
+
+struct Errors
+{
+  std::vector<double> Curvature; // |k - k_true| / scale
+  std::vector<double> Angle;     // degrees, modulo 180
+};
+
+double Percentile(std::vector<double> v, double q)
+{
+  if (v.empty())
+  {
+    return 0.0;
+  }
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<size_t>(q * (v.size() - 1) + 0.5))];
+}
+
+/** Angle in degrees between two lines (directions modulo pi). */
+double LineAngle(const double a[3], const std::array<double, 3>& b)
+{
+  const double c = std::abs(vtkMath::Dot(a, b.data())) /
+    std::max(1e-300, vtkMath::Norm(a) * vtkMath::Norm(b.data()));
+  return vtkMath::DegreesFromRadians(std::acos(std::min(1.0, c)));
+}
+
+Errors Compare(vtkPolyData* mesh, const std::function<Truth(const double*)>& truth, double scale)
+{
+  vtkNew<vtkStylizePrincipalCurvatures> filter;
+  filter->SetInputData(mesh);
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  vtkDataArray* k1 = out->GetPointData()->GetArray("PrincipalCurvatureMax");
+  vtkDataArray* k2 = out->GetPointData()->GetArray("PrincipalCurvatureMin");
+  vtkDataArray* d1 = out->GetPointData()->GetArray("PrincipalDirectionMax");
+  vtkDataArray* d2 = out->GetPointData()->GetArray("PrincipalDirectionMin");
+  Errors e;
+  STYLIZE_CHECK(k1 && k2 && d1 && d2, "missing output arrays");
+  if (!k1 || !k2 || !d1 || !d2)
+  {
+    return e;
+  }
+  for (const char* name : { "PrincipalCurvatureMax", "PrincipalCurvatureMin",
+         "PrincipalDirectionMax", "PrincipalDirectionMin", "PrincipalDirectionBisector",
+         "MeanCurvature", "GaussianCurvature" })
+  {
+    vtkDataArray* a = out->GetPointData()->GetArray(name);
+    STYLIZE_CHECK(a && vtkStylizeImageMetrics::CountNonFinite(a) == 0, "%s: NaN or Inf", name);
+  }
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    const Truth t = truth(x);
+    if (!t.Use)
+    {
+      continue;
+    }
+    e.Curvature.push_back(std::abs(k1->GetComponent(i, 0) - t.K1) / scale);
+    e.Curvature.push_back(std::abs(k2->GetComponent(i, 0) - t.K2) / scale);
+    if (vtkMath::Norm(t.D1.data()) > 0)
+    {
+      double a[3], b[3];
+      d1->GetTuple(i, a);
+      d2->GetTuple(i, b);
+      e.Angle.push_back(LineAngle(a, t.D1));
+      e.Angle.push_back(LineAngle(b, t.D2));
+    }
+  }
+  return e;
+}
+
+void Report(const std::string& name, const Errors& e, double maxMedianK, double maxP95K,
+  double maxMedianAngle, double maxP95Angle)
+{
+  const double mk = Percentile(e.Curvature, 0.5), pk = Percentile(e.Curvature, 0.95);
+  const double xk = Percentile(e.Curvature, 1.0);
+  std::printf("%-34s curvature error / scale: median %.4f, 95%% %.4f, max %.4f", name.c_str(), mk,
+    pk, xk);
+  if (!e.Angle.empty())
+  {
+    std::printf("; direction error: median %.2f deg, 95%% %.2f deg, max %.2f deg",
+      Percentile(e.Angle, 0.5), Percentile(e.Angle, 0.95), Percentile(e.Angle, 1.0));
+  }
+  std::printf(" (%zu points)\n", e.Curvature.size() / 2);
+  STYLIZE_CHECK(e.Curvature.size() > 100, "%s: too few points compared", name.c_str());
+  STYLIZE_CHECK(mk <= maxMedianK && pk <= maxP95K, "%s: curvature error %.4f / %.4f", name.c_str(),
+    mk, pk);
+  if (!e.Angle.empty())
+  {
+    STYLIZE_CHECK(Percentile(e.Angle, 0.5) <= maxMedianAngle &&
+        Percentile(e.Angle, 0.95) <= maxP95Angle,
+      "%s: direction error %.2f / %.2f deg", name.c_str(), Percentile(e.Angle, 0.5),
+      Percentile(e.Angle, 0.95));
+  }
+}
+
+vtkSmartPointer<vtkPolyData> Clean(vtkAlgorithmOutput* port)
+{
+  vtkNew<vtkCleanPolyData> clean; // merge the parametric seams
+  clean->SetInputConnection(port);
+  clean->SetTolerance(1e-9);
+  clean->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(clean->GetOutput());
+  out->GetPointData()->SetNormals(nullptr);
+  return out;
+}
+
+/** An open cylinder of radius r along z, n around, m along, height h, triangulated. */
+vtkSmartPointer<vtkPolyData> Cylinder(double r, double h, int n, int m)
+{
+  vtkNew<vtkPoints> pts;
+  for (int j = 0; j <= m; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double a = 2.0 * vtkMath::Pi() * (i + 0.5 * (j % 2)) / n;
+      pts->InsertNextPoint(r * std::cos(a), r * std::sin(a), -0.5 * h + h * j / m);
+    }
+  }
+  vtkNew<vtkCellArray> tris;
+  for (int j = 0; j < m; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const vtkIdType a = j * n + i, b = j * n + (i + 1) % n;
+      const vtkIdType c = (j + 1) * n + i, d = (j + 1) * n + (i + 1) % n;
+      if (j % 2 == 0)
+      {
+        const vtkIdType t1[3] = { a, b, c }, t2[3] = { b, d, c };
+        tris->InsertNextCell(3, t1);
+        tris->InsertNextCell(3, t2);
+      }
+      else
+      {
+        const vtkIdType t1[3] = { a, d, c }, t2[3] = { a, b, d };
+        tris->InsertNextCell(3, t1);
+        tris->InsertNextCell(3, t2);
+      }
+    }
+  }
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->SetPoints(pts);
+  pd->SetPolys(tris);
+  return pd;
+}
+}
+
+int TestPrincipalCurvatures(int, char*[])
+{
+  double torusMedian[2] = { 0, 0 };
+  for (int level : { 1, 2 })
+  {
+    const std::string tag = level == 1 ? " (coarse)" : " (fine)";
+    // Sphere, radius 2: k1 = k2 = 0.5 (umbilic: no directions).
+    {
+      vtkNew<vtkSphereSource> s;
+      s->SetRadius(2.0);
+      s->SetThetaResolution(64 * level);
+      s->SetPhiResolution(32 * level);
+      auto mesh = Clean(s->GetOutputPort());
+      auto e = Compare(
+        mesh, [](const double*) { return Truth{ 0.5, 0.5, { 0, 0, 0 }, { 0, 0, 0 }, true }; },
+        0.5);
+      Report("sphere r=2" + tag, e, 0.005, 0.03, 0, 0);
+    }
+    // Cylinder, radius 1.5: k1 = 1/1.5 around (outward normals), k2 = 0 along the axis.
+    {
+      const double r = 1.5, h = 6.0;
+      auto mesh = Cylinder(r, h, 64 * level, 32 * level);
+      auto e = Compare(
+        mesh,
+        [&](const double* x) {
+          Truth t;
+          t.K1 = 1.0 / r;
+          t.K2 = 0.0;
+          const double len = std::hypot(x[0], x[1]);
+          t.D1 = { -x[1] / len, x[0] / len, 0.0 };
+          t.D2 = { 0.0, 0.0, 1.0 };
+          t.Use = std::abs(x[2]) < 0.5 * h - 1e-6; // not the boundary rows
+          return t;
+        },
+        1.0 / r);
+      Report("cylinder r=1.5" + tag, e, 0.005, 0.01, 0.5, 1.0);
+    }
+    // Torus, ring radius R = 2, tube radius a = 0.6 (vtkParametricTorus: ring in the xy plane).
+    {
+      const double R = 2.0, a = 0.6;
+      vtkNew<vtkParametricTorus> torus;
+      torus->SetRingRadius(R);
+      torus->SetCrossSectionRadius(a);
+      vtkNew<vtkParametricFunctionSource> src;
+      src->SetParametricFunction(torus);
+      src->SetUResolution(96 * level);
+      src->SetVResolution(48 * level);
+      src->GenerateNormalsOff();
+      auto mesh = Clean(src->GetOutputPort());
+      auto e = Compare(
+        mesh,
+        [&](const double* x) {
+          Truth t;
+          const double rho = std::hypot(x[0], x[1]);
+          const double cosPhi = (rho - R) / a; // phi: angle on the tube, 0 outside
+          // Around the tube (meridian): 1/a; along the ring (parallel): cos(phi) / rho.
+          const double kTube = 1.0 / a, kRing = cosPhi / rho;
+          const std::array<double, 3> ring = { -x[1] / rho, x[0] / rho, 0.0 };
+          std::array<double, 3> tube;
+          {
+            const double n[3] = { (rho - R) / a * x[0] / rho, (rho - R) / a * x[1] / rho,
+              x[2] / a };
+            double c[3];
+            vtkMath::Cross(n, ring.data(), c);
+            tube = { c[0], c[1], c[2] };
+          }
+          t.K1 = std::max(kTube, kRing);
+          t.K2 = std::min(kTube, kRing);
+          t.D1 = kTube >= kRing ? tube : ring;
+          t.D2 = kTube >= kRing ? ring : tube;
+          t.Use = true;
+          return t;
+        },
+        1.0 / a);
+      Report("torus R=2 a=0.6" + tag, e, 0.005, 0.01, 0.5, 1.0);
+      torusMedian[level - 1] = Percentile(e.Curvature, 0.5);
+    }
+    // Ellipsoid 3 x 2 x 1: principal curvatures from the implicit surface's shape operator
+    // (the Hessian projected on the tangent plane over |grad F|), directions its eigenvectors.
+    {
+      const double ax[3] = { 3.0, 2.0, 1.0 };
+      vtkNew<vtkParametricEllipsoid> ell;
+      ell->SetXRadius(ax[0]);
+      ell->SetYRadius(ax[1]);
+      ell->SetZRadius(ax[2]);
+      vtkNew<vtkParametricFunctionSource> src;
+      src->SetParametricFunction(ell);
+      src->SetUResolution(128 * level);
+      src->SetVResolution(64 * level);
+      src->GenerateNormalsOff();
+      auto mesh = Clean(src->GetOutputPort());
+      auto e = Compare(
+        mesh,
+        [&](const double* x) {
+          double g[3], n[3];
+          for (int i = 0; i < 3; ++i)
+          {
+            g[i] = 2.0 * x[i] / (ax[i] * ax[i]);
+            n[i] = g[i];
+          }
+          const double gl = vtkMath::Normalize(n);
+          // S = P H P / |g|, H = diag(2 / a_i^2), P = I - n n^T.
+          double s[3][3];
+          for (int i = 0; i < 3; ++i)
+          {
+            for (int j = 0; j < 3; ++j)
+            {
+              double v = 0.0;
+              for (int k = 0; k < 3; ++k)
+              {
+                const double pik = (i == k ? 1.0 : 0.0) - n[i] * n[k];
+                const double pkj = (k == j ? 1.0 : 0.0) - n[k] * n[j];
+                v += pik * 2.0 / (ax[k] * ax[k]) * pkj;
+              }
+              s[i][j] = v / gl;
+            }
+          }
+          double* rows[3] = { s[0], s[1], s[2] };
+          double w[3], vv[3][3];
+          double* vrows[3] = { vv[0], vv[1], vv[2] };
+          vtkMath::Jacobi(rows, w, vrows); // eigenvalues descending, vectors in columns
+          // Drop the normal's eigenvector (eigenvalue 0): keep the two tangent ones.
+          std::vector<std::pair<double, std::array<double, 3>>> tangent;
+          for (int c = 0; c < 3; ++c)
+          {
+            const std::array<double, 3> v = { vv[0][c], vv[1][c], vv[2][c] };
+            if (std::abs(vtkMath::Dot(v.data(), n)) < 0.5)
+            {
+              tangent.push_back({ w[c], v });
+            }
+          }
+          Truth t{ 0, 0, { 0, 0, 0 }, { 0, 0, 0 }, false };
+          if (tangent.size() == 2)
+          {
+            if (tangent[0].first < tangent[1].first)
+            {
+              std::swap(tangent[0], tangent[1]);
+            }
+            t.K1 = tangent[0].first;
+            t.K2 = tangent[1].first;
+            t.D1 = tangent[0].second;
+            t.D2 = tangent[1].second;
+            // Near the umbilics the directions are ill-defined: compare curvatures only.
+            t.Use = true;
+            if (t.K1 - t.K2 < 0.05 * t.K1)
+            {
+              t.D1 = t.D2 = { 0, 0, 0 };
+            }
+          }
+          return t;
+        },
+        1.0);
+      Report("ellipsoid 3x2x1" + tag, e, 0.005, 0.03, 0.5, 2.0);
+    }
+  }
+
+  // Second-order convergence: halving the edge length divides the error by about 4.
+  STYLIZE_CHECK(torusMedian[1] < 0.4 * torusMedian[0], "torus: error does not converge (%.5f -> %.5f)",
+    torusMedian[0], torusMedian[1]);
+
+  // Degenerate input: empty data, a single triangle, duplicate points, lines only.
+  {
+    vtkNew<vtkPolyData> empty;
+    vtkNew<vtkStylizePrincipalCurvatures> f;
+    f->SetInputData(empty);
+    f->Update();
+    STYLIZE_CHECK(f->GetOutput()->GetNumberOfPoints() == 0, "empty input");
+    vtkNew<vtkPoints> pts;
+    pts->InsertNextPoint(0, 0, 0);
+    pts->InsertNextPoint(1, 0, 0);
+    pts->InsertNextPoint(0, 1, 0);
+    pts->InsertNextPoint(0, 1, 0);
+    vtkNew<vtkCellArray> cells;
+    const vtkIdType t1[3] = { 0, 1, 2 }, t2[3] = { 1, 2, 3 }, t3[3] = { 0, 0, 1 };
+    cells->InsertNextCell(3, t1);
+    cells->InsertNextCell(3, t2);
+    cells->InsertNextCell(3, t3);
+    vtkNew<vtkPolyData> odd;
+    odd->SetPoints(pts);
+    odd->SetPolys(cells);
+    f->SetInputData(odd);
+    f->Update();
+    for (int a = 0; a < f->GetOutput()->GetPointData()->GetNumberOfArrays(); ++a)
+    {
+      STYLIZE_CHECK(
+        vtkStylizeImageMetrics::CountNonFinite(f->GetOutput()->GetPointData()->GetArray(a)) == 0,
+        "degenerate input: NaN or Inf");
+    }
+  }
+  return Failures == 0 ? 0 : 1;
+}
