@@ -181,39 +181,16 @@ void vtkComicPass::Render(const vtkRenderState* s)
   const int w = vp[2], h = vp[3];
   const int ox = vp[0], oy = vp[1];
 
-  // Scale of the full (possibly tiled, magnified) image. vtkWindow::GetSize() includes the tile
-  // scale; the tile viewport says which part of the full image this pass renders.
-  const int* fullWindow = renWin->GetSize();
-  const double* rvp = ren->GetViewport();
-  double tvp[4];
-  renWin->GetTileViewport(tvp);
-  int tileScale[2];
-  renWin->GetTileScale(tileScale);
-  const double fullHeight = (rvp[3] - rvp[1]) * fullWindow[1];
-  const double pointSize = this->ReferenceHeight > 0.0
-    ? std::max(fullHeight, 1.0) / this->ReferenceHeight
-    : static_cast<double>(std::max(tileScale[1], 1));
-  const double offset[2] = { std::round(tvp[0] * fullWindow[0] + ox - rvp[0] * fullWindow[0]),
-    std::round(tvp[1] * fullWindow[1] + oy - rvp[1] * fullWindow[1]) };
+  // Scale of the full (possibly tiled, magnified) image and this tile's offset in it.
+  using Utilities = vtkStylizeShaderUtilities;
+  const Utilities::FullImage full = Utilities::GetFullImage(ren, ox, oy);
+  const double pointSize = this->ReferenceHeight > 0.0 ? full.Size[1] / this->ReferenceHeight
+                                                       : static_cast<double>(full.TileScale[1]);
 
-  // World size of one pixel: k * depth in perspective, k in parallel projection. The tile's own
-  // camera angle and height give the full image's pixel (vtkWindowToImageFilter narrows both).
+  // World size of one pixel: k * depth in perspective, k in parallel projection.
   vtkCamera* cam = ren->GetActiveCamera();
   const bool parallel = cam->GetParallelProjection() != 0;
-  double pixelWorld;
-  if (parallel)
-  {
-    pixelWorld = 2.0 * cam->GetParallelScale() / h;
-  }
-  else
-  {
-    const double t = std::tan(vtkMath::RadiansFromDegrees(cam->GetViewAngle()) * 0.5);
-    pixelWorld = 2.0 * t / (cam->GetUseHorizontalViewAngle() ? w : h);
-  }
-  if (!(pixelWorld > 0.0) || !std::isfinite(pixelWorld))
-  {
-    pixelWorld = 1.0;
-  }
+  const double pixelWorld = Utilities::PixelWorldSize(cam, w, h);
   // Object anchoring: pattern periods in world units, from the pixel size at the focal point
   // (constant while the camera orbits, proportional to the scene's scale).
   const double focalPixel = parallel ? pixelWorld : pixelWorld * cam->GetDistance();
@@ -266,80 +243,34 @@ void vtkComicPass::Render(const vtkRenderState* s)
     weightSum = 1.0;
   }
 
-  auto setCommon = [&](vtkShaderProgram* program) {
-    auto seti = [&](const char* name, int v) {
-      if (program->IsUniformUsed(name))
-      {
-        program->SetUniformi(name, v);
-      }
-    };
-    auto setf = [&](const char* name, double v) {
-      if (program->IsUniformUsed(name))
-      {
-        program->SetUniformf(name, static_cast<float>(v));
-      }
-    };
-    auto bind = [&](const char* name, vtkTextureObject* tex) {
-      if (tex && program->IsUniformUsed(name))
-      {
-        tex->Activate();
-        program->SetUniformi(name, tex->GetTextureUnit());
-      }
-    };
-    bind("stylizeColorTexture", color);
-    bind("stylizeDepthTexture", depth);
-    bind("stylizeLinearDepthTexture", linear);
-    bind("stylizeNormalTexture", normal);
-    bind("stylizePositionTexture", position);
-    const int size[2] = { w, h };
-    if (program->IsUniformUsed("comicSize"))
-    {
-      program->SetUniform2i("comicSize", size);
-    }
-    const float off[2] = { static_cast<float>(offset[0]), static_cast<float>(offset[1]) };
-    if (program->IsUniformUsed("comicPixelOffset"))
-    {
-      program->SetUniform2f("comicPixelOffset", off);
-    }
-    seti("comicParallel", parallel ? 1 : 0);
-    setf("comicPixelWorld", pixelWorld);
-    seti("comicStride", stride);
-    const float weights[3] = { static_cast<float>(this->EdgeWeights[0] / weightSum),
-      static_cast<float>(this->EdgeWeights[1] / weightSum),
-      static_cast<float>(this->EdgeWeights[2] / weightSum) };
-    if (program->IsUniformUsed("comicEdgeWeights"))
-    {
-      program->SetUniform3f("comicEdgeWeights", weights);
-    }
-    setf("comicDepthThreshold", this->DepthThreshold);
-    setf("comicNormalThreshold", this->NormalThreshold);
-    setf("comicColorThreshold", this->ColorThreshold);
-    setf("comicDotSpacing", this->DotSpacing * patternUnit);
-    setf("comicHatchSpacing", this->HatchSpacing * patternUnit);
-    setf("comicHatchWidth", std::min(1.0, this->HatchWidth / this->HatchSpacing));
+  auto setCommon = [&](Utilities::Uniforms& u) {
+    u.Texture("stylizeColorTexture", color)
+      .Texture("stylizeDepthTexture", depth)
+      .Texture("stylizeLinearDepthTexture", linear)
+      .Texture("stylizeNormalTexture", normal)
+      .Texture("stylizePositionTexture", position)
+      .Int2("comicSize", w, h)
+      .Float2("comicPixelOffset", full.Offset[0], full.Offset[1])
+      .Int("comicParallel", parallel ? 1 : 0)
+      .Float("comicPixelWorld", pixelWorld)
+      .Int("comicStride", stride)
+      .Float3("comicEdgeWeights", this->EdgeWeights[0] / weightSum,
+        this->EdgeWeights[1] / weightSum, this->EdgeWeights[2] / weightSum)
+      .Float("comicDepthThreshold", this->DepthThreshold)
+      .Float("comicNormalThreshold", this->NormalThreshold)
+      .Float("comicColorThreshold", this->ColorThreshold)
+      .Float("comicDotSpacing", this->DotSpacing * patternUnit)
+      .Float("comicHatchSpacing", this->HatchSpacing * patternUnit)
+      .Float("comicHatchWidth", std::min(1.0, this->HatchWidth / this->HatchSpacing));
     const double a = vtkMath::RadiansFromDegrees(this->DotAngle);
-    const float dir[2] = { static_cast<float>(std::cos(a)), static_cast<float>(std::sin(a)) };
-    if (program->IsUniformUsed("comicDotDirection"))
-    {
-      program->SetUniform2f("comicDotDirection", dir);
-    }
-    setf("comicHatchAngle", vtkMath::RadiansFromDegrees(this->HatchAngle));
-    seti("comicHatchDirections", this->HatchDirections);
-    setf("comicBright", this->BrightThreshold);
-    setf("comicDark", this->DarkThreshold);
-    setf("comicCross", this->CrossThreshold);
-    seti("comicDiscardBackground", ren->Transparent() ? 1 : 0);
-    gbuffer->SetDepthMappingUniforms(program);
-  };
-  auto unbindAll = [&]() {
-    for (vtkTextureObject* tex : { color, depth, linear, normal, position,
-           this->Internals->EdgeTexture })
-    {
-      if (tex && tex->GetTextureUnit() >= 0)
-      {
-        tex->Deactivate();
-      }
-    }
+    u.Float2("comicDotDirection", std::cos(a), std::sin(a))
+      .Float("comicHatchAngle", vtkMath::RadiansFromDegrees(this->HatchAngle))
+      .Int("comicHatchDirections", this->HatchDirections)
+      .Float("comicBright", this->BrightThreshold)
+      .Float("comicDark", this->DarkThreshold)
+      .Float("comicCross", this->CrossThreshold)
+      .Int("comicDiscardBackground", ren->Transparent() ? 1 : 0);
+    gbuffer->SetDepthMappingUniforms(u.GetProgram());
   };
 
   if (defines != this->Internals->Defines || this->Internals->Declarations.empty())
@@ -376,14 +307,14 @@ void vtkComicPass::Render(const vtkRenderState* s)
       renWin, this->Internals->EdgeDeclarations, "  comicMain();\n");
     if (program)
     {
-      setCommon(program);
+      Utilities::Uniforms u(program);
+      setCommon(u);
       this->Internals->EdgeQuad.Render();
     }
     else
     {
       vtkErrorMacro("Could not build the comic edge shader.");
     }
-    unbindAll();
     fbo->UnBind();
     fbo->RestorePreviousBindingsAndBuffers();
   }
@@ -402,22 +333,15 @@ void vtkComicPass::Render(const vtkRenderState* s)
     this->Internals->FinalQuad.Prepare(renWin, declarations, "  comicMain();\n");
   if (program)
   {
-    setCommon(program);
-    auto bind = [&](const char* name, vtkTextureObject* tex) {
-      if (tex && program->IsUniformUsed(name))
-      {
-        tex->Activate();
-        program->SetUniformi(name, tex->GetTextureUnit());
-      }
-    };
-    bind("comicEdgeTexture", this->Internals->EdgeTexture);
+    Utilities::Uniforms u(program);
+    setCommon(u);
+    u.Texture("comicEdgeTexture", this->Internals->EdgeTexture);
     this->Internals->FinalQuad.Render();
   }
   else
   {
     vtkErrorMacro("Could not build the comic shader.");
   }
-  unbindAll();
   vtkOpenGLCheckErrorMacro("failed after vtkComicPass::Render");
 
   gbuffer->RenderAfterGeometry(s);

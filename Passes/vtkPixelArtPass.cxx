@@ -5,7 +5,6 @@
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkMapper.h"
-#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
@@ -79,6 +78,7 @@ public:
   vtkTextureObject* Art = nullptr;
   vtkTextureObject* PaletteTexture = nullptr;
   std::vector<float> PaletteData; // what PaletteTexture holds (RGBA)
+  double PaletteSpread = 0.0;     // its median colour spacing
 
   vtkStylizeShaderUtilities::ScreenQuad ReduceQuad, GaussQuad, GradientQuad, ClassifyQuad,
     HysteresisQuad, StylizeQuad, UpsampleQuad;
@@ -347,33 +347,26 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   }
 
   // The full (possibly tiled, magnified) image: its size and this tile's offset in it.
-  const int* fullWindow = renWin->GetSize();
-  const double* rvp = ren->GetViewport();
-  double tvp[4];
-  renWin->GetTileViewport(tvp);
-  int tileScale[2];
-  renWin->GetTileScale(tileScale);
-  const double fullWidth = std::max(1.0, (rvp[2] - rvp[0]) * fullWindow[0]);
-  const long long offset[2] = { std::llround(tvp[0] * fullWindow[0] + ox - rvp[0] * fullWindow[0]),
-    std::llround(tvp[1] * fullWindow[1] + oy - rvp[1] * fullWindow[1]) };
+  using U = vtkStylizeShaderUtilities;
+  const U::FullImage full = U::GetFullImage(ren, ox, oy);
+  const long long offset[2] = { std::llround(full.Offset[0]), std::llround(full.Offset[1]) };
 
   // Art pixel size in screen pixels.
   int block[2];
   if (this->ArtPixelsAcross > 0)
   {
     block[0] = block[1] = static_cast<int>(
-      std::max(1.0, std::min(1.0e6, std::round(fullWidth / this->ArtPixelsAcross))));
+      std::max(1.0, std::min(1.0e6, std::round(full.Size[0] / this->ArtPixelsAcross))));
   }
   else
   {
-    block[0] = this->PixelSize * std::max(1, tileScale[0]);
-    block[1] = this->PixelSize * std::max(1, tileScale[1]);
+    block[0] = this->PixelSize * full.TileScale[0];
+    block[1] = this->PixelSize * full.TileScale[1];
   }
 
   // The grid: art columns i0 .. i1 of the full image cover this viewport. FAITHFUL renders the
   // full-resolution extent of these blocks (clipped to the full image), so that an art pixel
   // that straddles two tiles of a magnified screenshot averages the same pixels in both.
-  const double fullSize[2] = { fullWidth, std::max(1.0, (rvp[3] - rvp[1]) * fullWindow[1]) };
   int grid[2], origin[2], extentOrigin[2], extent[2];
   const int size[2] = { w, h };
   for (int a = 0; a < 2; ++a)
@@ -384,7 +377,7 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
     origin[a] = static_cast<int>(i0 * block[a] - offset[a]);
     const long long lo = std::max(i0 * block[a], 0LL);
     const long long hi = std::max(std::min((i1 + 1) * block[a],
-      static_cast<long long>(std::llround(fullSize[a]))), offset[a] + size[a]);
+      static_cast<long long>(std::llround(full.Size[a]))), offset[a] + size[a]);
     extentOrigin[a] = static_cast<int>(std::min(lo, offset[a]) - offset[a]);
     extent[a] = static_cast<int>(hi - offset[a] - extentOrigin[a]);
     if (extent[a] > 3 * size[a])
@@ -546,19 +539,17 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   }
   const int shaderPalette = palette == LEVELS ? 0 : (palette == GRAYS ? 1 : 2);
   const bool quantize = this->Layer == PIXEL_ART;
-  if (quantize && shaderPalette == 2)
+  if (quantize && shaderPalette == 2 &&
+    (colours != in.PaletteData || !in.PaletteTexture || in.PaletteTexture->GetContext() != renWin))
   {
-    if (colours != in.PaletteData || !in.PaletteTexture || in.PaletteTexture->GetContext() != renWin)
-    {
-      vtkStylizeShaderUtilities::FreeTexture(in.PaletteTexture, renWin);
-      in.PaletteTexture = vtkTextureObject::New();
-      in.PaletteTexture->SetContext(renWin);
-      in.PaletteTexture->Create2DFromRaw(static_cast<unsigned int>(colours.size() / 4), 1, 4,
-        VTK_FLOAT, colours.data());
-      in.PaletteData = colours;
-    }
+    vtkStylizeShaderUtilities::FreeTexture(in.PaletteTexture, renWin);
+    in.PaletteTexture = vtkTextureObject::New();
+    in.PaletteTexture->SetContext(renWin);
+    in.PaletteTexture->Create2DFromRaw(
+      static_cast<unsigned int>(colours.size() / 4), 1, 4, VTK_FLOAT, colours.data());
+    in.PaletteData = colours;
+    in.PaletteSpread = MedianSpacing(colours);
   }
-  const double spread = MedianSpacing(colours);
 
   // Shader sources: one program per stage, rebuilt when the defines change.
   std::string defines;
@@ -594,20 +585,7 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   }
 
   // World size of an art pixel (depth edges) and of a dither cell on the surface.
-  double pixelWorld;
-  if (parallel)
-  {
-    pixelWorld = 2.0 * cam->GetParallelScale() / h;
-  }
-  else
-  {
-    const double t = std::tan(vtkMath::RadiansFromDegrees(cam->GetViewAngle()) * 0.5);
-    pixelWorld = 2.0 * t / (cam->GetUseHorizontalViewAngle() ? w : h);
-  }
-  if (!(pixelWorld > 0.0) || !std::isfinite(pixelWorld))
-  {
-    pixelWorld = 1.0;
-  }
+  const double pixelWorld = U::PixelWorldSize(cam, w, h);
   const double artWorld = pixelWorld * block[1];
   double anchorUnit = (parallel ? artWorld : artWorld * cam->GetDistance()) * this->DitherSize;
   if (!(anchorUnit > 0.0) || !std::isfinite(anchorUnit))
@@ -622,9 +600,8 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   vtkTextureObject* position = gbuffer->GetPositionTexture();
   vtkTextureObject* depth = gbuffer->GetDepthTexture();
 
-  using U = vtkStylizeShaderUtilities;
   const int nx = grid[0], ny = grid[1];
-  const bool full = gbuffer->GetPrecision() == vtkStylizeGBufferPass::FULL;
+  const bool fullPrecision = gbuffer->GetPrecision() == vtkStylizeGBufferPass::FULL;
   if (!in.Framebuffer)
   {
     in.Framebuffer = vtkOpenGLFramebufferObject::New();
@@ -632,80 +609,38 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   }
   vtkOpenGLFramebufferObject* fbo = in.Framebuffer;
 
-  std::vector<vtkTextureObject*> bound;
-  auto setUniforms = [&](vtkShaderProgram* program, vtkTextureObject* input) {
-    auto seti = [&](const char* name, int v) {
-      if (program->IsUniformUsed(name))
-      {
-        program->SetUniformi(name, v);
-      }
-    };
-    auto setf = [&](const char* name, double v) {
-      if (program->IsUniformUsed(name))
-      {
-        program->SetUniformf(name, static_cast<float>(v));
-      }
-    };
-    auto set2i = [&](const char* name, int x, int y) {
-      if (program->IsUniformUsed(name))
-      {
-        const int v[2] = { x, y };
-        program->SetUniform2i(name, v);
-      }
-    };
-    auto bind = [&](const char* name, vtkTextureObject* tex) {
-      if (tex && program->IsUniformUsed(name))
-      {
-        tex->Activate();
-        bound.push_back(tex);
-        program->SetUniformi(name, tex->GetTextureUnit());
-      }
-    };
-    bind("stylizeColorTexture", colour);
-    bind("stylizeLinearDepthTexture", linear);
-    bind("stylizeNormalTexture", normal);
-    bind("stylizePositionTexture", position);
-    bind("stylizeDepthTexture", depth);
-    bind("pixelInputTexture", input);
-    bind("pixelArtTexture", in.Art);
-    bind("pixelPaletteTexture", in.PaletteTexture);
-    set2i("pixelArtSize", nx, ny);
-    set2i("pixelViewportSize", w, h);
-    set2i("pixelBlock", block[0], block[1]);
-    set2i("pixelGridOrigin", origin[0], origin[1]);
-    set2i("pixelExtentOrigin", extentOrigin[0], extentOrigin[1]);
-    set2i("pixelExtentSize", extent[0], extent[1]);
-    set2i("pixelDitherOrigin", ditherOrigin[0], ditherOrigin[1]);
-    seti("pixelDitherSize", this->DitherSize);
-    setf("pixelDitherStrength", this->DitherStrength);
-    seti("pixelLevels", this->Levels);
-    seti("pixelPaletteSize", static_cast<int>(in.PaletteData.size() / 4));
-    setf("pixelPaletteSpread", spread);
-    setf("pixelLow", this->LowThreshold);
-    setf("pixelHigh", this->HighThreshold);
-    setf("pixelDepthThreshold", this->DepthThreshold);
-    setf("pixelNormalThreshold", this->NormalThreshold);
-    setf("pixelArtWorld", artWorld);
-    seti("pixelParallel", parallel ? 1 : 0);
-    setf("pixelAnchorUnit", anchorUnit);
-    if (program->IsUniformUsed("pixelOutlineColor"))
-    {
-      const float c[3] = { static_cast<float>(this->OutlineColor[0]),
-        static_cast<float>(this->OutlineColor[1]), static_cast<float>(this->OutlineColor[2]) };
-      program->SetUniform3f("pixelOutlineColor", c);
-    }
-    seti("pixelDiscardBackground", ren->Transparent() ? 1 : 0);
-    gbuffer->SetDepthMappingUniforms(program);
-  };
-  auto unbind = [&]() {
-    for (vtkTextureObject* tex : bound)
-    {
-      if (tex->GetTextureUnit() >= 0)
-      {
-        tex->Deactivate();
-      }
-    }
-    bound.clear();
+  auto setUniforms = [&](U::Uniforms& u, vtkTextureObject* input) {
+    u.Texture("stylizeColorTexture", colour)
+      .Texture("stylizeLinearDepthTexture", linear)
+      .Texture("stylizeNormalTexture", normal)
+      .Texture("stylizePositionTexture", position)
+      .Texture("stylizeDepthTexture", depth)
+      .Texture("pixelInputTexture", input)
+      .Texture("pixelArtTexture", in.Art)
+      .Texture("pixelPaletteTexture", in.PaletteTexture)
+      .Int2("pixelArtSize", nx, ny)
+      .Int2("pixelViewportSize", w, h)
+      .Int2("pixelBlock", block[0], block[1])
+      .Int2("pixelGridOrigin", origin[0], origin[1])
+      .Int2("pixelExtentOrigin", extentOrigin[0], extentOrigin[1])
+      .Int2("pixelExtentSize", extent[0], extent[1])
+      .Int2("pixelDitherOrigin", ditherOrigin[0], ditherOrigin[1])
+      .Int("pixelDitherSize", this->DitherSize)
+      .Float("pixelDitherStrength", this->DitherStrength)
+      .Int("pixelLevels", this->Levels)
+      .Int("pixelPaletteSize", static_cast<int>(in.PaletteData.size() / 4))
+      .Float("pixelPaletteSpread", in.PaletteSpread)
+      .Float("pixelLow", this->LowThreshold)
+      .Float("pixelHigh", this->HighThreshold)
+      .Float("pixelDepthThreshold", this->DepthThreshold)
+      .Float("pixelNormalThreshold", this->NormalThreshold)
+      .Float("pixelArtWorld", artWorld)
+      .Int("pixelParallel", parallel ? 1 : 0)
+      .Float("pixelAnchorUnit", anchorUnit)
+      .Float3("pixelOutlineColor", this->OutlineColor[0], this->OutlineColor[1],
+        this->OutlineColor[2])
+      .Int("pixelDiscardBackground", ren->Transparent() ? 1 : 0);
+    gbuffer->SetDepthMappingUniforms(u.GetProgram());
   };
   bool ok = true;
   // Runs one art-resolution stage into `targets`.
@@ -725,9 +660,9 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
       ok = false;
       return;
     }
-    setUniforms(program, input);
+    U::Uniforms u(program);
+    setUniforms(u, input);
     quad.Render();
-    unbind();
   };
 
   vtkOpenGLState* ostate = renWin->GetState();
@@ -749,7 +684,7 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   // Faithful mode: average each block of the full-resolution G-buffer.
   if (!fast)
   {
-    U::EnsureScreenTexture(in.ReducedColor, renWin, nx, ny, full ? GL_RGBA32F : GL_RGBA16F);
+    U::EnsureScreenTexture(in.ReducedColor, renWin, nx, ny, fullPrecision ? GL_RGBA32F : GL_RGBA16F);
     U::EnsureScreenTexture(in.ReducedLinear, renWin, nx, ny, GL_R32F);
     if (normalEdges)
     {
@@ -842,9 +777,9 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   vtkShaderProgram* program = in.UpsampleQuad.Prepare(renWin, in.Declarations[6], "  pixelMain();\n");
   if (program)
   {
-    setUniforms(program, nullptr);
+    U::Uniforms u(program);
+    setUniforms(u, nullptr);
     in.UpsampleQuad.Render();
-    unbind();
   }
   else
   {

@@ -1,12 +1,18 @@
 #include "vtkStylizeShaderUtilities.h"
 
+#include "vtkCamera.h"
+#include "vtkMath.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
 
 #include "vtkStylizeCommonFS.h"
 #include "vtkStylizeFaceNormal.h"
@@ -129,4 +135,125 @@ void vtkStylizeShaderUtilities::ScreenQuad::Release(vtkWindow* w)
   this->Declarations.clear();
   this->Body.clear();
   this->Window = nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeShaderUtilities::FullImage vtkStylizeShaderUtilities::GetFullImage(
+  vtkRenderer* ren, int ox, int oy)
+{
+  FullImage image;
+  vtkWindow* win = ren->GetVTKWindow();
+  const int* window = win->GetSize(); // includes the tile scale
+  const double* rvp = ren->GetViewport();
+  double tvp[4];
+  win->GetTileViewport(tvp);
+  win->GetTileScale(image.TileScale);
+  image.TileScale[0] = std::max(1, image.TileScale[0]);
+  image.TileScale[1] = std::max(1, image.TileScale[1]);
+  const int origin[2] = { ox, oy };
+  for (int a = 0; a < 2; ++a)
+  {
+    image.Size[a] = std::max(1.0, (rvp[a + 2] - rvp[a]) * window[a]);
+    image.Offset[a] = std::round(tvp[a] * window[a] + origin[a] - rvp[a] * window[a]);
+  }
+  return image;
+}
+
+//------------------------------------------------------------------------------
+double vtkStylizeShaderUtilities::PixelWorldSize(vtkCamera* cam, int w, int h)
+{
+  double size;
+  if (cam->GetParallelProjection())
+  {
+    size = 2.0 * cam->GetParallelScale() / h;
+  }
+  else
+  {
+    const double t = std::tan(vtkMath::RadiansFromDegrees(cam->GetViewAngle()) * 0.5);
+    size = 2.0 * t / (cam->GetUseHorizontalViewAngle() ? w : h);
+  }
+  return (size > 0.0 && std::isfinite(size)) ? size : 1.0;
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeShaderUtilities::Uniforms::~Uniforms()
+{
+  for (vtkTextureObject* tex : this->Bound)
+  {
+    if (tex->GetTextureUnit() >= 0)
+    {
+      tex->Deactivate();
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Int(
+  const char* name, int v)
+{
+  if (this->Program->IsUniformUsed(name))
+  {
+    this->Program->SetUniformi(name, v);
+  }
+  return *this;
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float(
+  const char* name, double v)
+{
+  if (this->Program->IsUniformUsed(name))
+  {
+    this->Program->SetUniformf(name, static_cast<float>(v));
+  }
+  return *this;
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Int2(
+  const char* name, int x, int y)
+{
+  if (this->Program->IsUniformUsed(name))
+  {
+    const int v[2] = { x, y };
+    this->Program->SetUniform2i(name, v);
+  }
+  return *this;
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float2(
+  const char* name, double x, double y)
+{
+  if (this->Program->IsUniformUsed(name))
+  {
+    const float v[2] = { static_cast<float>(x), static_cast<float>(y) };
+    this->Program->SetUniform2f(name, v);
+  }
+  return *this;
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float3(
+  const char* name, double x, double y, double z)
+{
+  if (this->Program->IsUniformUsed(name))
+  {
+    const float v[3] = { static_cast<float>(x), static_cast<float>(y), static_cast<float>(z) };
+    this->Program->SetUniform3f(name, v);
+  }
+  return *this;
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Texture(
+  const char* name, vtkTextureObject* tex)
+{
+  if (tex && this->Program->IsUniformUsed(name))
+  {
+    tex->Activate();
+    this->Bound.push_back(tex);
+    this->Program->SetUniformi(name, tex->GetTextureUnit());
+  }
+  return *this;
 }

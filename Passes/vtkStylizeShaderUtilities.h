@@ -8,6 +8,10 @@
  *   and the style passes (nearest filtering, clamped), recreated only when they must be.
  * - vtkStylizeShaderUtilities::ScreenQuad builds a full-screen quad program from one of the
  *   project's GLSL files, rebuilds it only when its source changes, and frees it.
+ * - vtkStylizeShaderUtilities::Uniforms sets a screen pass's uniforms and textures where the
+ *   program uses them, and releases the texture units it took.
+ * - GetFullImage() and PixelWorldSize(): where a viewport lies in the full (possibly tiled,
+ *   magnified) image, and the world size of its pixels, for resolution-free screen lengths.
  */
 
 #ifndef vtkStylizeShaderUtilities_h
@@ -17,9 +21,12 @@
 #include "vtkType.h"
 
 #include <string> // for std::string
+#include <vector> // for std::vector
 
+class vtkCamera;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
@@ -41,6 +48,53 @@ public:
 
   /** Releases (when w is given) and deletes a texture; sets the pointer to nullptr. */
   static void FreeTexture(vtkTextureObject*& tex, vtkWindow* w);
+
+  /** The full image a renderer's viewport belongs to (vtkWindowToImageFilter tiles included). */
+  struct FullImage
+  {
+    double Size[2];   ///< the renderer's size in the full image, pixels
+    double Offset[2]; ///< the viewport's lower-left corner in the full image, whole pixels
+    int TileScale[2]; ///< the magnification of a tiled screenshot (1 otherwise)
+  };
+
+  /** The full image of the viewport at (ox, oy) (from vtkRenderer::GetTiledSizeAndOrigin). */
+  static FullImage GetFullImage(vtkRenderer* ren, int ox, int oy);
+
+  /**
+   * World size of one pixel of a w x h viewport: to be multiplied by the depth in perspective,
+   * as is in parallel projection. The tile's own camera gives the full image's pixel
+   * (vtkWindowToImageFilter narrows its angle and height). 1 when undefined.
+   */
+  static double PixelWorldSize(vtkCamera* camera, int w, int h);
+
+  /**
+   * Sets uniforms and binds textures only where the program uses them; the texture units it
+   * takes are released when it goes out of scope (after the quad is drawn).
+   */
+  class Uniforms
+  {
+  public:
+    explicit Uniforms(vtkShaderProgram* program)
+      : Program(program)
+    {
+    }
+    ~Uniforms();
+    Uniforms(const Uniforms&) = delete;
+    Uniforms& operator=(const Uniforms&) = delete;
+
+    Uniforms& Int(const char* name, int v);
+    Uniforms& Float(const char* name, double v);
+    Uniforms& Int2(const char* name, int x, int y);
+    Uniforms& Float2(const char* name, double x, double y);
+    Uniforms& Float3(const char* name, double x, double y, double z);
+    /** Binds tex (when not null) to a free unit and sets the sampler. */
+    Uniforms& Texture(const char* name, vtkTextureObject* tex);
+    vtkShaderProgram* GetProgram() const { return this->Program; }
+
+  private:
+    vtkShaderProgram* Program;
+    std::vector<vtkTextureObject*> Bound;
+  };
 
   /** A full-screen quad whose fragment shader is `declarations` plus `body` in main(). */
   class ScreenQuad
