@@ -77,6 +77,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <fcntl.h>
@@ -445,6 +446,93 @@ struct OptionSpec
   std::function<void(Options&, const std::string&)> Apply;
 };
 
+/** A numeric option of a style pass; its range and default come from the pass's clamp macros. */
+template <class Pass, class T>
+struct PassNumber
+{
+  const char* Name;
+  const char* Argument;
+  const char* Help;
+  T (Pass::*Get)();
+  T (Pass::*Min)();
+  T (Pass::*Max)();
+  void (Pass::*Set)(T);
+};
+
+/** An on/off option of a style pass: sets Value. */
+template <class Pass>
+struct PassFlag
+{
+  const char* Name;
+  const char* Help;
+  void (Pass::*Set)(bool);
+  bool Value;
+};
+
+/** The list of settings for a style's pass in StyleSettings. */
+std::vector<std::function<void(vtkComicPass*)>>& SettingsOf(StyleSettings& s, vtkComicPass*)
+{
+  return s.Comic;
+}
+std::vector<std::function<void(vtkPixelArtPass*)>>& SettingsOf(StyleSettings& s, vtkPixelArtPass*)
+{
+  return s.Pixel;
+}
+
+/** Adds numeric options; `d` is a default-constructed pass (ranges and defaults for --help). */
+template <class Pass, class T, size_t N>
+void AddNumberOptions(std::vector<OptionSpec>& t, Pass* d, const PassNumber<Pass, T> (&numbers)[N])
+{
+  auto format = [](T v) {
+    if constexpr (std::is_integral_v<T>)
+    {
+      return std::to_string(v);
+    }
+    else
+    {
+      return FormatNumber(v);
+    }
+  };
+  for (const auto& n : numbers)
+  {
+    const T lo = (d->*n.Min)();
+    const T hi = (d->*n.Max)();
+    const std::string name = n.Name;
+    auto set = n.Set;
+    t.push_back({ name, n.Argument,
+      std::string(n.Help) + ", [" + format(lo) + ", " + format(hi) + "] (default: " +
+        format((d->*n.Get)()) + ")",
+      [name, lo, hi, set](Options& opt, const std::string& v) {
+        T value;
+        if constexpr (std::is_integral_v<T>)
+        {
+          value = IntInRange(name, v, lo, hi);
+        }
+        else
+        {
+          value = DoubleInRange(name, v, lo, hi);
+        }
+        SettingsOf(opt.StyleOptions, static_cast<Pass*>(nullptr))
+          .push_back([set, value](Pass* p) { (p->*set)(value); });
+      } });
+  }
+}
+
+/** Adds on/off options. */
+template <class Pass, size_t N>
+void AddFlagOptions(std::vector<OptionSpec>& t, const PassFlag<Pass> (&flags)[N])
+{
+  for (const auto& f : flags)
+  {
+    auto set = f.Set;
+    const bool value = f.Value;
+    t.push_back({ f.Name, nullptr, f.Help, [set, value](Options& opt, const std::string&) {
+                   SettingsOf(opt.StyleOptions, static_cast<Pass*>(nullptr))
+                     .push_back([set, value](Pass* p) { (p->*set)(value); });
+                 } });
+  }
+}
+
 /**
  * The comic options. Ranges and defaults come from vtkComicPass itself (its clamp macros'
  * Min/Max values and a default-constructed pass), so --help cannot drift from the class.
@@ -452,17 +540,7 @@ struct OptionSpec
 void AddComicOptions(std::vector<OptionSpec>& t)
 {
   vtkNew<vtkComicPass> d;
-  struct Number
-  {
-    const char* Name;
-    const char* Argument;
-    const char* Help;
-    double (vtkComicPass::*Get)();
-    double (vtkComicPass::*Min)();
-    double (vtkComicPass::*Max)();
-    void (vtkComicPass::*Set)(double);
-  };
-  const Number numbers[] = {
+  const PassNumber<vtkComicPass, double> numbers[] = {
     { "--edge-width", "PT", "comic: edge width in points", &vtkComicPass::GetEdgeWidth,
       &vtkComicPass::GetEdgeWidthMinValue, &vtkComicPass::GetEdgeWidthMaxValue,
       &vtkComicPass::SetEdgeWidth },
@@ -504,20 +582,7 @@ void AddComicOptions(std::vector<OptionSpec>& t)
       &vtkComicPass::GetReferenceHeight, &vtkComicPass::GetReferenceHeightMinValue,
       &vtkComicPass::GetReferenceHeightMaxValue, &vtkComicPass::SetReferenceHeight },
   };
-  for (const Number& n : numbers)
-  {
-    const double lo = (d.Get()->*n.Min)();
-    const double hi = (d.Get()->*n.Max)();
-    const std::string name = n.Name;
-    auto set = n.Set;
-    t.push_back({ name, n.Argument,
-      std::string(n.Help) + ", [" + FormatNumber(lo) + ", " + FormatNumber(hi) +
-        "] (default: " + FormatNumber((d.Get()->*n.Get)()) + ")",
-      [name, lo, hi, set](Options& opt, const std::string& v) {
-        const double value = DoubleInRange(name, v, lo, hi);
-        opt.StyleOptions.Comic.push_back([set, value](vtkComicPass* p) { (p->*set)(value); });
-      } });
-  }
+  AddNumberOptions(t, d.Get(), numbers);
   t.push_back({ "--edge-weights", "D,N,C",
     "comic: weights of the depth, normal and colour edges, each in [0, 1], normalized to sum "
     "1 (default: 1,1,1)",
@@ -557,14 +622,7 @@ void AddComicOptions(std::vector<OptionSpec>& t)
       const int a = l == "object" ? vtkComicPass::OBJECT : vtkComicPass::SCREEN;
       opt.StyleOptions.Comic.push_back([a](vtkComicPass* p) { p->SetAnchor(a); });
     } });
-  struct Flag
-  {
-    const char* Name;
-    const char* Help;
-    void (vtkComicPass::*Set)(bool);
-    bool Value;
-  };
-  const Flag flags[] = {
+  const PassFlag<vtkComicPass> flags[] = {
     { "--no-edges", "comic: no edges (default: edges on)", &vtkComicPass::SetEdges, false },
     { "--no-dots", "comic: no halftone dots, the bright zone keeps its tone (default: dots on)",
       &vtkComicPass::SetDots, false },
@@ -575,14 +633,7 @@ void AddComicOptions(std::vector<OptionSpec>& t)
     { "--tinted", "comic: keep the data's colours under the ink (default: black and white)",
       &vtkComicPass::SetTinted, true },
   };
-  for (const Flag& f : flags)
-  {
-    auto set = f.Set;
-    const bool value = f.Value;
-    t.push_back({ f.Name, nullptr, f.Help, [set, value](Options& opt, const std::string&) {
-                   opt.StyleOptions.Comic.push_back([set, value](vtkComicPass* p) { (p->*set)(value); });
-                 } });
-  }
+  AddFlagOptions(t, flags);
 }
 
 /** Parses "R,G,B" with components in [0, 1], or "#rrggbb". */
@@ -622,17 +673,7 @@ void AddPixelOptions(std::vector<OptionSpec>& t)
 {
   vtkNew<vtkPixelArtPass> d;
   using P = vtkPixelArtPass;
-  struct Number
-  {
-    const char* Name;
-    const char* Argument;
-    const char* Help;
-    double (P::*Get)();
-    double (P::*Min)();
-    double (P::*Max)();
-    void (P::*Set)(double);
-  };
-  const Number numbers[] = {
+  const PassNumber<P, double> numbers[] = {
     { "--low-threshold", "T", "pixel: Canny low threshold on the Sobel magnitude of the gray image",
       &P::GetLowThreshold, &P::GetLowThresholdMinValue, &P::GetLowThresholdMaxValue,
       &P::SetLowThreshold },
@@ -643,31 +684,8 @@ void AddPixelOptions(std::vector<OptionSpec>& t)
       &P::GetDitherStrength, &P::GetDitherStrengthMinValue, &P::GetDitherStrengthMaxValue,
       &P::SetDitherStrength },
   };
-  for (const Number& n : numbers)
-  {
-    const double lo = (d.Get()->*n.Min)();
-    const double hi = (d.Get()->*n.Max)();
-    const std::string name = n.Name;
-    auto set = n.Set;
-    t.push_back({ name, n.Argument,
-      std::string(n.Help) + ", [" + FormatNumber(lo) + ", " + FormatNumber(hi) +
-        "] (default: " + FormatNumber((d.Get()->*n.Get)()) + ")",
-      [name, lo, hi, set](Options& opt, const std::string& v) {
-        const double value = DoubleInRange(name, v, lo, hi);
-        opt.StyleOptions.Pixel.push_back([set, value](P* p) { (p->*set)(value); });
-      } });
-  }
-  struct Integer
-  {
-    const char* Name;
-    const char* Argument;
-    const char* Help;
-    int (P::*Get)();
-    int (P::*Min)();
-    int (P::*Max)();
-    void (P::*Set)(int);
-  };
-  const Integer integers[] = {
+  AddNumberOptions(t, d.Get(), numbers);
+  const PassNumber<P, int> integers[] = {
     { "--pixel-size", "PX", "pixel: art pixel size in window pixels", &P::GetPixelSize,
       &P::GetPixelSizeMinValue, &P::GetPixelSizeMaxValue, &P::SetPixelSize },
     { "--art-pixels", "N", "pixel: art pixels across the image width, 0 = use --pixel-size",
@@ -688,20 +706,7 @@ void AddPixelOptions(std::vector<OptionSpec>& t)
       &P::GetColormapShades, &P::GetColormapShadesMinValue, &P::GetColormapShadesMaxValue,
       &P::SetColormapShades },
   };
-  for (const Integer& n : integers)
-  {
-    const int lo = (d.Get()->*n.Min)();
-    const int hi = (d.Get()->*n.Max)();
-    const std::string name = n.Name;
-    auto set = n.Set;
-    t.push_back({ name, n.Argument,
-      std::string(n.Help) + ", [" + std::to_string(lo) + ", " + std::to_string(hi) +
-        "] (default: " + std::to_string((d.Get()->*n.Get)()) + ")",
-      [name, lo, hi, set](Options& opt, const std::string& v) {
-        const int value = IntInRange(name, v, lo, hi);
-        opt.StyleOptions.Pixel.push_back([set, value](P* p) { (p->*set)(value); });
-      } });
-  }
+  AddNumberOptions(t, d.Get(), integers);
   // Keyword options.
   struct Keyword
   {
@@ -807,14 +812,7 @@ void AddPixelOptions(std::vector<OptionSpec>& t)
         p->SetPalette(P::CUSTOM);
       });
     } });
-  struct Flag
-  {
-    const char* Name;
-    const char* Help;
-    void (P::*Set)(bool);
-    bool Value;
-  };
-  const Flag flags[] = {
+  const PassFlag<P> flags[] = {
     { "--no-depth-edges", "pixel: no silhouette outlines (default: on)", &P::SetDepthEdges,
       false },
     { "--normal-edges", "pixel: outline creases (default: off)", &P::SetNormalEdges, true },
@@ -823,14 +821,7 @@ void AddPixelOptions(std::vector<OptionSpec>& t)
     { "--stylize-background", "pixel: dither and quantize the background too (default: off)",
       &P::SetStylizeBackground, true },
   };
-  for (const Flag& f : flags)
-  {
-    auto set = f.Set;
-    const bool value = f.Value;
-    t.push_back({ f.Name, nullptr, f.Help, [set, value](Options& opt, const std::string&) {
-                   opt.StyleOptions.Pixel.push_back([set, value](P* p) { (p->*set)(value); });
-                 } });
-  }
+  AddFlagOptions(t, flags);
   // Thresholds shared with comic (same ranges): set both passes.
   for (OptionSpec& o : t)
   {
