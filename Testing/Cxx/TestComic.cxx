@@ -29,12 +29,9 @@ using Configure = std::function<void(vtkRenderer*, vtkComicPass*)>;
 vtkSmartPointer<vtkImageData> RenderComic(const Configure& configure, int w = W, int h = H,
   int magnify = 1, double scale = 1.0, bool parallel = false)
 {
-  auto win = MakeWindow(w, h);
-  vtkNew<vtkRenderer> ren;
-  win->AddRenderer(ren);
-  ren->SetBackground(1, 1, 1);
-  AddTestActors(ren, scale);
-  PlaceCamera(ren, scale, 25, 20, 12.0, 0.37, parallel);
+  auto scene = MakeTestScene(w, h, parallel, scale);
+  vtkRenderWindow* win = scene.Window;
+  vtkRenderer* ren = scene.Renderer;
   vtkNew<vtkComicPass> comic;
   comic->SetReferenceHeight(h);
   ren->SetPass(comic);
@@ -136,12 +133,9 @@ int TestComicRegression(int argc, char* argv[])
   }
   const bool parallel = args.Positional.size() > 1 && args.Positional[1] == "parallel";
 
-  auto win = MakeWindow(W, H);
-  vtkNew<vtkRenderer> ren;
-  win->AddRenderer(ren);
-  ren->SetBackground(1, 1, 1);
-  AddTestActors(ren);
-  PlaceCamera(ren, 1.0, 25, 20, 12.0, 0.37, parallel);
+  auto scene = MakeTestScene(W, H, parallel);
+  vtkRenderWindow* win = scene.Window;
+  vtkRenderer* ren = scene.Renderer;
   vtkNew<vtkComicPass> comic;
   comic->SetReferenceHeight(H);
   ren->SetPass(comic);
@@ -267,12 +261,9 @@ int TestComicExtremes(int, char*[])
   {
     for (bool parallel : { false, true })
     {
-      auto win = MakeWindow(240, 180);
-      vtkNew<vtkRenderer> ren;
-      win->AddRenderer(ren);
-      ren->SetBackground(1, 1, 1);
-      AddTestActors(ren);
-      PlaceCamera(ren, 1.0, 25, 20, 12.0, 0.37, parallel);
+      auto scene = MakeTestScene(240, 180, parallel);
+      vtkRenderWindow* win = scene.Window;
+      vtkRenderer* ren = scene.Renderer;
       vtkNew<vtkComicPass> comic;
       ren->SetPass(comic);
       k.Setup(ren, comic);
@@ -387,12 +378,9 @@ int TestComicMotion(int argc, char* argv[])
   double swim[2] = { 0, 0 };
   for (int anchor : { vtkComicPass::SCREEN, vtkComicPass::OBJECT })
   {
-    auto win = MakeWindow(W, H);
-    vtkNew<vtkRenderer> ren;
-    win->AddRenderer(ren);
-    ren->SetBackground(1, 1, 1);
-    AddTestActors(ren);
-    PlaceCamera(ren, 1.0, 25, 20, 12.0, 0.37);
+    auto scene = MakeTestScene(W, H, false);
+    vtkRenderWindow* win = scene.Window;
+    vtkRenderer* ren = scene.Renderer;
     vtkNew<vtkComicPass> comic;
     comic->SetReferenceHeight(H);
     comic->SetAnchor(anchor);

@@ -44,12 +44,9 @@ using Configure = std::function<void(vtkRenderer*, vtkPixelArtPass*)>;
 vtkSmartPointer<vtkImageData> RenderPixelArt(const Configure& configure, int w = W, int h = H,
   bool parallel = false, int magnify = 1, double scale = 1.0)
 {
-  auto win = MakeWindow(w, h);
-  vtkNew<vtkRenderer> ren;
-  win->AddRenderer(ren);
-  ren->SetBackground(1, 1, 1);
-  AddTestActors(ren, scale);
-  PlaceCamera(ren, scale, 25, 20, 12.0, 0.37, parallel);
+  auto scene = MakeTestScene(w, h, parallel, scale);
+  vtkRenderWindow* win = scene.Window;
+  vtkRenderer* ren = scene.Renderer;
   vtkNew<vtkPixelArtPass> pass;
   ren->SetPass(pass);
   if (configure)
@@ -245,12 +242,9 @@ int TestPixelArtRegression(int argc, char* argv[])
     return 1;
   }
   const bool parallel = args.Positional.size() > 1 && args.Positional[1] == "parallel";
-  auto win = MakeWindow(W, H);
-  vtkNew<vtkRenderer> ren;
-  win->AddRenderer(ren);
-  ren->SetBackground(1, 1, 1);
-  AddTestActors(ren);
-  PlaceCamera(ren, 1.0, 25, 20, 12.0, 0.37, parallel);
+  auto scene = MakeTestScene(W, H, parallel);
+  vtkRenderWindow* win = scene.Window;
+  vtkRenderer* ren = scene.Renderer;
   vtkNew<vtkPixelArtPass> pass;
   ren->SetPass(pass);
   if (it->second)
@@ -780,12 +774,9 @@ int TestPixelArtStability(int argc, char* argv[])
   {
     for (bool stable : { false, true })
     {
-      auto win = MakeWindow(W, H);
-      vtkNew<vtkRenderer> ren;
-      win->AddRenderer(ren);
-      ren->SetBackground(1, 1, 1);
-      AddTestActors(ren);
-      PlaceCamera(ren, 1.0, 25, 20, 12.0, 0.37, true);
+      auto scene = MakeTestScene(W, H, true);
+      vtkRenderWindow* win = scene.Window;
+      vtkRenderer* ren = scene.Renderer;
       vtkNew<P> pass;
       pass->SetMode(mode);
       pass->SetPixelSize(block);
@@ -872,12 +863,9 @@ int TestPixelArtStability(int argc, char* argv[])
   {
     for (int anchor : { P::SCREEN, P::GRID, P::SURFACE })
     {
-      auto win = MakeWindow(W, H);
-      vtkNew<vtkRenderer> ren;
-      win->AddRenderer(ren);
-      ren->SetBackground(1, 1, 1);
-      AddTestActors(ren);
-      PlaceCamera(ren, 1.0, 25, 20, 12.0, 0.37, false);
+      auto scene = MakeTestScene(W, H, false);
+      vtkRenderWindow* win = scene.Window;
+      vtkRenderer* ren = scene.Renderer;
       vtkNew<P> pass;
       pass->SetMode(mode);
       pass->SetPixelSize(block);
@@ -938,12 +926,9 @@ int TestPixelArtFidelity(int, char*[])
       double ssim[2], ms[2];
       for (int mode : { P::FAST, P::FAITHFUL })
       {
-        auto win = MakeWindow(w, h);
-        vtkNew<vtkRenderer> ren;
-        win->AddRenderer(ren);
-        ren->SetBackground(1, 1, 1);
-        AddTestActors(ren);
-        PlaceCamera(ren, 1.0, 25, 20, 12.0, 0.37, false);
+        auto scene = MakeTestScene(w, h, false);
+        vtkRenderWindow* win = scene.Window;
+        vtkRenderer* ren = scene.Renderer;
         vtkNew<P> pass;
         configure(mode, block)(ren, pass);
         ren->SetPass(pass);
@@ -1105,12 +1090,9 @@ int TestPixelArtExtremes(int argc, char* argv[])
         {
           continue;
         }
-        auto win = MakeWindow(k.Width, k.Height);
-        vtkNew<vtkRenderer> ren;
-        win->AddRenderer(ren);
-        ren->SetBackground(1, 1, 1);
-        AddTestActors(ren, k.Scale);
-        PlaceCamera(ren, k.Scale, 25, 20, 12.0, 0.37, parallel);
+        auto scene = MakeTestScene(k.Width, k.Height, parallel, k.Scale);
+        vtkRenderWindow* win = scene.Window;
+        vtkRenderer* ren = scene.Renderer;
         vtkNew<P> pass;
         pass->SetMode(mode);
         ren->SetPass(pass);

@@ -169,6 +169,29 @@ inline void PlaceCamera(vtkRenderer* ren, double scale = 1.0, double azimuth = 0
   ren->ResetCameraClippingRange();
 }
 
+/** The standard style test scene: window, renderer, white background, test actors, camera. */
+struct TestScene
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+};
+
+/**
+ * A w x h window with the test actors (scaled) on white, seen from azimuth 25, elevation 20,
+ * 12 units (scaled) away, in perspective or parallel projection.
+ */
+inline TestScene MakeTestScene(int w, int h, bool parallel = false, double scale = 1.0)
+{
+  TestScene scene;
+  scene.Window = MakeWindow(w, h);
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  scene.Window->AddRenderer(scene.Renderer);
+  scene.Renderer->SetBackground(1, 1, 1);
+  AddTestActors(scene.Renderer, scale);
+  PlaceCamera(scene.Renderer, scale, 25, 20, 12.0, 0.37, parallel);
+  return scene;
+}
+
 /**
  * Light set-ups: "headlight" (VTK's default), "none" (no light, automatic creation off),
  * "kit" (8 mixed lights: directional, positional with attenuation, a spot, a camera light,

@@ -78,8 +78,8 @@ check(vtkstylize.vtkStylizeImageMetrics.MaximumDifference(plain, comic) > 10,
       "comic looks like standard")
 
 
-def render_comic(configure):
-    """The comic pass on a white background; returns the number of ink (dark) pixels."""
+def render_style(style_pass, colour=None):
+    """A 200x150 sphere on white through style_pass; returns the image's scalars."""
     win = vtkRenderWindow()
     win.SetSize(200, 150)
     win.SetMultiSamples(0)
@@ -94,22 +94,29 @@ def render_comic(configure):
     mapper.SetInputConnection(sphere.GetOutputPort())
     actor = vtkActor()
     actor.SetMapper(mapper)
+    if colour:
+        actor.GetProperty().SetColor(*colour)
     ren.AddActor(actor)
     ren.GetActiveCamera().SetPosition(0, 0, 3)
     ren.ResetCameraClippingRange()
-    comic_pass = vtkstylize.vtkComicPass()
-    comic_pass.SetReferenceHeight(150)
-    configure(comic_pass)
-    ren.SetPass(comic_pass)
+    ren.SetPass(style_pass)
     win.Render()
     w2i = vtkWindowToImageFilter()
     w2i.SetInput(win)
     w2i.ReadFrontBufferOff()
     w2i.Update()
     scalars = w2i.GetOutput().GetPointData().GetScalars()
-    ink = sum(1 for i in range(scalars.GetNumberOfTuples()) if scalars.GetComponent(i, 0) < 128)
     win.Finalize()
-    return ink
+    return scalars
+
+
+def render_comic(configure):
+    """The comic pass; returns the number of ink (dark) pixels."""
+    comic_pass = vtkstylize.vtkComicPass()
+    comic_pass.SetReferenceHeight(150)
+    configure(comic_pass)
+    scalars = render_style(comic_pass)
+    return sum(1 for i in range(scalars.GetNumberOfTuples()) if scalars.GetComponent(i, 0) < 128)
 
 
 # The comic pass: settings clamp, the edge layer is a thin outline, the full image has more ink.
@@ -126,38 +133,13 @@ check(full > edges, "the full comic image has no more ink than its edges")
 
 
 def render_pixel(configure):
-    """The pixel-art pass on a white background; returns (image colours as a set, block, grid)."""
-    win = vtkRenderWindow()
-    win.SetSize(200, 150)
-    win.SetMultiSamples(0)
-    win.OffScreenRenderingOn()
-    ren = vtkRenderer()
-    ren.SetBackground(1, 1, 1)
-    win.AddRenderer(ren)
-    sphere = vtkSphereSource()
-    sphere.SetThetaResolution(64)
-    sphere.SetPhiResolution(32)
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(sphere.GetOutputPort())
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetColor(0.9, 0.5, 0.2)
-    ren.AddActor(actor)
-    ren.GetActiveCamera().SetPosition(0, 0, 3)
-    ren.ResetCameraClippingRange()
+    """The pixel-art pass on an orange sphere; returns (image colours as a set, block, grid)."""
     pixel_pass = vtkstylize.vtkPixelArtPass()
     configure(pixel_pass)
-    ren.SetPass(pixel_pass)
-    win.Render()
-    w2i = vtkWindowToImageFilter()
-    w2i.SetInput(win)
-    w2i.ReadFrontBufferOff()
-    w2i.Update()
-    scalars = w2i.GetOutput().GetPointData().GetScalars()
+    scalars = render_style(pixel_pass, (0.9, 0.5, 0.2))
     colours = set(scalars.GetTuple3(i) for i in range(scalars.GetNumberOfTuples()))
     block, grid = [0, 0], [0, 0]
     pixel_pass.GetLastGrid(block, grid)
-    win.Finalize()
     return colours, block, grid
 
 
