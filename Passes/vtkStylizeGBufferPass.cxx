@@ -31,6 +31,7 @@
 
 #include "vtkStylizeCompositeFS.h"
 #include "vtkStylizeDepthFS.h"
+#include "vtkStylizeGBufferDirectionFS.h"
 #include "vtkStylizeGBufferImpl.h"
 
 #include <algorithm>
@@ -139,6 +140,7 @@ public:
   vtkNew<vtkStylizeGBufferClearPass> ClearPass;
   vtkStylizeShaderUtilities::ScreenQuad CompositeQuad;
   vtkNew<vtkMatrix4x4> InverseView;
+  vtkNew<vtkMatrix4x4> View;
   vtkNew<vtkMatrix4x4> InverseModel;
   vtkNew<vtkMatrix4x4> Product;
 };
@@ -189,7 +191,8 @@ void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Channels: " << ((this->Channels & NORMAL) ? "normal " : "")
      << ((this->Channels & POSITION) ? "position " : "")
-     << ((this->Channels & LINEAR_DEPTH) ? "linear-depth" : "") << "\n";
+     << ((this->Channels & LINEAR_DEPTH) ? "linear-depth " : "")
+     << ((this->Channels & DIRECTION) ? "direction" : "") << "\n";
   os << indent << "Precision: " << (this->Precision == FULL ? "full" : "half") << "\n";
   os << indent << "PositionSpace: " << (this->PositionSpace == VIEW ? "view" : "object") << "\n";
   os << indent << "Viewport: " << this->Viewport[0] << " " << this->Viewport[1] << " "
@@ -279,6 +282,14 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
   {
     drop(this->LinearDepthTexture);
   }
+  if (this->Channels & DIRECTION)
+  {
+    make(this->DirectionTexture, colorFormat);
+  }
+  else
+  {
+    drop(this->DirectionTexture);
+  }
   if (!this->FrameBufferObject)
   {
     this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
@@ -290,7 +301,8 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
 void vtkStylizeGBufferPass::FreeTextures(vtkWindow* w)
 {
   for (vtkTextureObject** tex : { &this->ColorTexture, &this->NormalTexture,
-         &this->PositionTexture, &this->LinearDepthTexture, &this->DepthTexture })
+         &this->PositionTexture, &this->LinearDepthTexture, &this->DepthTexture,
+         &this->DirectionTexture })
   {
     vtkStylizeShaderUtilities::FreeTexture(*tex, w);
   }
@@ -351,7 +363,7 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind();
   const unsigned int n = 1 + (this->NormalTexture ? 1 : 0) + (this->PositionTexture ? 1 : 0) +
-    (this->LinearDepthTexture ? 1 : 0);
+    (this->LinearDepthTexture ? 1 : 0) + (this->DirectionTexture ? 1 : 0);
   if (n != this->NumberOfAttachments)
   {
     fbo->RemoveColorAttachments(8); // the channel set changed: drop the old attachments
@@ -370,14 +382,18 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   {
     fbo->AddColorAttachment(index++, this->LinearDepthTexture);
   }
+  if (this->DirectionTexture)
+  {
+    fbo->AddColorAttachment(index++, this->DirectionTexture);
+  }
   this->NumberOfAttachments = n;
   this->Internals->ClearPass->Attachments = n;
   fbo->AddDepthAttachment(this->DepthTexture);
   fbo->ActivateDrawBuffers(n);
   fbo->StartNonOrtho(w, h);
 
-  vtkMatrix4x4::Invert(
-    ren->GetActiveCamera()->GetModelViewTransformMatrix(), this->Internals->InverseView);
+  this->Internals->View->DeepCopy(ren->GetActiveCamera()->GetModelViewTransformMatrix());
+  vtkMatrix4x4::Invert(this->Internals->View, this->Internals->InverseView);
 
   vtkRenderState sfbo(ren);
   sfbo.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
@@ -516,6 +532,9 @@ bool vtkStylizeGBufferPass::DownloadChannel(int buffer, vtkFloatArray* out)
     case LINEAR_DEPTH_BUFFER:
       tex = this->LinearDepthTexture;
       break;
+    case DIRECTION_BUFFER:
+      tex = this->DirectionTexture;
+      break;
     default:
       break;
   }
@@ -551,6 +570,11 @@ bool vtkStylizeGBufferPass::DownloadChannel(int buffer, vtkFloatArray* out)
     {
       index = 1 + (this->NormalTexture ? 1 : 0) + (this->PositionTexture ? 1 : 0);
     }
+    else if (buffer == DIRECTION_BUFFER)
+    {
+      index = 1 + (this->NormalTexture ? 1 : 0) + (this->PositionTexture ? 1 : 0) +
+        (this->LinearDepthTexture ? 1 : 0);
+    }
     glReadBuffer(GL_COLOR_ATTACHMENT0 + index);
     glReadPixels(0, 0, w, h, comps == 1 ? GL_RED : GL_RGBA, GL_FLOAT, out->GetPointer(0));
   }
@@ -581,11 +605,24 @@ vtkMTimeType vtkStylizeGBufferPass::GetShaderStageMTime()
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeGBufferPass::PreReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+bool vtkStylizeGBufferPass::PreReplaceShaderValues(std::string& vertexShader, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
 {
   if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
+    if (this->Channels & DIRECTION)
+    {
+      // The direction attribute's outer product, in view coordinates (sign-free interpolation).
+      vtkShaderProgram::Substitute(vertexShader, "//VTK::System::Dec",
+        "//VTK::System::Dec\nin vec3 stylizeDirectionMC;\nuniform mat3 stylizeDirectionMCVC;\n"
+        "out vec3 stylizeDirDiagVSOutput;\nout vec3 stylizeDirOffVSOutput;\n",
+        false);
+      vtkShaderProgram::Substitute(vertexShader, "//VTK::Normal::Impl",
+        "//VTK::Normal::Impl\n  vec3 stylizeDirVC = stylizeDirectionMCVC * stylizeDirectionMC;\n"
+        "  stylizeDirDiagVSOutput = stylizeDirVC * stylizeDirVC;\n"
+        "  stylizeDirOffVSOutput = stylizeDirVC.xxy * stylizeDirVC.yzz;\n",
+        false);
+    }
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
       std::string("//VTK::Light::Impl\n  ") + GBufferTag, false);
   }
@@ -593,8 +630,8 @@ bool vtkStylizeGBufferPass::PreReplaceShaderValues(
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeGBufferPass::PostReplaceShaderValues(
-  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+bool vtkStylizeGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
   if (fragmentShader.find(GBufferTag) == std::string::npos)
   {
@@ -605,7 +642,7 @@ bool vtkStylizeGBufferPass::PostReplaceShaderValues(
   // The lighting pass (when it shades this shader) defines stylizeN, the normal it used.
   const bool stylizeLit =
     surface && fragmentShader.find("//VTK::StylizeLight::Impl") != std::string::npos;
-  std::string normalValue, positionValue, linearDepthValue;
+  std::string normalValue, positionValue, linearDepthValue, directionValue;
   if (this->Channels & LINEAR_DEPTH)
   {
     linearDepthValue = surface ? "vec4(-vertexVC.z, 0.0, 0.0, 1.0)" : "vec4(0.0)";
@@ -644,6 +681,28 @@ bool vtkStylizeGBufferPass::PostReplaceShaderValues(
       positionValue = "vec4(vertexVC.xyz, 1.0)";
     }
   }
+  if (this->Channels & DIRECTION)
+  {
+    // (a geometry shader, for wide lines, would not pass the tensor on)
+    if (!surface || !geometryShader.empty() ||
+      vertexShader.find("stylizeDirDiagVSOutput") == std::string::npos)
+    {
+      directionValue = "vec4(0.0)";
+    }
+    else
+    {
+      vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
+        std::string("//VTK::System::Dec\n") + vtkStylizeGBufferDirectionFS, false);
+      directionValue = stylizeLit ? "stylizeTensorDirection(stylizeN)"
+                                  : "stylizeTensorDirection(stylizeShadingNormal(normalVCVSOutput, "
+                                    "stylizeFaceN, cameraParallel == 1 ? vec3(0.0, 0.0, 1.0) : "
+                                    "-vertexVC.xyz))";
+      if (!stylizeLit)
+      {
+        vtkStylizeShaderUtilities::InjectCommon(fragmentShader);
+      }
+    }
+  }
   // Keep the template's line for each allocated channel, with its literal attachment index.
   std::istringstream lines(vtkStylizeGBufferImpl);
   std::string line, code;
@@ -676,6 +735,15 @@ bool vtkStylizeGBufferPass::PostReplaceShaderValues(
       }
       vtkShaderProgram::Substitute(line, "LINEAR_DEPTH_INDEX", std::to_string(index++));
       vtkShaderProgram::Substitute(line, "LINEAR_DEPTH_VALUE", linearDepthValue);
+    }
+    else if (line.find("DIRECTION_INDEX") != std::string::npos)
+    {
+      if (directionValue.empty())
+      {
+        continue;
+      }
+      vtkShaderProgram::Substitute(line, "DIRECTION_INDEX", std::to_string(index++));
+      vtkShaderProgram::Substitute(line, "DIRECTION_VALUE", directionValue);
     }
     code += line + "\n";
   }
@@ -729,15 +797,34 @@ bool vtkStylizeGBufferPass::SetShaderParameters(
       static_cast<float>(this->DepthRange[1]) };
     program->SetUniform2f("stylizeLogDepthRange", range);
   }
+  vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop);
+  if (program->IsUniformUsed("stylizeDirectionMCVC"))
+  {
+    // model -> world -> view, the 3x3 part (directions are vectors), column-major for GLSL
+    vtkMatrix4x4* m = this->Internals->Product;
+    m->DeepCopy(this->Internals->View);
+    if (prop3D)
+    {
+      vtkMatrix4x4::Multiply4x4(this->Internals->View, prop3D->GetMatrix(), m);
+    }
+    float columns[9];
+    for (int c = 0; c < 3; ++c)
+    {
+      for (int r = 0; r < 3; ++r)
+      {
+        columns[c * 3 + r] = static_cast<float>(m->GetElement(r, c));
+      }
+    }
+    program->SetUniformMatrix3x3("stylizeDirectionMCVC", columns);
+  }
   if (program->IsUniformUsed("stylizeVCToMC"))
   {
     // view -> world (inverse camera view) -> model (inverse prop matrix), in double precision
     vtkMatrix4x4* m = this->Internals->Product;
     m->DeepCopy(this->Internals->InverseView);
-    vtkProp3D* p3 = vtkProp3D::SafeDownCast(prop);
-    if (p3)
+    if (prop3D)
     {
-      vtkMatrix4x4::Invert(p3->GetMatrix(), this->Internals->InverseModel);
+      vtkMatrix4x4::Invert(prop3D->GetMatrix(), this->Internals->InverseModel);
       vtkMatrix4x4::Multiply4x4(this->Internals->InverseModel, m, m);
     }
     m->Transpose(); // vtkShaderProgram uploads row-major data as GLSL columns

@@ -14,6 +14,9 @@
  * | POSITION | request | RGBA32F                | view- or object-space position, a = 1 on surfaces|
  * | LINEAR_DEPTH | request | R32F               | distance along the view axis (-z in view space) |
  * |          |         |                        | in world units, 0 where there is no surface     |
+ * | DIRECTION | request | RGBA16F (or 32F)      | view-space unit tangent direction from the      |
+ * |          |         |                        | vertex attribute stylizeDirectionMC, a = its    |
+ * |          |         |                        | coherence (0: no attribute or no direction)     |
  *
  * LINEAR_DEPTH keeps full relative precision at any near/far ratio (the window-space depth of a
  * 1e7 near/far ratio has almost none left far away), which scale-free screen-space edges need.
@@ -66,7 +69,8 @@ public:
   {
     NORMAL = 1,
     POSITION = 2,
-    LINEAR_DEPTH = 4
+    LINEAR_DEPTH = 4,
+    DIRECTION = 8
   };
 
   /** Buffers that DownloadChannel() can read back. */
@@ -76,7 +80,8 @@ public:
     NORMAL_BUFFER = 1,
     POSITION_BUFFER = 2,
     DEPTH_BUFFER = 3,
-    LINEAR_DEPTH_BUFFER = 4
+    LINEAR_DEPTH_BUFFER = 4,
+    DIRECTION_BUFFER = 5
   };
 
   /** Spaces for the POSITION channel. */
@@ -88,10 +93,18 @@ public:
 
   ///@{
   /**
-   * Bit mask of the optional channels to allocate and write (NORMAL, POSITION, LINEAR_DEPTH).
-   * Only these are allocated. Default 0: colour and depth only.
+   * Bit mask of the optional channels to allocate and write (NORMAL, POSITION, LINEAR_DEPTH,
+   * DIRECTION). Only these are allocated. Default 0: colour and depth only.
+   *
+   * DIRECTION carries a per-vertex tangent direction field (for example a principal direction
+   * of vtkStylizePrincipalCurvatures) to the screen. Map the point array to the vertex attribute
+   * `stylizeDirectionMC` (vtkOpenGLPolyDataMapper::MapDataArrayToVertexAttribute). Directions are
+   * unsigned (d and -d are the same), so the vertex shader interpolates the outer product d d^T,
+   * not d; the fragment shader projects it onto the tangent plane and writes its principal
+   * eigenvector and coherence (eigenvalue gap / trace, 0..1). Actors without the attribute
+   * write coherence 0.
    */
-  vtkSetClampMacro(Channels, int, 0, (NORMAL | POSITION | LINEAR_DEPTH));
+  vtkSetClampMacro(Channels, int, 0, (NORMAL | POSITION | LINEAR_DEPTH | DIRECTION));
   vtkGetMacro(Channels, int);
   ///@}
 
@@ -155,6 +168,7 @@ public:
   vtkGetObjectMacro(PositionTexture, vtkTextureObject);
   vtkGetObjectMacro(LinearDepthTexture, vtkTextureObject);
   vtkGetObjectMacro(DepthTexture, vtkTextureObject);
+  vtkGetObjectMacro(DirectionTexture, vtkTextureObject);
   ///@}
 
   /**
@@ -200,8 +214,8 @@ public:
   vtkGetVector2Macro(GeometrySize, int);
 
   /**
-   * Reads a buffer of the last frame back as floats (4 components per pixel for colour, normal
-   * and position, 1 for depth and linear depth), rows bottom to top. The window's context must be current, as it
+   * Reads a buffer of the last frame back as floats (4 components per pixel for colour, normal,
+   * position and direction, 1 for depth and linear depth), rows bottom to top. The window's context must be current, as it
    * is right after a render. Returns false when the channel was not allocated.
    */
   bool DownloadChannel(int buffer, vtkFloatArray* out);
@@ -257,6 +271,7 @@ protected:
   vtkTextureObject* PositionTexture = nullptr;
   vtkTextureObject* LinearDepthTexture = nullptr;
   vtkTextureObject* DepthTexture = nullptr;
+  vtkTextureObject* DirectionTexture = nullptr;
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

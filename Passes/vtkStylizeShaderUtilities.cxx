@@ -246,6 +246,19 @@ vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float3
 }
 
 //------------------------------------------------------------------------------
+vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float4(
+  const char* name, double x, double y, double z, double w)
+{
+  if (this->Program->IsUniformUsed(name))
+  {
+    const float v[4] = { static_cast<float>(x), static_cast<float>(y), static_cast<float>(z),
+      static_cast<float>(w) };
+    this->Program->SetUniform4f(name, v);
+  }
+  return *this;
+}
+
+//------------------------------------------------------------------------------
 vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Texture(
   const char* name, vtkTextureObject* tex)
 {

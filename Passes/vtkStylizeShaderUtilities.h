@@ -87,6 +87,7 @@ public:
     Uniforms& Int2(const char* name, int x, int y);
     Uniforms& Float2(const char* name, double x, double y);
     Uniforms& Float3(const char* name, double x, double y, double z);
+    Uniforms& Float4(const char* name, double x, double y, double z, double w);
     /** Binds tex (when not null) to a free unit and sets the sampler. */
     Uniforms& Texture(const char* name, vtkTextureObject* tex);
     vtkShaderProgram* GetProgram() const { return this->Program; }

@@ -267,22 +267,10 @@ void pixelMain()
 #endif
 
 #ifdef PIXEL_STAGE_STYLIZE
-// Eq. 10, row-major: entry (y mod 8) * 8 + (x mod 8).
-const int pixelBayer[64] = int[64](
-   1, 49, 13, 61,  4, 52, 16, 64,
-  33, 17, 45, 29, 36, 20, 48, 32,
-   9, 57,  5, 53, 12, 60,  8, 56,
-  41, 25, 37, 21, 44, 28, 40, 24,
-   3, 51, 15, 63,  2, 50, 14, 62,
-  35, 19, 47, 31, 34, 18, 46, 30,
-  11, 59,  7, 55, 10, 58,  6, 54,
-  43, 27, 39, 23, 42, 26, 38, 22);
-
 // Eq. 11: the threshold (M[R] - 0.5) / 64 of dither cell q.
 float pixelThreshold(ivec2 q)
 {
-  ivec2 m = q & 7; // two's complement: also right for negative cells
-  return (float(pixelBayer[m.y * 8 + m.x]) - 0.5) / 64.0;
+  return (float(stylizeBayer(q)) - 0.5) / 64.0;
 }
 
 vec3 pixelQuantize(vec3 c, float t)

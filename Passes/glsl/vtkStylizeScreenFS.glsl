@@ -17,4 +17,24 @@ vec2 stylizeTriplanar(sampler2D positions, ivec2 p, ivec2 size, vec2 fallback)
   vec2 plane = gn.x >= gn.y && gn.x >= gn.z ? pos.yz : (gn.y >= gn.z ? pos.zx : pos.xy);
   return pos.a > 0.5 ? plane : fallback;
 }
+
+// The ordered-dither matrix of the pixel-art paper (eq. 10, values 1..64), row-major: entry
+// (y mod 8) * 8 + (x mod 8). Pixel art thresholds with it; the sketch pass staggers its stroke
+// starts with it.
+const int stylizeBayerMatrix[64] = int[64](
+   1, 49, 13, 61,  4, 52, 16, 64,
+  33, 17, 45, 29, 36, 20, 48, 32,
+   9, 57,  5, 53, 12, 60,  8, 56,
+  41, 25, 37, 21, 44, 28, 40, 24,
+   3, 51, 15, 63,  2, 50, 14, 62,
+  35, 19, 47, 31, 34, 18, 46, 30,
+  11, 59,  7, 55, 10, 58,  6, 54,
+  43, 27, 39, 23, 42, 26, 38, 22);
+
+// The matrix entry (1..64) of cell q (two's complement: also right for negative cells).
+int stylizeBayer(ivec2 q)
+{
+  ivec2 m = q & 7;
+  return stylizeBayerMatrix[m.y * 8 + m.x];
+}
 #endif

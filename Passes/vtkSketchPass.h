@@ -1,0 +1,402 @@
+/**
+ * @class   vtkSketchPass
+ * @brief   Pencil sketch: strokes drawn by line integral convolution of solid noise along the
+ *          surface's principal curvature directions, estimated per pixel in real time.
+ *
+ * The method of "real-time pencil sketch rendering along principal directions"
+ * (ALGORITHMS.md section 3) as one render pass: `renderer->SetPass(sketch)`; no delegate.
+ *
+ * 1. The opaque geometry is rendered once into the shared G-buffer (vtkStylizeGBufferPass)
+ *    with a vtkStylizeLightingPass (Standard model by default). Channels: linear depth and
+ *    normals always (full float precision by default: the estimate differentiates normals),
+ *    object-space positions for surface-fixed noise, the DIRECTION channel in model-space mode.
+ * 2. Principal directions per pixel, by focal surfaces (DirectionSource SCREEN): 2, 4 or 8
+ *    neighbours `Neighbors` in 1, 4 or 8 pairs. For each pair the focal quadratic is solved in
+ *    the curvature 1/lambda (no overflow on flat ground); pairs with a negative discriminant,
+ *    neighbours off the surface, collinear or planar pairs are skipped; the rays' points at the
+ *    focal height of the larger |curvature| lie along the other principal direction and are
+ *    fitted by total least squares through the origin (doubled angles), each weighted by how
+ *    far it is from the umbilic 0/0 case. The neighbour stride grows near the camera so that
+ *    neighbours stay at least `NeighborSpacing` apart in world units (up to `MaxStride`).
+ *    Model-space mode (DirectionSource MODEL) uses a point-data direction array instead
+ *    (`DirectionArrayName`, by default vtkStylizePrincipalCurvatures' PrincipalDirectionMin),
+ *    mapped to the G-buffer's DIRECTION channel; pixels without it fall back to the estimate.
+ * 3. `SmoothingIterations` sign-invariant smoothing iterations (doubled angles over 3x3 pixels of
+ *    the same surface), then fill iterations for undefined (planar, umbilic) pixels from their
+ *    surface's defined neighbours at distances doubling up to `FillRadius`; pixels still
+ *    undefined follow the isophotes of the lit image (structure tensor of its gradient), else a
+ *    fixed screen direction: no surface pixel is left without a direction. `Direction` selects
+ *    the direction drawn: MINIMUM or MAXIMUM curvature (by absolute value) or their BISECTOR.
+ * 4. Strokes: perspective-correct line integral convolution. From each pixel the stroke moves
+ *    `StepLength` along the direction in world space, is projected to the screen, snaps to the
+ *    surface seen there, samples the field bilinearly (directions sign-aligned) and the noise,
+ *    `Steps` times on each side, with a triangle kernel; it stops where it leaves the surface
+ *    (background, another surface at another depth). Starts are staggered by the 8x8
+ *    ordered-dither matrix. The noise (WHITE, PERLIN, WORLEY; a tileable 64^3 texture) is
+ *    sampled at the object-space position, so strokes stick to the surface without texture
+ *    coordinates (NoiseSpace SCREEN gives the swimming look for comparison). LicMode SCREEN_2D
+ *    is the classic screen-space LIC, the baseline of the accuracy study.
+ * 5. Tone: the lit luminance, bright faces lifted to white between `BrightThresholds` t1 and t2,
+ *    contrast against a downsampled, strided Gaussian blur of it (o + c (o - b), `Contrast`,
+ *    `BlurRadius`, `BlurStride`); ink 2 (1 - tone)(1 - stroke), so strokes keep the mean tone;
+ *    a second stroke field across the first below `CrossThreshold` (cross-hatching).
+ *
+ * Lengths (step, noise cell, neighbour spacing, blur radius, fill radius) are in points: 1 point
+ * is one pixel of an image ReferenceHeight pixels tall; world lengths are taken at the camera's
+ * focal distance. A magnified screenshot shows the same picture at higher detail (the blur and
+ * the strokes stop at tile borders).
+ *
+ * @sa vtkStylizeGBufferPass vtkStylizeLightingPass vtkStylizePrincipalCurvatures
+ */
+
+#ifndef vtkSketchPass_h
+#define vtkSketchPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkStylizePassesModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class vtkFloatArray;
+class vtkStylizeGBufferPass;
+class vtkStylizeLightingPass;
+
+class VTKSTYLIZEPASSES_EXPORT vtkSketchPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkSketchPass* New();
+  vtkTypeMacro(vtkSketchPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Where the principal directions come from. */
+  enum DirectionSources
+  {
+    SCREEN = 0, ///< estimated per pixel from the G-buffer (focal surfaces)
+    MODEL = 1   ///< a point-data direction array of the data (exact at render time)
+  };
+
+  /** The direction the strokes follow. */
+  enum Directions
+  {
+    MINIMUM = 0, ///< the principal direction of the smaller |curvature| (along a cylinder)
+    MAXIMUM = 1, ///< the principal direction of the larger |curvature| (around a cylinder)
+    BISECTOR = 2 ///< halfway between the two (fewer visible turns)
+  };
+
+  /** Noise convolved along the strokes. */
+  enum Noises
+  {
+    WHITE = 0,  ///< hard pencil
+    PERLIN = 1, ///< medium
+    WORLEY = 2  ///< soft
+  };
+
+  /** Where the noise is fixed. */
+  enum NoiseSpaces
+  {
+    OBJECT = 0,       ///< the object-space position: strokes stick to the surface
+    SCREEN_SPACE = 1  ///< the image: strokes swim when the camera moves
+  };
+
+  /** How a stroke is traced. */
+  enum LicModes
+  {
+    PERSPECTIVE = 0, ///< steps in world space, reprojected each step (the paper's method)
+    SCREEN_2D = 1    ///< the classic screen-space LIC (baseline for the accuracy study)
+  };
+
+  /** What the pass writes. */
+  enum Layers
+  {
+    SKETCH = 0,     ///< the pencil sketch
+    DIRECTIONS = 1, ///< the stroke direction's screen angle (mod 180 degrees) as a hue
+    STROKES = 2,    ///< the LIC stroke texture alone (gray, 0.5 on average)
+    TONE = 3        ///< the tone before strokes (bright faces and contrast applied)
+  };
+
+  /** The lighting pass (Standard model by default); change its model or settings freely. */
+  vtkStylizeLightingPass* GetLightingPass();
+
+  /** The G-buffer pass (the sketch pass sets its channels each frame; FULL precision default). */
+  vtkStylizeGBufferPass* GetGBufferPass();
+
+  ///@{
+  /** The layer written to the output: SKETCH (default), DIRECTIONS, STROKES or TONE. */
+  vtkSetClampMacro(Layer, int, SKETCH, TONE);
+  vtkGetMacro(Layer, int);
+  ///@}
+
+  ///@{
+  /** Where directions come from: SCREEN (default, the per-pixel estimate) or MODEL. */
+  vtkSetClampMacro(DirectionSource, int, SCREEN, MODEL);
+  vtkGetMacro(DirectionSource, int);
+  ///@}
+
+  ///@{
+  /**
+   * The point-data array used in MODEL mode: a 3-component direction per point, taken as the
+   * direction of the smaller |curvature| (Direction then picks it, its perpendicular or the
+   * bisector). Default "PrincipalDirectionMin" (vtkStylizePrincipalCurvatures; signed minimum,
+   * the same as the smaller |curvature| wherever the surface is not a saddle with |k_min| >
+   * |k_max|). The pass maps it on each actor's vtkOpenGLPolyDataMapper that has it.
+   */
+  vtkSetStringMacro(DirectionArrayName);
+  vtkGetStringMacro(DirectionArrayName);
+  ///@}
+
+  ///@{
+  /** The direction drawn: MINIMUM, MAXIMUM (default) or BISECTOR. */
+  vtkSetClampMacro(Direction, int, MINIMUM, BISECTOR);
+  vtkGetMacro(Direction, int);
+  ///@}
+
+  ///@{
+  /**
+   * Neighbours of the focal-surface estimate: 2 (one pair, the earlier method), 4 (four pairs:
+   * enough for smooth man-made shapes) or 8 (eight pairs: organic and coarse meshes; default).
+   * Other values are rounded to the nearest of these.
+   */
+  virtual void SetNeighbors(int n);
+  vtkGetMacro(Neighbors, int);
+  ///@}
+
+  ///@{
+  /**
+   * Smallest neighbour spacing, points at the focal distance, turned into a world length:
+   * nearer the camera the pixel stride grows to keep it. Range [0.5, 64], default 2.
+   */
+  vtkSetClampMacro(NeighborSpacing, double, 0.5, 64.0);
+  vtkGetMacro(NeighborSpacing, double);
+  ///@}
+
+  ///@{
+  /** Largest neighbour stride, points. Range [1, 64], default 8. */
+  vtkSetClampMacro(MaxStride, double, 1.0, 64.0);
+  vtkGetMacro(MaxStride, double);
+  ///@}
+
+  ///@{
+  /**
+   * A pair whose larger |curvature| times the neighbour distance (the normal's turn across
+   * the pair, radians) is below this is planar and skipped. Range [0, 1], default 1e-3.
+   */
+  vtkSetClampMacro(PlanarTolerance, double, 0.0, 1.0);
+  vtkGetMacro(PlanarTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * A pixel whose fit confidence (the fitted points' alignment times their distance from the
+   * umbilic case, 0..1) is not above this is undefined and filled. Range [0, 1], default 0.05.
+   */
+  vtkSetClampMacro(UmbilicTolerance, double, 0.0, 1.0);
+  vtkGetMacro(UmbilicTolerance, double);
+  ///@}
+
+  ///@{
+  /** Sign-invariant smoothing iterations over 3x3 pixels. Range [0, 16], default 1. */
+  vtkSetClampMacro(SmoothingIterations, int, 0, 16);
+  vtkGetMacro(SmoothingIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Farthest distance (points) from which an undefined pixel takes its surface's direction;
+   * iterations at distances 1, 2, 4, ... up to it. 0 disables filling. Range [0, 512],
+   * default 16.
+   */
+  vtkSetClampMacro(FillRadius, double, 0.0, 512.0);
+  vtkGetMacro(FillRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Screen angle (degrees, counter-clockwise from +x) of the strokes on pixels with no
+   * direction and no lighting gradient. Range [-180, 180], default 45.
+   */
+  vtkSetClampMacro(FallbackAngle, double, -180.0, 180.0);
+  vtkGetMacro(FallbackAngle, double);
+  ///@}
+
+  ///@{
+  /** Stroke tracing: PERSPECTIVE (default) or SCREEN_2D (baseline). */
+  vtkSetClampMacro(LicMode, int, PERSPECTIVE, SCREEN_2D);
+  vtkGetMacro(LicMode, int);
+  ///@}
+
+  ///@{
+  /** LIC step length, points (long: soft pencil; short: hard). Range [0.1, 32], default 1.5. */
+  vtkSetClampMacro(StepLength, double, 0.1, 32.0);
+  vtkGetMacro(StepLength, double);
+  ///@}
+
+  ///@{
+  /** LIC steps on each side of a pixel. Range [1, 256], default 10. */
+  vtkSetClampMacro(Steps, int, 1, 256);
+  vtkGetMacro(Steps, int);
+  ///@}
+
+  ///@{
+  /** The noise: WHITE (default), PERLIN or WORLEY. */
+  vtkSetClampMacro(Noise, int, WHITE, WORLEY);
+  vtkGetMacro(Noise, int);
+  ///@}
+
+  ///@{
+  /** Where the noise is fixed: OBJECT (default) or SCREEN_SPACE. */
+  vtkSetClampMacro(NoiseSpace, int, OBJECT, SCREEN_SPACE);
+  vtkGetMacro(NoiseSpace, int);
+  ///@}
+
+  ///@{
+  /**
+   * Size of a noise texel, points at the focal distance (a world length; the image's pixels
+   * for SCREEN_SPACE). Range [0.1, 64], default 1.
+   */
+  vtkSetClampMacro(NoiseSize, double, 0.1, 64.0);
+  vtkGetMacro(NoiseSize, double);
+  ///@}
+
+  ///@{
+  /** Contrast of the stroke texture (0: flat tone). Range [0, 8], default 1.5. */
+  vtkSetClampMacro(StrokeContrast, double, 0.0, 8.0);
+  vtkGetMacro(StrokeContrast, double);
+  ///@}
+
+  ///@{
+  /** Cross-hatching in dark zones. Default on. */
+  vtkSetMacro(CrossHatching, bool);
+  vtkGetMacro(CrossHatching, bool);
+  vtkBooleanMacro(CrossHatching, bool);
+  ///@}
+
+  ///@{
+  /** Tone below which the cross strokes start (full 0.2 lower). Range [0, 1], default 0.4. */
+  vtkSetClampMacro(CrossThreshold, double, 0.0, 1.0);
+  vtkGetMacro(CrossThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Contrast against the blurred image: o + c (o - b). 0 disables the blur. Range [0, 4],
+   * default 0.5.
+   */
+  vtkSetClampMacro(Contrast, double, 0.0, 4.0);
+  vtkGetMacro(Contrast, double);
+  ///@}
+
+  ///@{
+  /** Radius of the large Gaussian (3 sigma), points. Range [1, 512], default 36 (73x73). */
+  vtkSetClampMacro(BlurRadius, double, 1.0, 512.0);
+  vtkGetMacro(BlurRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Blur stride k: the blur runs at 1/k of the resolution with taps k pixels apart (the paper
+   * uses 2, 4, 6). Range [1, 16], default 4.
+   */
+  vtkSetClampMacro(BlurStride, int, 1, 16);
+  vtkGetMacro(BlurStride, int);
+  ///@}
+
+  ///@{
+  /**
+   * Bright faces: tones above t1 are lifted smoothly to white, reached at t2. Each in [0, 1];
+   * t2 < t1 is raised to t1. Default (0.8, 0.95).
+   */
+  virtual void SetBrightThresholds(double t1, double t2);
+  vtkGetVector2Macro(BrightThresholds, double);
+  ///@}
+
+  ///@{
+  /** Pencil colour (RGB, each [0, 1]). Default (0.12, 0.12, 0.14), graphite. */
+  virtual void SetPencilColor(double r, double g, double b);
+  vtkGetVector3Macro(PencilColor, double);
+  ///@}
+
+  ///@{
+  /** Paper colour under the strokes (RGB, each [0, 1]). Default white. */
+  virtual void SetPaperColor(double r, double g, double b);
+  vtkGetVector3Macro(PaperColor, double);
+  ///@}
+
+  ///@{
+  /** Paper tinted by the lit colour's hue (the data's colours under the pencil). Default off. */
+  vtkSetMacro(Tinted, bool);
+  vtkGetMacro(Tinted, bool);
+  vtkBooleanMacro(Tinted, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Height (pixels) of the image in which one point is one pixel. Range [1, 1e5], default 1080.
+   */
+  vtkSetClampMacro(ReferenceHeight, double, 1.0, 1.0e5);
+  vtkGetMacro(ReferenceHeight, double);
+  ///@}
+
+  /**
+   * Reads the last frame's resolved direction field back: 4 floats per pixel (view-space unit
+   * direction, then the linear depth; all 0 where there is no surface), rows bottom to top.
+   * The window's context must be current, as it is right after a render.
+   */
+  bool DownloadDirections(vtkFloatArray* out);
+
+  /**
+   * The tileable noise texture of a kind, size^3 values in [0, 1] (x fastest): WHITE (uniform
+   * per texel), PERLIN (gradient noise, lattice period 8 texels), WORLEY (distance to the
+   * nearest feature point, one per 8^3 cell). size is clamped to [8, 128] and made a multiple
+   * of 8. The pass uses size 64.
+   */
+  static void GenerateNoise(int kind, int size, vtkFloatArray* out);
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+protected:
+  vtkSketchPass();
+  ~vtkSketchPass() override;
+
+  int Layer = SKETCH;
+  int DirectionSource = SCREEN;
+  char* DirectionArrayName = nullptr;
+  int Direction = MAXIMUM;
+  int Neighbors = 8;
+  double NeighborSpacing = 2.0;
+  double MaxStride = 8.0;
+  double PlanarTolerance = 1.0e-3;
+  double UmbilicTolerance = 0.05;
+  int SmoothingIterations = 1;
+  double FillRadius = 16.0;
+  double FallbackAngle = 45.0;
+  int LicMode = PERSPECTIVE;
+  double StepLength = 1.5;
+  int Steps = 10;
+  int Noise = WHITE;
+  int NoiseSpace = OBJECT;
+  double NoiseSize = 1.0;
+  double StrokeContrast = 1.5;
+  bool CrossHatching = true;
+  double CrossThreshold = 0.4;
+  double Contrast = 0.5;
+  double BlurRadius = 36.0;
+  int BlurStride = 4;
+  double BrightThresholds[2] = { 0.8, 0.95 };
+  double PencilColor[3] = { 0.12, 0.12, 0.14 };
+  double PaperColor[3] = { 1.0, 1.0, 1.0 };
+  bool Tinted = false;
+  double ReferenceHeight = 1080.0;
+
+private:
+  vtkSketchPass(const vtkSketchPass&) = delete;
+  void operator=(const vtkSketchPass&) = delete;
+
+  void MapDirectionArrays(vtkRenderer* ren);
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif
