@@ -23,6 +23,7 @@
 
 #include "vtkComicPass.h"
 #include "vtkPixelArtPass.h"
+#include "vtkSketchPass.h"
 #include "vtkStylizeDemoScene.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
@@ -76,6 +77,7 @@
 #include <new>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -251,6 +253,11 @@ struct StyleSettings
 {
   std::vector<std::function<void(vtkComicPass*)>> Comic;
   std::vector<std::function<void(vtkPixelArtPass*)>> Pixel;
+  std::vector<std::function<void(vtkSketchPass*)>> Sketch;
+  // --reference-height 0 for the sketch pass: one point is one window pixel (the pass itself
+  // needs a height of at least 1, so it gets WindowHeight, set before the pass is built).
+  bool SketchWindowPoints = false;
+  int WindowHeight = 0;
 };
 
 /**
@@ -306,6 +313,24 @@ const std::vector<StyleSpec>& Styles()
         }
         return pixel;
       } },
+    { "sketch",
+      "pencil sketch: principal-direction strokes (line integral convolution of solid noise), "
+      "pencil tone (vtkSketchPass)",
+      vtkStylizeLightingPass::STANDARD,
+      [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
+        const StyleSettings& settings) -> vtkSmartPointer<vtkRenderPass> {
+        auto sketch = vtkSmartPointer<vtkSketchPass>::New();
+        CopyLighting(lighting, sketch->GetLightingPass());
+        for (const auto& apply : settings.Sketch)
+        {
+          apply(sketch);
+        }
+        if (settings.SketchWindowPoints && settings.WindowHeight > 0)
+        {
+          sketch->SetReferenceHeight(settings.WindowHeight);
+        }
+        return sketch;
+      } },
   };
   return styles;
 }
@@ -347,6 +372,7 @@ struct Options
   LightingSettings Lighting;
   bool LightingModelGiven = false;
   StyleSettings StyleOptions;
+  bool ModelDirections = false; // --direction-source model: compute the principal directions
   int Magnify = 1;
   bool GBuffer = false;
   std::optional<double> IsoValue;
@@ -478,6 +504,10 @@ std::vector<std::function<void(vtkPixelArtPass*)>>& SettingsOf(StyleSettings& s,
 {
   return s.Pixel;
 }
+std::vector<std::function<void(vtkSketchPass*)>>& SettingsOf(StyleSettings& s, vtkSketchPass*)
+{
+  return s.Sketch;
+}
 
 /** Adds numeric options; `d` is a default-constructed pass (ranges and defaults for --help). */
 template <class Pass, class T, size_t N>
@@ -531,6 +561,71 @@ void AddFlagOptions(std::vector<OptionSpec>& t, const PassFlag<Pass> (&flags)[N]
                      .push_back([set, value](Pass* p) { (p->*set)(value); });
                  } });
   }
+}
+
+/** A keyword option of a style pass: each accepted keyword (case-insensitive) and its setting. */
+template <class Pass>
+struct PassKeyword
+{
+  const char* Name;
+  const char* Argument;
+  const char* Help;
+  std::vector<std::pair<const char*, std::function<void(Pass*)>>> Values;
+};
+
+/** Adds keyword options; any other value is a usage error that lists the accepted ones. */
+template <class Pass, size_t N>
+void AddKeywordOptions(std::vector<OptionSpec>& t, const PassKeyword<Pass> (&keywords)[N])
+{
+  for (const auto& k : keywords)
+  {
+    const std::string name = k.Name;
+    const auto values = k.Values;
+    t.push_back({ name, k.Argument, k.Help, [name, values](Options& opt, const std::string& v) {
+                   std::string known;
+                   for (const auto& value : values)
+                   {
+                     if (Lower(v) == value.first)
+                     {
+                       SettingsOf(opt.StyleOptions, static_cast<Pass*>(nullptr))
+                         .push_back(value.second);
+                       return;
+                     }
+                     known += (known.empty() ? "" : ", ") + std::string(value.first);
+                   }
+                   UsageError("unknown value " + Quote(v) + " for " + name + " (expected " +
+                     known + ")");
+                 } });
+  }
+}
+
+/** The option of the table with this name (it must exist). */
+OptionSpec& FindOption(std::vector<OptionSpec>& t, const std::string& name)
+{
+  for (OptionSpec& o : t)
+  {
+    if (o.Name == name)
+    {
+      return o;
+    }
+  }
+  throw std::logic_error("no option " + name);
+}
+
+/**
+ * Makes an existing option also do `also` (after its own action, which validates the value
+ * first) and appends `help` to its help text: options shared by several styles.
+ */
+void ExtendOption(std::vector<OptionSpec>& t, const std::string& name, const std::string& help,
+  std::function<void(Options&, const std::string&)> also)
+{
+  OptionSpec& o = FindOption(t, name);
+  auto first = o.Apply;
+  o.Help += help;
+  o.Apply = [first, also](Options& opt, const std::string& v) {
+    first(opt, v);
+    also(opt, v);
+  };
 }
 
 /**
@@ -707,15 +802,7 @@ void AddPixelOptions(std::vector<OptionSpec>& t)
       &P::SetColormapShades },
   };
   AddNumberOptions(t, d.Get(), integers);
-  // Keyword options.
-  struct Keyword
-  {
-    const char* Name;
-    const char* Argument;
-    const char* Help;
-    std::vector<std::pair<const char*, std::function<void(P*)>>> Values;
-  };
-  const Keyword keywords[] = {
+  const PassKeyword<P> keywords[] = {
     { "--mode", "fast|faithful",
       "pixel: render at the art-pixel resolution (fast) or at full resolution and average each "
       "block (faithful) (default: faithful)",
@@ -749,25 +836,7 @@ void AddPixelOptions(std::vector<OptionSpec>& t)
         { "pixelated", [](P* p) { p->SetLayer(P::PIXELATED); } },
         { "edges", [](P* p) { p->SetLayer(P::EDGES); } } } },
   };
-  for (const Keyword& k : keywords)
-  {
-    const std::string name = k.Name;
-    const auto values = k.Values;
-    t.push_back({ name, k.Argument, k.Help, [name, values](Options& opt, const std::string& v) {
-                   std::string known;
-                   for (const auto& value : values)
-                   {
-                     if (Lower(v) == value.first)
-                     {
-                       opt.StyleOptions.Pixel.push_back(value.second);
-                       return;
-                     }
-                     known += (known.empty() ? "" : ", ") + std::string(value.first);
-                   }
-                   UsageError("unknown value " + Quote(v) + " for " + name + " (expected " +
-                     known + ")");
-                 } });
-  }
+  AddKeywordOptions(t, keywords);
   t.push_back({ "--outline", "COLOR",
     "pixel: outline colour, R,G,B in [0, 1] or #rrggbb (default: 0,0,0)",
     [](Options& opt, const std::string& v) {
@@ -850,6 +919,192 @@ void AddPixelOptions(std::vector<OptionSpec>& t)
       };
     }
   }
+}
+
+/** "R,G,B" of a colour, for --help. */
+std::string FormatColor(const double c[3])
+{
+  return FormatNumber(c[0]) + "," + FormatNumber(c[1]) + "," + FormatNumber(c[2]);
+}
+
+/**
+ * The sketch options. Ranges and defaults come from vtkSketchPass itself, as for comic.
+ * --cross-threshold, --reference-height, --no-cross and --tinted (comic options) also set the
+ * sketch pass. --direction-source model also makes the program compute the principal
+ * directions of the surfaces (vtkStylizePrincipalCurvatures).
+ */
+void AddSketchOptions(std::vector<OptionSpec>& t)
+{
+  vtkNew<vtkSketchPass> d;
+  using P = vtkSketchPass;
+  t.push_back({ "--neighbors", "2|4|8",
+    "sketch: neighbours of the per-pixel principal-direction estimate: 2 (one pair), 4 (smooth "
+    "man-made shapes) or 8 (organic and coarse meshes) (default: " +
+      std::to_string(d->GetNeighbors()) + ")",
+    [](Options& opt, const std::string& v) {
+      long n = 0;
+      if (!ParseInt(v, n) || (n != 2 && n != 4 && n != 8))
+      {
+        UsageError("invalid value " + Quote(v) + " for --neighbors: expected 2, 4 or 8");
+      }
+      opt.StyleOptions.Sketch.push_back([n](P* p) { p->SetNeighbors(static_cast<int>(n)); });
+    } });
+  const PassNumber<P, double> numbers[] = {
+    { "--neighbor-spacing", "PT",
+      "sketch: smallest distance between the estimate's neighbours, points at the focal "
+      "distance (the stride grows near the camera)",
+      &P::GetNeighborSpacing, &P::GetNeighborSpacingMinValue, &P::GetNeighborSpacingMaxValue,
+      &P::SetNeighborSpacing },
+    { "--max-stride", "PT", "sketch: largest neighbour stride in points", &P::GetMaxStride,
+      &P::GetMaxStrideMinValue, &P::GetMaxStrideMaxValue, &P::SetMaxStride },
+    { "--planar-tolerance", "T",
+      "sketch: neighbour pairs whose normal turns less than this (radians) are planar and "
+      "skipped",
+      &P::GetPlanarTolerance, &P::GetPlanarToleranceMinValue, &P::GetPlanarToleranceMaxValue,
+      &P::SetPlanarTolerance },
+    { "--umbilic-tolerance", "T",
+      "sketch: pixels whose fit confidence is not above this have no direction and are filled",
+      &P::GetUmbilicTolerance, &P::GetUmbilicToleranceMinValue, &P::GetUmbilicToleranceMaxValue,
+      &P::SetUmbilicTolerance },
+    { "--fill-radius", "PT",
+      "sketch: farthest distance in points from which a pixel without a direction takes its "
+      "surface's direction, 0 = no filling",
+      &P::GetFillRadius, &P::GetFillRadiusMinValue, &P::GetFillRadiusMaxValue,
+      &P::SetFillRadius },
+    { "--fallback-angle", "DEG",
+      "sketch: screen angle of the strokes where no direction and no lighting gradient exist",
+      &P::GetFallbackAngle, &P::GetFallbackAngleMinValue, &P::GetFallbackAngleMaxValue,
+      &P::SetFallbackAngle },
+    { "--step-length", "PT", "sketch: stroke step length in points (long: soft pencil)",
+      &P::GetStepLength, &P::GetStepLengthMinValue, &P::GetStepLengthMaxValue,
+      &P::SetStepLength },
+    { "--noise-size", "PT", "sketch: size of a noise texel in points at the focal distance",
+      &P::GetNoiseSize, &P::GetNoiseSizeMinValue, &P::GetNoiseSizeMaxValue, &P::SetNoiseSize },
+    { "--stroke-contrast", "C", "sketch: contrast of the strokes, 0 = flat tone",
+      &P::GetStrokeContrast, &P::GetStrokeContrastMinValue, &P::GetStrokeContrastMaxValue,
+      &P::SetStrokeContrast },
+    { "--contrast", "C",
+      "sketch: tone contrast against its blur, o + c (o - b), 0 = no blur", &P::GetContrast,
+      &P::GetContrastMinValue, &P::GetContrastMaxValue, &P::SetContrast },
+    { "--blur-radius", "PT", "sketch: radius (3 sigma) of the contrast blur in points",
+      &P::GetBlurRadius, &P::GetBlurRadiusMinValue, &P::GetBlurRadiusMaxValue,
+      &P::SetBlurRadius },
+  };
+  AddNumberOptions(t, d.Get(), numbers);
+  const PassNumber<P, int> integers[] = {
+    { "--smoothing", "N", "sketch: direction smoothing iterations over 3x3 pixels",
+      &P::GetSmoothingIterations, &P::GetSmoothingIterationsMinValue,
+      &P::GetSmoothingIterationsMaxValue, &P::SetSmoothingIterations },
+    { "--steps", "N", "sketch: stroke steps on each side of a pixel", &P::GetSteps,
+      &P::GetStepsMinValue, &P::GetStepsMaxValue, &P::SetSteps },
+    { "--blur-stride", "K",
+      "sketch: the contrast blur runs at 1/K of the resolution with taps K pixels apart",
+      &P::GetBlurStride, &P::GetBlurStrideMinValue, &P::GetBlurStrideMaxValue,
+      &P::SetBlurStride },
+  };
+  AddNumberOptions(t, d.Get(), integers);
+  const PassKeyword<P> keywords[] = {
+    { "--direction-source", "screen|model",
+      "sketch: principal directions estimated per pixel on the screen, or the data's own "
+      "(model: computed for the surfaces by vtkStylizePrincipalCurvatures; the screen estimate "
+      "where they are missing) (default: screen)",
+      { { "screen", [](P* p) { p->SetDirectionSource(P::SCREEN); } },
+        { "model", [](P* p) { p->SetDirectionSource(P::MODEL); } } } },
+    { "--direction", "minimum|maximum|bisector",
+      "sketch: strokes along the principal direction of the smaller or larger |curvature|, or "
+      "halfway between them (default: maximum)",
+      { { "minimum", [](P* p) { p->SetDirection(P::MINIMUM); } },
+        { "maximum", [](P* p) { p->SetDirection(P::MAXIMUM); } },
+        { "bisector", [](P* p) { p->SetDirection(P::BISECTOR); } } } },
+    { "--noise", "white|perlin|worley",
+      "sketch: noise convolved along the strokes: hard, medium or soft pencil (default: white)",
+      { { "white", [](P* p) { p->SetNoise(P::WHITE); } },
+        { "perlin", [](P* p) { p->SetNoise(P::PERLIN); } },
+        { "worley", [](P* p) { p->SetNoise(P::WORLEY); } } } },
+    { "--noise-space", "object|screen",
+      "sketch: fix the noise to the surface or to the image (strokes swim) (default: object)",
+      { { "object", [](P* p) { p->SetNoiseSpace(P::OBJECT); } },
+        { "screen", [](P* p) { p->SetNoiseSpace(P::SCREEN_SPACE); } } } },
+    { "--lic", "perspective|screen2d",
+      "sketch: strokes traced in world space and reprojected, or the classic screen-space line "
+      "integral convolution (default: perspective)",
+      { { "perspective", [](P* p) { p->SetLicMode(P::PERSPECTIVE); } },
+        { "screen2d", [](P* p) { p->SetLicMode(P::SCREEN_2D); } } } },
+    { "--sketch-layer", "sketch|directions|strokes|tone",
+      "sketch: write the sketch, the stroke directions as hues, the strokes alone, or the tone "
+      "before the strokes (default: sketch)",
+      { { "sketch", [](P* p) { p->SetLayer(P::SKETCH); } },
+        { "directions", [](P* p) { p->SetLayer(P::DIRECTIONS); } },
+        { "strokes", [](P* p) { p->SetLayer(P::STROKES); } },
+        { "tone", [](P* p) { p->SetLayer(P::TONE); } } } },
+  };
+  AddKeywordOptions(t, keywords);
+  // The program computes the principal directions only when the pass uses them.
+  ExtendOption(t, "--direction-source", "", [](Options& opt, const std::string& v) {
+    opt.ModelDirections = Lower(v) == "model";
+  });
+  const double* bright = d->GetBrightThresholds();
+  t.push_back({ "--bright-thresholds", "T1,T2",
+    "sketch: tones above T1 are lifted to white, reached at T2; each in [0, 1], T2 below T1 is "
+    "raised to T1 (default: " +
+      FormatNumber(bright[0]) + "," + FormatNumber(bright[1]) + ")",
+    [](Options& opt, const std::string& v) {
+      const auto parts = Split(v, ',');
+      if (parts.size() != 2)
+      {
+        UsageError(
+          "invalid value " + Quote(v) + " for --bright-thresholds: expected T1,T2, e.g. 0.8,0.95");
+      }
+      const double t1 = DoubleInRange("--bright-thresholds", parts[0], 0.0, 1.0);
+      const double t2 = DoubleInRange("--bright-thresholds", parts[1], 0.0, 1.0);
+      opt.StyleOptions.Sketch.push_back([t1, t2](P* p) { p->SetBrightThresholds(t1, t2); });
+    } });
+  t.push_back({ "--pencil", "COLOR",
+    "sketch: pencil colour, R,G,B in [0, 1] or #rrggbb (default: " +
+      FormatColor(d->GetPencilColor()) + ")",
+    [](Options& opt, const std::string& v) {
+      const auto c = ParseColor("--pencil", v);
+      opt.StyleOptions.Sketch.push_back([c](P* p) { p->SetPencilColor(c[0], c[1], c[2]); });
+    } });
+  t.push_back({ "--paper", "COLOR",
+    "sketch: paper colour, R,G,B in [0, 1] or #rrggbb (default: " +
+      FormatColor(d->GetPaperColor()) + ")",
+    [](Options& opt, const std::string& v) {
+      const auto c = ParseColor("--paper", v);
+      opt.StyleOptions.Sketch.push_back([c](P* p) { p->SetPaperColor(c[0], c[1], c[2]); });
+    } });
+
+  // Comic options that also set the sketch pass.
+  ExtendOption(t, "--cross-threshold",
+    "; sketch: tone below which the cross strokes start (default: " +
+      FormatNumber(d->GetCrossThreshold()) + ")",
+    [lo = d->GetCrossThresholdMinValue(), hi = d->GetCrossThresholdMaxValue()](
+      Options& opt, const std::string& v) {
+      const double value = DoubleInRange("--cross-threshold", v, lo, hi);
+      opt.StyleOptions.Sketch.push_back([value](P* p) { p->SetCrossThreshold(value); });
+    });
+  ExtendOption(t, "--reference-height",
+    "; sketch: the same (0: window pixels; other values below " +
+      FormatNumber(d->GetReferenceHeightMinValue()) + " count as " +
+      FormatNumber(d->GetReferenceHeightMinValue()) + ") (default: " +
+      FormatNumber(d->GetReferenceHeight()) + ")",
+    [](Options& opt, const std::string& v) {
+      double value = 0;
+      ParseDouble(v, value); // validated by the comic option
+      opt.StyleOptions.SketchWindowPoints = value == 0.0;
+      if (value != 0.0)
+      {
+        opt.StyleOptions.Sketch.push_back([value](P* p) { p->SetReferenceHeight(value); });
+      }
+    });
+  ExtendOption(t, "--no-cross", "; sketch: no cross strokes in dark zones (default: crossed)",
+    [](Options& opt, const std::string&) {
+      opt.StyleOptions.Sketch.push_back([](P* p) { p->SetCrossHatching(false); });
+    });
+  ExtendOption(t, "--tinted", "; sketch: paper tinted by the lit colour's hue (default: off)",
+    [](Options& opt, const std::string&) {
+      opt.StyleOptions.Sketch.push_back([](P* p) { p->SetTinted(true); });
+    });
 }
 
 std::vector<OptionSpec> OptionTable(const LightingSettings& d)
@@ -993,6 +1248,7 @@ std::vector<OptionSpec> OptionTable(const LightingSettings& d)
     [](Options& opt, const std::string&) { opt.GBuffer = true; } });
   AddComicOptions(t);
   AddPixelOptions(t);
+  AddSketchOptions(t);
   t.push_back({ "--magnify", "N",
     "write an image N times the window size, rendered in N x N tiles (vtkWindowToImageFilter "
     "scale), [1, " + std::to_string(MaxMagnify) + "] (default: 1)",
@@ -1707,6 +1963,10 @@ int Run(int argc, char* argv[])
     info.Title = BaseName(opt.Input);
   }
   FinishParts(parts, what);
+  if (opt.ModelDirections && opt.Style == "sketch")
+  {
+    AddPrincipalDirections(parts, what);
+  }
 
   // Scene.
   vtkNew<vtkRenderer> ren;
@@ -1736,6 +1996,7 @@ int Run(int argc, char* argv[])
     gbuffer = vtkSmartPointer<vtkStylizeGBufferPass>::New();
     gbuffer->SetLightingPass(lighting);
   }
+  opt.StyleOptions.WindowHeight = opt.Height;
   ren->SetPass(style->MakePass(lighting, gbuffer, opt.StyleOptions));
 
   RenderAndWrite(window, opt);

@@ -29,6 +29,7 @@
 #include "vtkPolyDataNormals.h"
 #include "vtkRectilinearGrid.h"
 #include "vtkSTLReader.h"
+#include "vtkStylizePrincipalCurvatures.h"
 #include "vtkStructuredGrid.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -572,5 +573,21 @@ void FinishParts(std::vector<Part>& parts, const std::string& what)
   }
   CheckVTKErrors(what + ": computing normals failed");
   parts = kept;
+}
+
+void AddPrincipalDirections(std::vector<Part>& parts, const std::string& what)
+{
+  ClearVTKErrors();
+  for (Part& p : parts)
+  {
+    if (p.Surface->GetNumberOfPolys() > 0 || p.Surface->GetNumberOfStrips() > 0)
+    {
+      vtkNew<vtkStylizePrincipalCurvatures> curvatures;
+      curvatures->SetInputData(p.Surface);
+      curvatures->Update();
+      p.Surface = curvatures->GetOutput();
+    }
+  }
+  CheckVTKErrors(what + ": computing the principal curvatures failed");
 }
 } // namespace vtkstylize

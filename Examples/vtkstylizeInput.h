@@ -51,6 +51,13 @@ void CollectParts(vtkDataObject* data, const std::optional<double>& isoValue,
  * normals for the surfaces that have none.
  */
 void FinishParts(std::vector<Part>& parts, const std::string& what);
+
+/**
+ * Adds the principal curvatures and directions (vtkStylizePrincipalCurvatures: point arrays
+ * "PrincipalDirectionMin" and the others) to every part that has polygons or strips, for the
+ * sketch pass's model-space directions. Parts of lines or vertices are left as they are.
+ */
+void AddPrincipalDirections(std::vector<Part>& parts, const std::string& what);
 }
 
 #endif

@@ -519,9 +519,25 @@ void vtkSketchPass::Render(const vtkRenderState* s)
   const int w = vp[2], h = vp[3];
   const int ox = vp[0], oy = vp[1];
 
+  // The clamp macros let NaN through: a NaN setting counts as its range's minimum.
+  auto finite = [](double v, double fallback) { return std::isfinite(v) ? v : fallback; };
+  const double referenceHeight = finite(this->ReferenceHeight, this->GetReferenceHeightMinValue());
+  const double neighborSpacing = finite(this->NeighborSpacing, this->GetNeighborSpacingMinValue());
+  const double maxStrideSetting = finite(this->MaxStride, this->GetMaxStrideMinValue());
+  const double planar = finite(this->PlanarTolerance, this->GetPlanarToleranceMinValue());
+  const double umbilic = finite(this->UmbilicTolerance, this->GetUmbilicToleranceMinValue());
+  const double fillSetting = finite(this->FillRadius, this->GetFillRadiusMinValue());
+  const double fallbackAngle = finite(this->FallbackAngle, this->GetFallbackAngleMinValue());
+  const double stepLength = finite(this->StepLength, this->GetStepLengthMinValue());
+  const double noiseSize = finite(this->NoiseSize, this->GetNoiseSizeMinValue());
+  const double strokeContrast = finite(this->StrokeContrast, this->GetStrokeContrastMinValue());
+  const double crossThreshold = finite(this->CrossThreshold, this->GetCrossThresholdMinValue());
+  const double contrastSetting = finite(this->Contrast, this->GetContrastMinValue());
+  const double blurSetting = finite(this->BlurRadius, this->GetBlurRadiusMinValue());
+
   // Points -> pixels of this (possibly magnified) image; world lengths at the focal distance.
   const U::FullImage full = U::GetFullImage(ren, ox, oy);
-  const double pointSize = full.Size[1] / this->ReferenceHeight;
+  const double pointSize = full.Size[1] / referenceHeight;
   vtkCamera* cam = ren->GetActiveCamera();
   const bool parallel = cam->GetParallelProjection() != 0;
   const double pixelWorld = U::PixelWorldSize(cam, w, h);
@@ -571,14 +587,14 @@ void vtkSketchPass::Render(const vtkRenderState* s)
   vtkTextureObject* direction = gbuffer->GetDirectionTexture();
   in.EnsureNoise(renWin, this->Noise);
 
-  const int maxStride = std::max(1, static_cast<int>(std::lround(this->MaxStride * pointSize)));
-  const double spacingWorld = this->NeighborSpacing * pointSize * focalPixel;
+  const int maxStride = std::max(1, static_cast<int>(std::lround(maxStrideSetting * pointSize)));
+  const double spacingWorld = neighborSpacing * pointSize * focalPixel;
   const int blurStride = this->BlurStride;
   const int blurW = (w + blurStride - 1) / blurStride, blurH = (h + blurStride - 1) / blurStride;
-  const double blurRadius = this->BlurRadius * pointSize;
+  const double blurRadius = blurSetting * pointSize;
   const double noiseUnit =
-    objectNoise ? this->NoiseSize * pointSize * focalPixel : this->NoiseSize * pointSize;
-  const double fallback = vtkMath::RadiansFromDegrees(this->FallbackAngle);
+    objectNoise ? noiseSize * pointSize * focalPixel : noiseSize * pointSize;
+  const double fallback = vtkMath::RadiansFromDegrees(fallbackAngle);
 
   auto setCommon = [&](U::Uniforms& u) {
     u.Texture("stylizeColorTexture", colour)
@@ -642,8 +658,8 @@ void vtkSketchPass::Render(const vtkRenderState* s)
   stage(in.EstimateQuad, 0, in.Field[0], w, h, [&](U::Uniforms& u) {
     u.Float("sketchSpacing", spacingWorld)
       .Int("sketchMaxStride", maxStride)
-      .Float("sketchPlanar", this->PlanarTolerance)
-      .Float("sketchUmbilic", this->UmbilicTolerance);
+      .Float("sketchPlanar", planar)
+      .Float("sketchUmbilic", umbilic);
   });
   int current = 0;
 
@@ -653,8 +669,8 @@ void vtkSketchPass::Render(const vtkRenderState* s)
   {
     iterations.emplace_back(1, 0);
   }
-  const double fillRadius = this->FillRadius * pointSize;
-  for (int r = 1; this->FillRadius > 0.0 && r <= std::max(1.0, fillRadius); r *= 2)
+  const double fillRadius = fillSetting * pointSize;
+  for (int r = 1; fillSetting > 0.0 && r <= std::max(1.0, fillRadius); r *= 2)
   {
     iterations.emplace_back(r, 1);
   }
@@ -722,12 +738,12 @@ void vtkSketchPass::Render(const vtkRenderState* s)
       .Texture("sketchNoise", in.NoiseTexture)
       .Float2("sketchNoiseStats", in.NoiseStats[0], in.NoiseStats[1])
       .Float("sketchNoiseScale", 1.0 / (noiseUnit * NoiseTextureSize))
-      .Float("sketchStepPixels", this->StepLength * pointSize)
+      .Float("sketchStepPixels", stepLength * pointSize)
       .Int("sketchSteps", this->Steps)
-      .Float("sketchStrokeContrast", this->StrokeContrast)
-      .Float("sketchContrast", this->Contrast)
+      .Float("sketchStrokeContrast", strokeContrast)
+      .Float("sketchContrast", contrastSetting)
       .Float2("sketchBright", this->BrightThresholds[0], this->BrightThresholds[1])
-      .Float("sketchCross", this->CrossThreshold)
+      .Float("sketchCross", crossThreshold)
       .Float3("sketchPencil", this->PencilColor[0], this->PencilColor[1], this->PencilColor[2])
       .Float3("sketchPaper", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2])
       .Int("sketchDiscardBackground", ren->Transparent() ? 1 : 0);

@@ -43,7 +43,7 @@
  *
  * Lengths (step, noise cell, neighbour spacing, blur radius, fill radius) are in points: 1 point
  * is one pixel of an image ReferenceHeight pixels tall; world lengths are taken at the camera's
- * focal distance. A magnified screenshot shows the same picture at higher detail (the blur and
+ * focal distance. A NaN setting counts as its range's minimum. A magnified screenshot shows the same picture at higher detail (the blur and
  * the strokes stop at tile borders).
  *
  * @sa vtkStylizeGBufferPass vtkStylizeLightingPass vtkStylizePrincipalCurvatures

@@ -22,6 +22,9 @@ int TestPixelArtFidelity(int argc, char* argv[]);
 int TestPixelArtMagnify(int argc, char* argv[]);
 int TestPixelArtExtremes(int argc, char* argv[]);
 int TestPrincipalCurvatures(int argc, char* argv[]);
+int TestSketchRegression(int argc, char* argv[]);
+int TestSketchNoise(int argc, char* argv[]);
+int TestSketchExtremes(int argc, char* argv[]);
 
 namespace
 {
@@ -51,6 +54,9 @@ const Entry Tests[] = {
   { "TestPixelArtMagnify", TestPixelArtMagnify },
   { "TestPixelArtExtremes", TestPixelArtExtremes },
   { "TestPrincipalCurvatures", TestPrincipalCurvatures },
+  { "TestSketchRegression", TestSketchRegression },
+  { "TestSketchNoise", TestSketchNoise },
+  { "TestSketchExtremes", TestSketchExtremes },
 };
 }
 
