@@ -19,5 +19,8 @@ done
 "$STYLIZE" --style pixel --size 1280x720 --output "$OUT/demo-pixel.png"
 "$STYLIZE" --style pixel --mode fast --palette 16 --size 1280x720 --output "$OUT/demo-pixel-16.png"
 "$STYLIZE" --style pixel --palette 1bit --size 1280x720 --output "$OUT/demo-pixel-1bit.png"
+"$STYLIZE" --style sketch --size 1280x720 --output "$OUT/demo-sketch.png"
+"$STYLIZE" --style sketch --noise perlin --direction bisector --size 1280x720 --output "$OUT/demo-sketch-perlin.png"
+"$STYLIZE" --style sketch --sketch-layer directions --size 1280x720 --output "$OUT/demo-sketch-directions.png"
 echo "== done: the images are in $OUT"
 ls -1 "$OUT"/*.png

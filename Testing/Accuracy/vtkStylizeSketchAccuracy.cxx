@@ -406,6 +406,11 @@ int main(int argc, char* argv[])
           std::printf("FAIL: torus median %.2f > 5 degrees\n", r.Median);
           ++failures;
         }
+        if (check && c.Source == vtkSketchPass::MODEL && !(r.Median <= 1.0))
+        {
+          std::printf("FAIL: model-space median %.2f > 1 degree\n", r.Median);
+          ++failures;
+        }
       }
     }
   }

@@ -10,6 +10,7 @@
 #include "vtkCamera.h"
 #include "vtkComicPass.h"
 #include "vtkPixelArtPass.h"
+#include "vtkSketchPass.h"
 #include "vtkEDLShading.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -74,7 +75,8 @@ const std::vector<std::string>& AllConfigs()
   static const std::vector<std::string> configs = { "plain", "sobel", "ssao", "edl",
     "light-standard", "light-comic", "light-pixelart", "gbuf-standard", "gbuf-comic",
     "gbuf-pixelart", "gbuf-standard-color", "gbuf-comic-lin", "comic", "comic-geometric", "pixel-fast-2",
-    "pixel-fast-4", "pixel-fast-8", "pixel-faithful-2", "pixel-faithful-4", "pixel-faithful-8" };
+    "pixel-fast-4", "pixel-fast-8", "pixel-faithful-2", "pixel-faithful-4", "pixel-faithful-8", "sketch-2", "sketch-4", "sketch-8",
+    "sketch-8-stage" };
   return configs;
 }
 
@@ -473,6 +475,30 @@ ConfigPasses MakeConfig(const std::string& name, double diagonal)
     c.Description = "vtkPixelArtPass, " + mode + " pixelation, art pixel " +
       std::to_string(std::max(1, size)) + " px, defaults (Canny + depth edges, 4 levels, dither)";
   }
+  else if (name == "sketch-8-stage")
+  {
+    // The sketch pass's own G-buffer alone (standard lighting, full precision, normals, linear
+    // depth and object positions): sketch-8 minus this is the screen-space sketch stage.
+    auto gbuf = vtkSmartPointer<vtkStylizeGBufferPass>::New();
+    gbuf->SetLightingPass(lighting("standard"));
+    gbuf->SetPrecision(vtkStylizeGBufferPass::FULL);
+    gbuf->SetPositionSpace(vtkStylizeGBufferPass::OBJECT);
+    gbuf->SetChannels(vtkStylizeGBufferPass::NORMAL | vtkStylizeGBufferPass::POSITION |
+      vtkStylizeGBufferPass::LINEAR_DEPTH);
+    c.Root = gbuf;
+    c.Description = "the G-buffer vtkSketchPass renders (standard lighting, full precision, "
+                    "normal, object position, linear depth), composited";
+  }
+  else if (name.rfind("sketch-", 0) == 0)
+  {
+    // sketch-N: vtkSketchPass with its defaults (10 LIC steps, white noise, cross-hatching,
+    // contrast with blur stride 4) and N neighbours.
+    auto sketch = vtkSmartPointer<vtkSketchPass>::New();
+    sketch->SetNeighbors(std::atoi(name.c_str() + 7));
+    c.Root = sketch;
+    c.Description = "vtkSketchPass, " + std::to_string(sketch->GetNeighbors()) +
+      " neighbours, defaults (10 LIC steps each side, white noise, cross-hatching, blur stride 4)";
+  }
   else if (name.rfind("gbuf-", 0) == 0)
   {
     const bool colorOnly = name == "gbuf-standard-color";
@@ -708,6 +734,36 @@ public:
         os << "- sphere " << sc.Name << ", " << n << " light(s): pixel-fast-4 / plain = "
            << Fixed(this->MedianOf(sc.Name, n, "pixel-fast-4") / this->MedianOf(sc.Name, n, "plain"), 2)
            << "\n";
+      }
+    }
+
+    // Sketch: the target against SSAO.
+    if (hasPlain && has("ssao") && has("sketch-8"))
+    {
+      os << "\n### Sketch against SSAO: added cost per frame (ms)\n\n";
+      os << "Added = configuration − plain. Target: sketch-8 (8 neighbours, 10 LIC steps) adds at "
+            "most 0.75 × what ssao adds. sketch-8 − sketch-8-stage is the screen-space sketch stage "
+            "over its own G-buffer.\n\n";
+      os << "| scene | lights | ssao added | sketch-2 added | sketch-4 added | sketch-8 added | "
+            "sketch-8 stage | sketch-8 added / ssao added |\n";
+      os << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+      for (const auto& sc : this->Opt.Scenes)
+      {
+        for (int n : this->Opt.Lights)
+        {
+          const double plain = this->MedianOf(sc.Name, n, "plain");
+          const double ssao = this->MedianOf(sc.Name, n, "ssao") - plain;
+          auto added = [&](const char* config) {
+            return has(config) ? this->MedianOf(sc.Name, n, config) - plain : NAN;
+          };
+          const double stage = has("sketch-8-stage")
+            ? this->MedianOf(sc.Name, n, "sketch-8") - this->MedianOf(sc.Name, n, "sketch-8-stage")
+            : NAN;
+          os << "| sphere " << sc.Name << " | " << n << " | " << Fixed(ssao, 1) << " | "
+             << Fixed(added("sketch-2"), 1) << " | " << Fixed(added("sketch-4"), 1) << " | "
+             << Fixed(added("sketch-8"), 1) << " | " << Fixed(stage, 1) << " | "
+             << Fixed(added("sketch-8") / ssao, 2) << " |\n";
+        }
       }
     }
 

@@ -78,8 +78,10 @@ check(vtkstylize.vtkStylizeImageMetrics.MaximumDifference(plain, comic) > 10,
       "comic looks like standard")
 
 
-def render_style(style_pass, colour=None):
-    """A 200x150 sphere on white through style_pass; returns the image's scalars."""
+def render_style(style_pass, colour=None, inspect=None):
+    """A 200x150 sphere on white through style_pass; returns the image's scalars.
+
+    inspect(), when given, runs after the render while the window's context is alive."""
     win = vtkRenderWindow()
     win.SetSize(200, 150)
     win.SetMultiSamples(0)
@@ -106,6 +108,8 @@ def render_style(style_pass, colour=None):
     w2i.ReadFrontBufferOff()
     w2i.Update()
     scalars = w2i.GetOutput().GetPointData().GetScalars()
+    if inspect:
+        inspect()
     win.Finalize()
     return scalars
 
@@ -165,5 +169,35 @@ palette = P.GetPalette16()
 allowed = {tuple(float(round(255 * palette[3 * i + c])) for c in range(3)) for i in range(16)}
 allowed.add((255.0, 255.0, 255.0))  # the background is not quantized
 check(colours16 <= allowed, "16-colour output leaves the palette: %s" % (colours16 - allowed))
+
+# The sketch pass: settings clamp, the layers render, pencil strokes are gray levels between the
+# pencil and the paper, and the direction field has a unit direction on every surface pixel.
+S = vtkstylize.vtkSketchPass
+sketch_pass = S()
+sketch_pass.SetNeighbors(7)
+check(sketch_pass.GetNeighbors() == 8, "neighbours do not snap to 2, 4, 8")
+sketch_pass.SetSteps(100000)
+check(sketch_pass.GetSteps() == 256, "steps are not clamped")
+sketch_pass.SetSteps(10)
+sketch_pass.SetNoise(S.PERLIN)
+field = vtkFloatArray()
+downloaded = []
+scalars = render_style(sketch_pass, inspect=lambda: downloaded.append(
+    sketch_pass.DownloadDirections(field)))
+grays = [scalars.GetTuple3(i) for i in range(scalars.GetNumberOfTuples())]
+ink = sum(1 for c in grays if c[0] < 200)
+print("sketch: %d pixels darker than 200 of %d" % (ink, len(grays)))
+check(ink > 300, "sketch: no pencil strokes (%d dark pixels)" % ink)
+check(all(abs(c[0] - c[2]) < 12 for c in grays), "sketch: pencil output is not gray")
+check(downloaded == [True], "sketch: direction download")
+surface = [field.GetTuple4(i) for i in range(field.GetNumberOfTuples())
+           if field.GetTuple4(i)[3] > 0]
+bad = sum(1 for v in surface if abs(v[0] ** 2 + v[1] ** 2 + v[2] ** 2 - 1.0) > 1e-2)
+check(len(surface) > 1000 and bad == 0,
+      "sketch: %d of %d surface pixels without a unit direction" % (bad, len(surface)))
+for layer in (S.DIRECTIONS, S.STROKES, S.TONE):
+    layered = S()
+    layered.SetLayer(layer)
+    render_style(layered)
 
 sys.exit(1 if failures else 0)
