@@ -247,6 +247,33 @@ void vtkSketchPass::GenerateNoise(int kind, int size, vtkFloatArray* out)
   auto wrap = [&](int i) { return ((i % cells) + cells) % cells; };
   auto cellIndex = [&](int i, int j, int k) { return (wrap(k) * cells + wrap(j)) * cells + wrap(i); };
 
+  // Evaluates value(p, c) at every texel centre p (in lattice cells; c = floor(p)), then scales
+  // the values linearly to [0, 1].
+  auto fill = [&](const std::function<double(const double*, const int*)>& value) {
+    std::vector<double> raw(static_cast<size_t>(total));
+    for (int z = 0; z < size; ++z)
+    {
+      for (int y = 0; y < size; ++y)
+      {
+        for (int x = 0; x < size; ++x)
+        {
+          const double p[3] = { (x + 0.5) / NoiseCell, (y + 0.5) / NoiseCell,
+            (z + 0.5) / NoiseCell };
+          const int c[3] = { static_cast<int>(std::floor(p[0])),
+            static_cast<int>(std::floor(p[1])), static_cast<int>(std::floor(p[2])) };
+          raw[(static_cast<size_t>(z) * size + y) * size + x] = value(p, c);
+        }
+      }
+    }
+    const auto range = std::minmax_element(raw.begin(), raw.end());
+    const double lo = kind == WORLEY ? 0.0 : *range.first; // Worley: a distance, from 0
+    const double span = *range.second > lo ? *range.second - lo : 1.0;
+    for (vtkIdType i = 0; i < total; ++i)
+    {
+      out->SetValue(i, static_cast<float>((raw[i] - lo) / span));
+    }
+  };
+
   if (kind == PERLIN)
   {
     // Gradient noise on a lattice of period `cells`: random unit gradients, quintic fade.
@@ -267,49 +294,28 @@ void vtkSketchPass::GenerateNoise(int kind, int size, vtkFloatArray* out)
         c /= std::sqrt(l2);
       }
     }
-    std::vector<double> raw(static_cast<size_t>(total));
-    double lo = 1e30, hi = -1e30;
-    for (int z = 0; z < size; ++z)
-    {
-      for (int y = 0; y < size; ++y)
+    fill([&](const double* p, const int* c) {
+      const double f[3] = { p[0] - c[0], p[1] - c[1], p[2] - c[2] };
+      double v = 0.0;
+      for (int corner = 0; corner < 8; ++corner)
       {
-        for (int x = 0; x < size; ++x)
+        const int o[3] = { corner & 1, (corner >> 1) & 1, (corner >> 2) & 1 };
+        const auto& g = gradients[cellIndex(c[0] + o[0], c[1] + o[1], c[2] + o[2])];
+        const double dot = g[0] * (f[0] - o[0]) + g[1] * (f[1] - o[1]) + g[2] * (f[2] - o[2]);
+        double w = 1.0;
+        for (int a = 0; a < 3; ++a)
         {
-          const double p[3] = { (x + 0.5) / NoiseCell, (y + 0.5) / NoiseCell,
-            (z + 0.5) / NoiseCell };
-          const int c[3] = { static_cast<int>(std::floor(p[0])),
-            static_cast<int>(std::floor(p[1])), static_cast<int>(std::floor(p[2])) };
-          const double f[3] = { p[0] - c[0], p[1] - c[1], p[2] - c[2] };
-          double v = 0.0;
-          for (int corner = 0; corner < 8; ++corner)
-          {
-            const int o[3] = { corner & 1, (corner >> 1) & 1, (corner >> 2) & 1 };
-            const auto& g = gradients[cellIndex(c[0] + o[0], c[1] + o[1], c[2] + o[2])];
-            const double dot =
-              g[0] * (f[0] - o[0]) + g[1] * (f[1] - o[1]) + g[2] * (f[2] - o[2]);
-            double w = 1.0;
-            for (int a = 0; a < 3; ++a)
-            {
-              w *= o[a] ? Fade(f[a]) : 1.0 - Fade(f[a]);
-            }
-            v += w * dot;
-          }
-          raw[(static_cast<size_t>(z) * size + y) * size + x] = v;
-          lo = std::min(lo, v);
-          hi = std::max(hi, v);
+          w *= o[a] ? Fade(f[a]) : 1.0 - Fade(f[a]);
         }
+        v += w * dot;
       }
-    }
-    const double range = hi > lo ? hi - lo : 1.0;
-    for (vtkIdType i = 0; i < total; ++i)
-    {
-      out->SetValue(i, static_cast<float>((raw[i] - lo) / range));
-    }
+      return v;
+    });
     return;
   }
   if (kind == WORLEY)
   {
-    // Distance to the nearest feature point (one per cell, periodic), scaled to [0, 1].
+    // Distance to the nearest feature point (one per cell, periodic).
     std::vector<std::array<double, 3>> points(static_cast<size_t>(cells) * cells * cells);
     for (auto& q : points)
     {
@@ -318,42 +324,23 @@ void vtkSketchPass::GenerateNoise(int kind, int size, vtkFloatArray* out)
         c = Uniform(rng);
       }
     }
-    std::vector<double> raw(static_cast<size_t>(total));
-    double hi = 0.0;
-    for (int z = 0; z < size; ++z)
-    {
-      for (int y = 0; y < size; ++y)
+    fill([&](const double* p, const int* c) {
+      double best = 1e30;
+      for (int k = -1; k <= 1; ++k)
       {
-        for (int x = 0; x < size; ++x)
+        for (int j = -1; j <= 1; ++j)
         {
-          const double p[3] = { (x + 0.5) / NoiseCell, (y + 0.5) / NoiseCell,
-            (z + 0.5) / NoiseCell };
-          const int c[3] = { static_cast<int>(std::floor(p[0])),
-            static_cast<int>(std::floor(p[1])), static_cast<int>(std::floor(p[2])) };
-          double best = 1e30;
-          for (int k = -1; k <= 1; ++k)
+          for (int i = -1; i <= 1; ++i)
           {
-            for (int j = -1; j <= 1; ++j)
-            {
-              for (int i = -1; i <= 1; ++i)
-              {
-                const auto& q = points[cellIndex(c[0] + i, c[1] + j, c[2] + k)];
-                const double d[3] = { c[0] + i + q[0] - p[0], c[1] + j + q[1] - p[1],
-                  c[2] + k + q[2] - p[2] };
-                best = std::min(best, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-              }
-            }
+            const auto& q = points[cellIndex(c[0] + i, c[1] + j, c[2] + k)];
+            const double d[3] = { c[0] + i + q[0] - p[0], c[1] + j + q[1] - p[1],
+              c[2] + k + q[2] - p[2] };
+            best = std::min(best, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
           }
-          const double v = std::sqrt(best);
-          raw[(static_cast<size_t>(z) * size + y) * size + x] = v;
-          hi = std::max(hi, v);
         }
       }
-    }
-    for (vtkIdType i = 0; i < total; ++i)
-    {
-      out->SetValue(i, static_cast<float>(hi > 0.0 ? raw[i] / hi : 0.0));
-    }
+      return std::sqrt(best);
+    });
     return;
   }
   for (vtkIdType i = 0; i < total; ++i)

@@ -52,14 +52,6 @@ ivec2 comicTap(ivec2 p, int dx, int dy)
   return clamp(p + ivec2(dx, dy) * comicStride, ivec2(0), comicSize - 1);
 }
 
-// Sobel responses (gx, gy) of a 3x3 neighbourhood, divided by 8: the mean central difference
-// per tap. Index: 0..8 = (-1,-1) (0,-1) (1,-1) (-1,0) (0,0) (1,0) (-1,1) (0,1) (1,1).
-vec2 comicSobel(float v[9])
-{
-  float gx = (v[2] + 2.0 * v[5] + v[8]) - (v[0] + 2.0 * v[3] + v[6]);
-  float gy = (v[6] + 2.0 * v[7] + v[8]) - (v[0] + 2.0 * v[1] + v[2]);
-  return vec2(gx, gy) * 0.125;
-}
 
 float comicSobelLength(vec3 v[9])
 {
@@ -112,7 +104,7 @@ float comicDepthEdge(ivec2 p)
   {
     z[k] = (z[k] - zmin) / pixel;
   }
-  float slope = length(comicSobel(z)) / float(comicStride);
+  float slope = length(stylizeSobel(z)) / float(comicStride);
   return comicEdgeStrength(slope, comicDepthThreshold);
 }
 #endif
@@ -218,7 +210,7 @@ void comicMain()
       fn[(j + 1) * 3 + i + 1] = texelFetch(comicEdgeTexture, comicTap(p, i, j), 0).r;
     }
   }
-  float k3 = 1.0 - comicEdgeStrength(length(comicSobel(fn)), comicColorThreshold);
+  float k3 = 1.0 - comicEdgeStrength(length(stylizeSobel(fn)), comicColorThreshold);
   e = k1 * (comicEdgeWeights.x + k2 * (comicEdgeWeights.y + comicEdgeWeights.z * k3));
 #elif defined(COMIC_DEPTH_EDGES) || defined(COMIC_NORMAL_EDGES)
   vec2 k = comicGeometryEdges(p);

@@ -76,6 +76,21 @@ ivec2 sketchPixel()
   return clamp(ivec2(texCoord * vec2(sketchSize)), ivec2(0), sketchSize - 1);
 }
 
+// Linear depth d and normal n of pixel p; false on the background and on lines and points.
+bool sketchSurfaceAt(ivec2 p, out float d, out vec3 n)
+{
+  d = texelFetch(stylizeLinearDepthTexture, p, 0).r;
+  vec4 n4 = texelFetch(stylizeNormalTexture, p, 0);
+  n = n4.xyz;
+  return d > 0.0 && n4.a >= 0.5;
+}
+
+// The doubled-angle vector (x^2 - y^2, 2 x y) = |v|^2 (cos 2a, sin 2a): v and -v give the same.
+vec2 sketchDoubled(vec2 v)
+{
+  return vec2(v.x * v.x - v.y * v.y, 2.0 * v.x * v.y);
+}
+
 bool sketchInside(ivec2 q)
 {
   return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, sketchSize));
@@ -99,21 +114,21 @@ bool sketchNeighbor(ivec2 q, vec3 x, vec3 n, vec3 X, vec3 Y, out vec2 u, out vec
   {
     return false;
   }
-  float d = texelFetch(stylizeLinearDepthTexture, q, 0).r;
-  vec4 nq = texelFetch(stylizeNormalTexture, q, 0);
-  if (!(d > 0.0) || nq.a < 0.5)
+  float d;
+  vec3 nq;
+  if (!sketchSurfaceAt(q, d, nq))
   {
     return false;
   }
   vec3 dp = sketchViewPosition(vec2(q) + 0.5, d) - x;
   vec2 t = vec2(dot(dp, X), dot(dp, Y));
   float h = dot(dp, n);
-  float mz = dot(nq.xyz, n);
+  float mz = dot(nq, n);
   if (!(mz > 0.5) || !(abs(h) <= length(t)))
   {
     return false;
   }
-  m = vec2(dot(nq.xyz, X), dot(nq.xyz, Y)) / mz;
+  m = vec2(dot(nq, X), dot(nq, Y)) / mz;
   u = t - h * m;
   return true;
 }
@@ -157,22 +172,20 @@ void sketchPair(vec2 u1, vec2 m1, bool ok1, vec2 u2, vec2 m2, bool ok2, inout ve
   }
   vec2 r1 = kappa * u1 + m1;
   vec2 r2 = kappa * u2 + m2;
-  acc.xy += (vec2(r1.x * r1.x - r1.y * r1.y, 2.0 * r1.x * r1.y) +
-              vec2(r2.x * r2.x - r2.y * r2.y, 2.0 * r2.x * r2.y)) / kh2;
+  acc.xy += (sketchDoubled(r1) + sketchDoubled(r2)) / kh2;
   acc.z += 2.0;
 }
 
 void sketchMain()
 {
   ivec2 p = sketchPixel();
-  float d0 = texelFetch(stylizeLinearDepthTexture, p, 0).r;
-  vec4 n4 = texelFetch(stylizeNormalTexture, p, 0);
-  if (!(d0 > 0.0) || n4.a < 0.5)
+  float d0;
+  vec3 n;
+  if (!sketchSurfaceAt(p, d0, n))
   {
     gl_FragData[0] = vec4(0.0);
     return;
   }
-  vec3 n = n4.xyz;
 #ifdef SKETCH_MODEL
   vec4 given = texelFetch(stylizeDirectionTexture, p, 0);
   if (given.a > 0.0)
@@ -230,14 +243,13 @@ void sketchMain()
 {
   ivec2 p = sketchPixel();
   vec4 c = texelFetch(sketchInput, p, 0);
-  float d0 = texelFetch(stylizeLinearDepthTexture, p, 0).r;
-  vec4 n4 = texelFetch(stylizeNormalTexture, p, 0);
-  if (!(d0 > 0.0) || n4.a < 0.5 || (sketchFillOnly == 1 && c.w != 0.0))
+  float d0;
+  vec3 n;
+  if (!sketchSurfaceAt(p, d0, n) || (sketchFillOnly == 1 && c.w != 0.0))
   {
     gl_FragData[0] = c;
     return;
   }
-  vec3 n = n4.xyz;
   vec3 X, Y;
   sketchFrame(n, X, Y);
   vec3 x = sketchViewPosition(vec2(p) + 0.5, d0);
@@ -275,7 +287,7 @@ void sketchMain()
         continue;
       }
       float w = abs(e.w) * ((i == 0 && j == 0) ? 1.0 : 0.5);
-      acc += vec3(vec2(v.x * v.x - v.y * v.y, 2.0 * v.x * v.y) / l2, 1.0) * w;
+      acc += vec3(sketchDoubled(v) / l2, 1.0) * w;
     }
   }
   float len = length(acc.xy);
@@ -299,14 +311,13 @@ uniform vec2 sketchScreenDirection; // the last resort: a fixed screen direction
 void sketchMain()
 {
   ivec2 p = sketchPixel();
-  float d0 = texelFetch(stylizeLinearDepthTexture, p, 0).r;
-  vec4 n4 = texelFetch(stylizeNormalTexture, p, 0);
-  if (!(d0 > 0.0) || n4.a < 0.5)
+  float d0;
+  vec3 n;
+  if (!sketchSurfaceAt(p, d0, n))
   {
     gl_FragData[0] = vec4(0.0);
     return;
   }
-  vec3 n = n4.xyz;
   vec4 c = texelFetch(sketchInput, p, 0);
   vec3 e = c.xyz - n * dot(c.xyz, n);
   bool defined = c.w != 0.0 && dot(e, e) > 1e-8;
@@ -334,9 +345,8 @@ void sketchMain()
       ivec2 t = clamp(p + ivec2(b % 3 - 1, b / 3 - 1) * s, ivec2(0), sketchSize - 1);
       l[b] = b == 4 ? 0.0 : sketchLuminance(texelFetch(stylizeColorTexture, t, 0).rgb);
     }
-    vec2 g = vec2((l[2] + 2.0 * l[5] + l[8]) - (l[0] + 2.0 * l[3] + l[6]),
-      (l[6] + 2.0 * l[7] + l[8]) - (l[0] + 2.0 * l[1] + l[2]));
-    vec2 screen = dot(g, g) > 1e-8 ? normalize(vec2(-g.y, g.x)) : sketchScreenDirection;
+    vec2 g = stylizeSobel(l);
+    vec2 screen = dot(g, g) > 1e-10 ? normalize(vec2(-g.y, g.x)) : sketchScreenDirection;
     vec3 v = vec3(screen, 0.0);
     result = v - n * dot(v, n);
     if (!(dot(result, result) > 1e-8))

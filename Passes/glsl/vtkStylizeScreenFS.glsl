@@ -18,6 +18,15 @@ vec2 stylizeTriplanar(sampler2D positions, ivec2 p, ivec2 size, vec2 fallback)
   return pos.a > 0.5 ? plane : fallback;
 }
 
+// Sobel responses (gx, gy) of a 3x3 neighbourhood, divided by 8: the mean central difference
+// per tap. Index: 0..8 = (-1,-1) (0,-1) (1,-1) (-1,0) (0,0) (1,0) (-1,1) (0,1) (1,1).
+vec2 stylizeSobel(float v[9])
+{
+  float gx = (v[2] + 2.0 * v[5] + v[8]) - (v[0] + 2.0 * v[3] + v[6]);
+  float gy = (v[6] + 2.0 * v[7] + v[8]) - (v[0] + 2.0 * v[1] + v[2]);
+  return vec2(gx, gy) * 0.125;
+}
+
 // The ordered-dither matrix of the pixel-art paper (eq. 10, values 1..64), row-major: entry
 // (y mod 8) * 8 + (x mod 8). Pixel art thresholds with it; the sketch pass staggers its stroke
 // starts with it.
