@@ -479,8 +479,12 @@ void vtkSketchPass::Render(const vtkRenderState* s)
 
   // What this frame computes: only the enabled stages, and only their channels.
   const bool model = this->DirectionSource == MODEL;
-  const bool objectNoise = this->NoiseSpace == OBJECT;
-  const bool contrast = this->Contrast > 0.0 && this->Layer != DIRECTIONS;
+  // Strokes are drawn in the SKETCH and STROKES layers; the tone (and so the blur) is read by
+  // the SKETCH and TONE layers.
+  const bool strokes = this->Layer == SKETCH || this->Layer == STROKES;
+  const bool tone = this->Layer == SKETCH || this->Layer == TONE;
+  const bool objectNoise = strokes && this->NoiseSpace == OBJECT;
+  const bool contrast = tone && this->Contrast > 0.0;
   const bool cross = this->CrossHatching && this->Layer == SKETCH;
   int channels = vtkStylizeGBufferPass::LINEAR_DEPTH | vtkStylizeGBufferPass::NORMAL;
   if (objectNoise)
@@ -572,7 +576,10 @@ void vtkSketchPass::Render(const vtkRenderState* s)
   vtkTextureObject* normal = gbuffer->GetNormalTexture();
   vtkTextureObject* position = gbuffer->GetPositionTexture();
   vtkTextureObject* direction = gbuffer->GetDirectionTexture();
-  in.EnsureNoise(renWin, this->Noise);
+  if (strokes)
+  {
+    in.EnsureNoise(renWin, this->Noise);
+  }
 
   const int maxStride = std::max(1, static_cast<int>(std::lround(maxStrideSetting * pointSize)));
   const double spacingWorld = neighborSpacing * pointSize * focalPixel;
@@ -640,7 +647,6 @@ void vtkSketchPass::Render(const vtkRenderState* s)
 
   // 1. Raw directions.
   U::EnsureScreenTexture(in.Field[0], renWin, w, h, GL_RGBA16F);
-  U::EnsureScreenTexture(in.Field[1], renWin, w, h, GL_RGBA16F);
   U::EnsureScreenTexture(in.Resolved, renWin, w, h, GL_RGBA32F);
   stage(in.EstimateQuad, 0, in.Field[0], w, h, [&](U::Uniforms& u) {
     u.Float("sketchSpacing", spacingWorld)
@@ -660,6 +666,14 @@ void vtkSketchPass::Render(const vtkRenderState* s)
   for (int r = 1; fillSetting > 0.0 && r <= std::max(1.0, fillRadius); r *= 2)
   {
     iterations.emplace_back(r, 1);
+  }
+  if (iterations.empty())
+  {
+    U::FreeTexture(in.Field[1], renWin);
+  }
+  else
+  {
+    U::EnsureScreenTexture(in.Field[1], renWin, w, h, GL_RGBA16F);
   }
   for (const auto& it : iterations)
   {

@@ -558,8 +558,10 @@ void sketchMain()
     // Strokes only where there is ink to draw: bright pixels skip the integration.
 #if SKETCH_LAYER == 2
     bool draw = true;
-#else
+#elif SKETCH_LAYER == 0
     bool draw = dark > 1.0 / 255.0;
+#else
+    bool draw = false; // the directions and tone layers show no strokes
 #endif
     if (draw)
     {

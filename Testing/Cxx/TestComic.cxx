@@ -93,13 +93,6 @@ void NoPatterns(vtkRenderer*, vtkComicPass* c)
 // Regression image of one variant: VTK's harness, then our strict comparison.
 int TestComicRegression(int argc, char* argv[])
 {
-  Args args = ParseArgs(argc, argv);
-  if (args.Positional.empty())
-  {
-    std::fprintf(stderr, "usage: TestComicRegression VARIANT -V baseline -T dir\n");
-    return 1;
-  }
-  const std::string v = args.Positional[0];
   const std::map<std::string, Configure> variants = {
     { "full", nullptr },
     { "no-edges", [](vtkRenderer*, vtkComicPass* c) { c->EdgesOff(); } },
@@ -125,28 +118,8 @@ int TestComicRegression(int argc, char* argv[])
       } },
     { "kit-lights", [](vtkRenderer* r, vtkComicPass*) { SetupLights(r, "kit"); } },
   };
-  auto it = variants.find(v);
-  if (it == variants.end())
-  {
-    std::fprintf(stderr, "unknown variant %s\n", v.c_str());
-    return 1;
-  }
-  const bool parallel = args.Positional.size() > 1 && args.Positional[1] == "parallel";
-
-  auto scene = MakeTestScene(W, H, parallel);
-  vtkRenderWindow* win = scene.Window;
-  vtkRenderer* ren = scene.Renderer;
-  vtkNew<vtkComicPass> comic;
-  comic->SetReferenceHeight(H);
-  ren->SetPass(comic);
-  if (it->second)
-  {
-    it->second(ren, comic);
-  }
-  win->Render();
-  const int verdict = RegressionVerdict(win, argc, argv, args, 2, 0.002, 255);
-  win->Finalize();
-  return verdict;
+  return RunStyleVariant<vtkComicPass>(argc, argv, "TestComicRegression", variants, W, H,
+    [](vtkComicPass* comic) { comic->SetReferenceHeight(H); });
 }
 
 // The same scene scaled by 1e-6, 1 and 1e6, and seen with a near/far ratio of 1e7, gives the

@@ -179,12 +179,6 @@ int FloorDiv(int a, int b)
 // Regression image of one variant: VTK's harness, then our strict comparison.
 int TestPixelArtRegression(int argc, char* argv[])
 {
-  Args args = ParseArgs(argc, argv);
-  if (args.Positional.empty())
-  {
-    std::fprintf(stderr, "usage: TestPixelArtRegression VARIANT [parallel] -V baseline -T dir\n");
-    return 1;
-  }
   using P = vtkPixelArtPass;
   const std::map<std::string, Configure> variants = {
     { "faithful", nullptr },
@@ -235,26 +229,7 @@ int TestPixelArtRegression(int argc, char* argv[])
     { "art-pixels-64", [](vtkRenderer*, P* p) { p->SetArtPixelsAcross(64); } },
     { "kit-lights", [](vtkRenderer* r, P*) { SetupLights(r, "kit"); } },
   };
-  auto it = variants.find(args.Positional[0]);
-  if (it == variants.end())
-  {
-    std::fprintf(stderr, "unknown variant %s\n", args.Positional[0].c_str());
-    return 1;
-  }
-  const bool parallel = args.Positional.size() > 1 && args.Positional[1] == "parallel";
-  auto scene = MakeTestScene(W, H, parallel);
-  vtkRenderWindow* win = scene.Window;
-  vtkRenderer* ren = scene.Renderer;
-  vtkNew<vtkPixelArtPass> pass;
-  ren->SetPass(pass);
-  if (it->second)
-  {
-    it->second(ren, pass);
-  }
-  win->Render();
-  const int verdict = RegressionVerdict(win, argc, argv, args, 2, 0.002, 255);
-  win->Finalize();
-  return verdict;
+  return RunStyleVariant<P>(argc, argv, "TestPixelArtRegression", variants, W, H);
 }
 
 // The ordered dither against its CPU formula, exactly: gray and colour ramps (every 8-bit value),

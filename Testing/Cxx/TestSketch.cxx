@@ -62,12 +62,6 @@ void CheckField(vtkSketchPass* pass, const std::string& tag, bool expectSurface)
 
 int TestSketchRegression(int argc, char* argv[])
 {
-  Args args = ParseArgs(argc, argv);
-  if (args.Positional.empty())
-  {
-    std::fprintf(stderr, "usage: TestSketchRegression VARIANT [parallel] -V baseline -T dir\n");
-    return 1;
-  }
   using P = vtkSketchPass;
   const std::map<std::string, Configure> variants = {
     { "sketch", nullptr },
@@ -114,27 +108,9 @@ int TestSketchRegression(int argc, char* argv[])
       } },
     { "kit-lights", [](vtkRenderer* r, P*) { SetupLights(r, "kit"); } },
   };
-  auto it = variants.find(args.Positional[0]);
-  if (it == variants.end())
-  {
-    std::fprintf(stderr, "unknown variant %s\n", args.Positional[0].c_str());
-    return 1;
-  }
-  const bool parallel = args.Positional.size() > 1 && args.Positional[1] == "parallel";
-  auto scene = MakeTestScene(W, H, parallel);
-  vtkRenderWindow* win = scene.Window;
-  vtkRenderer* ren = scene.Renderer;
-  vtkNew<P> pass;
-  ren->SetPass(pass);
-  if (it->second)
-  {
-    it->second(ren, pass);
-  }
-  win->Render();
-  CheckField(pass, "sketch." + args.Positional[0], true);
-  const int verdict = RegressionVerdict(win, argc, argv, args, 2, 0.002, 255);
-  win->Finalize();
-  return verdict == 0 && Failures == 0 ? 0 : 1;
+  // Besides the image: every surface pixel has a unit direction.
+  return RunStyleVariant<P>(argc, argv, "TestSketchRegression", variants, W, H, nullptr,
+    [](P* pass, const std::string& name) { CheckField(pass, "sketch." + name, true); });
 }
 
 // The noise textures: finite values in [0, 1], periodic, with the statistics of their kind.

@@ -412,6 +412,53 @@ inline int RegressionVerdict(vtkRenderWindow* win, int argc, char* argv[], const
   }
   return (ret == vtkTesting::PASSED && Failures == 0) ? 0 : 1;
 }
+
+/**
+ * A style's regression test: argv = VARIANT [parallel] -V baseline -T dir. Renders the test
+ * scene (w x h) through a new Pass, set up by `prepare` (every variant) and then by the
+ * variant's own function (may be null), runs `inspect` (may be null) while the context is
+ * alive, then RegressionVerdict.
+ */
+template <class Pass>
+int RunStyleVariant(int argc, char* argv[], const char* test,
+  const std::map<std::string, std::function<void(vtkRenderer*, Pass*)>>& variants, int w, int h,
+  const std::function<void(Pass*)>& prepare = nullptr,
+  const std::function<void(Pass*, const std::string&)>& inspect = nullptr)
+{
+  Args args = ParseArgs(argc, argv);
+  if (args.Positional.empty())
+  {
+    std::fprintf(stderr, "usage: %s VARIANT [parallel] -V baseline -T dir\n", test);
+    return 1;
+  }
+  const std::string& name = args.Positional[0];
+  auto it = variants.find(name);
+  if (it == variants.end())
+  {
+    std::fprintf(stderr, "unknown variant %s\n", name.c_str());
+    return 1;
+  }
+  const bool parallel = args.Positional.size() > 1 && args.Positional[1] == "parallel";
+  auto scene = MakeTestScene(w, h, parallel);
+  vtkNew<Pass> pass;
+  if (prepare)
+  {
+    prepare(pass);
+  }
+  scene.Renderer->SetPass(pass);
+  if (it->second)
+  {
+    it->second(scene.Renderer, pass);
+  }
+  scene.Window->Render();
+  if (inspect)
+  {
+    inspect(pass, name);
+  }
+  const int verdict = RegressionVerdict(scene.Window, argc, argv, args, 2, 0.002, 255);
+  scene.Window->Finalize();
+  return verdict;
+}
 }
 
 #endif
