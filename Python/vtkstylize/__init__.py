@@ -1,0 +1,177 @@
+"""VTK Stylize: non-photorealistic render passes for VTK, as one Python package.
+
+The package holds the project's two wrapped VTK modules, re-exported at package level:
+
+Render passes (module ``vtkstylize.vtkStylizePasses``):
+
+- ``vtkComicPass``: black-and-white comic rendering: toon lighting, depth, normal and colour
+  edges, halftone dots where bright, hatching where dark.
+- ``vtkPixelArtPass``: pixel art: pixelation to art pixels, Canny outlines, ordered dither to
+  a palette (levels per channel, grays, 16 colours, a user list or the data's colormap).
+- ``vtkSketchPass``: pencil sketch: line integral convolution of surface noise along the
+  principal curvature directions, pencil tone and cross-hatching.
+- ``vtkStylizeStylePass``: the base of the three styles, an image-processing pass (it renders
+  the geometry itself, or stylizes the image of a delegate pass when one is set).
+- ``vtkStylizeLightingPass``: VTK's lighting replaced by a selectable model (Standard, Comic,
+  PixelArt); the lighting stage of the three styles (``GetLightingPass()``).
+- ``vtkStylizeGBufferPass``: the shared G-buffer (lit colour, depth, normals, positions) the
+  screen-space styles read.
+
+Filters (module ``vtkstylize.vtkStylizeFilters``):
+
+- ``vtkStylizeDemoScene``: the built-in scene (wavelet isosurface, torus, streamline tubes) as
+  a multiblock dataset.
+- ``vtkStylizeImageMetrics``: strict image measurements (maximum difference, PSNR, SSIM, count
+  of non-finite values).
+- ``vtkStylizePrincipalCurvatures``: per-point principal curvatures and directions of a surface.
+
+And a small pure-Python layer:
+
+- ``STYLES``: the style names, ``("none", "comic", "pixel", "sketch")``.
+- ``create_pass(style, **settings)``: a new pass for a style, its settings given by VTK setter
+  name (``EdgeWidth=2.0`` calls ``SetEdgeWidth(2.0)``); ``None`` for ``"none"``.
+- ``apply_style(renderer, style, **settings)``: sets that pass on a renderer and returns it;
+  ``"none"`` restores VTK's default rendering (``renderer.SetPass(None)``).
+- ``configure(obj, **settings)``: the same setter calls on any VTK object, e.g. a style's
+  lighting pass.
+- ``settings_of(obj)``: the setting names of a pass (or any VTK object or class).
+
+Importing: put the build's ``python`` folder (``<build>/python``) or the installed ``python``
+folder on ``PYTHONPATH`` and use the interpreter VTK's Python is built for (``/usr/bin/python3``
+with Debian's python3-vtk9)::
+
+    import vtkstylize
+    comic = vtkstylize.apply_style(renderer, "comic", EdgeWidth=2.0, Tinted=True)
+    vtkstylize.configure(comic.GetLightingPass(), SubjectFactor=0.5)
+
+    from vtkstylize import vtkPixelArtPass          # the wrapped classes, as before
+    pixel = vtkstylize.create_pass("pixel", PixelSize=6, Palette="PALETTE16")
+    renderer.SetPass(pixel)
+
+Setting values: a number, bool or string is passed to ``Set<Name>``; a tuple or list is
+unpacked (``OutlineColor=(1, 0, 0)``); a string names a ``Set<Name>To<Value>`` method when one
+exists (``Mode="Fast"``, ``Anchor="Object"``, ``Model="Comic"``) or an enum constant of the
+class (``Palette="PALETTE16"``, ``Layer="EDGES"``). The passes' setters clamp out-of-range
+values, so read back with ``Get<Name>``. An unknown setting raises ``ValueError``, a value the
+setter does not accept ``TypeError``.
+"""
+
+import difflib as _difflib
+
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (loads VTK's OpenGL classes first)
+from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLRenderPass as _vtkOpenGLRenderPass
+
+from .vtkStylizePasses import *  # noqa: F401,F403
+from .vtkStylizeFilters import *  # noqa: F401,F403
+from .vtkStylizePasses import vtkComicPass as _vtkComicPass
+from .vtkStylizePasses import vtkPixelArtPass as _vtkPixelArtPass
+from .vtkStylizePasses import vtkSketchPass as _vtkSketchPass
+
+#: The style names accepted by create_pass() and apply_style(), "none" first.
+STYLES = ("none", "comic", "pixel", "sketch")
+
+_STYLE_CLASSES = {
+    "comic": _vtkComicPass,
+    "pixel": _vtkPixelArtPass,
+    "sketch": _vtkSketchPass,
+}
+
+
+def _style_class(style):
+    """The pass class of a style name (None for "none"); ValueError for an unknown name."""
+    key = style.strip().lower() if isinstance(style, str) else style
+    if key == "none":
+        return None
+    if key in _STYLE_CLASSES:
+        return _STYLE_CLASSES[key]
+    raise ValueError("unknown style %r: use one of %s" % (style, ", ".join(STYLES)))
+
+
+def settings_of(obj):
+    """The setting names of a VTK object or class: names with both Set<Name> and Get<Name>,
+    without those every render pass has (Debug, ReferenceCount, ...), sorted."""
+    names = dir(obj)
+    base = set(dir(_vtkOpenGLRenderPass))
+    return sorted(n[3:] for n in names
+                  if n.startswith("Set") and len(n) > 3 and ("Get" + n[3:]) in names
+                  and n not in base)
+
+
+def _find_method(obj, name):
+    """obj's method called name, or, ignoring case, the one method whose name matches."""
+    method = getattr(obj, name, None)
+    if method is not None:
+        return method
+    matches = [n for n in dir(obj) if n.lower() == name.lower()]
+    return getattr(obj, matches[0]) if len(matches) == 1 else None
+
+
+def _apply_setting(obj, name, value):
+    cls = obj.GetClassName() if hasattr(obj, "GetClassName") else type(obj).__name__
+    setter = getattr(obj, "Set" + name, None) if name.isidentifier() else None
+    if setter is None or not callable(setter):
+        known = settings_of(obj)
+        close = _difflib.get_close_matches(name, known, n=3)
+        hint = (" (did you mean %s?)" % ", ".join(close)) if close else ""
+        raise ValueError("%s has no setting %r (no method Set%s)%s; its settings: %s"
+                         % (cls, name, name, hint, ", ".join(known)))
+    call = "%s.Set%s" % (cls, name)
+    if isinstance(value, str):
+        # Set<Name>To<Value>() (SetModeToFast), else an enum constant (PALETTE16), else the
+        # string itself (DirectionArrayName).
+        to = _find_method(obj, "Set%sTo%s" % (name, value.replace(" ", "")))
+        if to is not None and callable(to):
+            to()
+            return
+        getter = getattr(obj, "Get" + name, None)
+        current = getter() if callable(getter) else None
+        constant = getattr(type(obj), value.upper(), None)
+        if isinstance(current, int) and not isinstance(current, bool):
+            if not isinstance(constant, int):
+                raise ValueError("%s: %r is neither a Set%sTo%s method nor a constant of %s"
+                                 % (call, value, name, value, cls))
+            value = constant
+    try:
+        if isinstance(value, (tuple, list)):
+            setter(*value)
+        else:
+            setter(value)
+    except TypeError as error:
+        raise TypeError("%s(%r): %s" % (call, value, error)) from None
+
+
+def configure(obj, **settings):
+    """Calls obj.Set<Name>(value) for each Name=value (see the package's documentation for
+    how values are passed); returns obj. Settings apply in the order given. An unknown name
+    raises ValueError, a value the setter does not take TypeError."""
+    for name, value in settings.items():
+        _apply_setting(obj, name, value)
+    return obj
+
+
+def create_pass(style, **settings):
+    """A new render pass for style (one of STYLES, any case), configured with settings by
+    setter name: create_pass("comic", EdgeWidth=2.0) calls SetEdgeWidth(2.0). Returns a
+    vtkComicPass, vtkPixelArtPass or vtkSketchPass; None for "none" (which takes no settings).
+    ValueError for an unknown style or setting."""
+    cls = _style_class(style)
+    if cls is None:
+        if settings:
+            raise ValueError("style 'none' takes no settings (got %s)"
+                             % ", ".join(sorted(settings)))
+        return None
+    return configure(cls(), **settings)
+
+
+def apply_style(renderer, style, **settings):
+    """Sets create_pass(style, **settings) on renderer and returns the pass. Style "none"
+    restores VTK's default rendering (renderer.SetPass(None)) and returns None. The pass the
+    renderer had releases its graphics resources in the renderer's window first. Render the
+    window afterwards."""
+    new_pass = create_pass(style, **settings)
+    old_pass = renderer.GetPass()
+    window = renderer.GetRenderWindow()
+    if old_pass is not None and window is not None:
+        old_pass.ReleaseGraphicsResources(window)
+    renderer.SetPass(new_pass)
+    return new_pass
