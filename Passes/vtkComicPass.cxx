@@ -168,12 +168,8 @@ void vtkComicPass::Render(const vtkRenderState* s)
     channels |= vtkStylizeGBufferPass::POSITION;
     gbuffer->SetPositionSpace(vtkStylizeGBufferPass::OBJECT);
   }
-  gbuffer->SetChannels(channels);
-
-  if (!gbuffer->RenderGeometry(s))
+  if (!this->RenderScene(s, channels))
   {
-    gbuffer->RenderAfterGeometry(s);
-    this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
     return;
   }
   int vp[4];
@@ -344,8 +340,7 @@ void vtkComicPass::Render(const vtkRenderState* s)
   }
   vtkOpenGLCheckErrorMacro("failed after vtkComicPass::Render");
 
-  gbuffer->RenderAfterGeometry(s);
-  this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+  this->FinishScene(s);
 }
 
 //------------------------------------------------------------------------------

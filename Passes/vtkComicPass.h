@@ -38,7 +38,7 @@
 #ifndef vtkComicPass_h
 #define vtkComicPass_h
 
-#include "vtkOpenGLRenderPass.h"
+#include "vtkStylizeStylePass.h"
 #include "vtkStylizePassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
@@ -46,11 +46,11 @@
 class vtkStylizeGBufferPass;
 class vtkStylizeLightingPass;
 
-class VTKSTYLIZEPASSES_EXPORT vtkComicPass : public vtkOpenGLRenderPass
+class VTKSTYLIZEPASSES_EXPORT vtkComicPass : public vtkStylizeStylePass
 {
 public:
   static vtkComicPass* New();
-  vtkTypeMacro(vtkComicPass, vtkOpenGLRenderPass);
+  vtkTypeMacro(vtkComicPass, vtkStylizeStylePass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** Where the dots and hatch lines are anchored. */
@@ -75,10 +75,10 @@ public:
   ///@}
 
   /** The lighting pass (Comic model by default); change its model or settings freely. */
-  vtkStylizeLightingPass* GetLightingPass();
+  vtkStylizeLightingPass* GetLightingPass() override;
 
   /** The G-buffer pass (read-only use: the comic pass sets its channels each frame). */
-  vtkStylizeGBufferPass* GetGBufferPass();
+  vtkStylizeGBufferPass* GetGBufferPass() override;
 
   ///@{
   /** Draw the three-phase edges. Default on. */

@@ -340,9 +340,7 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   if (w < 1 || h < 1)
   {
     gbuffer->SetGeometryResolution(0, 0);
-    gbuffer->RenderGeometry(s);
-    gbuffer->RenderAfterGeometry(s);
-    this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+    this->RenderScene(s, gbuffer->GetChannels());
     return;
   }
 
@@ -455,7 +453,6 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
     channels |= vtkStylizeGBufferPass::POSITION;
     gbuffer->SetPositionSpace(vtkStylizeGBufferPass::OBJECT);
   }
-  gbuffer->SetChannels(channels);
 
   // Geometry: at the art-pixel resolution over the grid (FAST) or at full resolution over the
   // blocks' extent (FAITHFUL), shifted onto the grid.
@@ -484,10 +481,8 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
     }
   }
   gbuffer->SetAfterScreenShift(shiftNDC[0], shiftNDC[1]);
-  if (!gbuffer->RenderGeometry(s))
+  if (!this->RenderScene(s, channels))
   {
-    gbuffer->RenderAfterGeometry(s);
-    this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
     return;
   }
 
@@ -791,8 +786,7 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   }
   vtkOpenGLCheckErrorMacro("failed after vtkPixelArtPass::Render");
 
-  gbuffer->RenderAfterGeometry(s);
-  this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+  this->FinishScene(s);
 }
 
 //------------------------------------------------------------------------------

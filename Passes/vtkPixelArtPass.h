@@ -52,7 +52,7 @@
 #ifndef vtkPixelArtPass_h
 #define vtkPixelArtPass_h
 
-#include "vtkOpenGLRenderPass.h"
+#include "vtkStylizeStylePass.h"
 #include "vtkStylizePassesModule.h" // for export macro
 #include "vtkWrappingHints.h"        // for VTK_SIZEHINT
 
@@ -62,11 +62,11 @@ class vtkScalarsToColors;
 class vtkStylizeGBufferPass;
 class vtkStylizeLightingPass;
 
-class VTKSTYLIZEPASSES_EXPORT vtkPixelArtPass : public vtkOpenGLRenderPass
+class VTKSTYLIZEPASSES_EXPORT vtkPixelArtPass : public vtkStylizeStylePass
 {
 public:
   static vtkPixelArtPass* New();
-  vtkTypeMacro(vtkPixelArtPass, vtkOpenGLRenderPass);
+  vtkTypeMacro(vtkPixelArtPass, vtkStylizeStylePass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** How the colour of an art pixel is obtained. */
@@ -111,10 +111,10 @@ public:
   };
 
   /** The lighting pass (PixelArt model by default); change its model or settings freely. */
-  vtkStylizeLightingPass* GetLightingPass();
+  vtkStylizeLightingPass* GetLightingPass() override;
 
   /** The G-buffer pass (its channels and resolution are set by this pass each frame). */
-  vtkStylizeGBufferPass* GetGBufferPass();
+  vtkStylizeGBufferPass* GetGBufferPass() override;
 
   ///@{
   /** FAST or FAITHFUL (default) pixelation. */

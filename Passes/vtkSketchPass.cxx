@@ -497,12 +497,8 @@ void vtkSketchPass::Render(const vtkRenderState* s)
     channels |= vtkStylizeGBufferPass::DIRECTION;
     this->MapDirectionArrays(ren);
   }
-  gbuffer->SetChannels(channels);
-
-  if (!gbuffer->RenderGeometry(s))
+  if (!this->RenderScene(s, channels))
   {
-    gbuffer->RenderAfterGeometry(s);
-    this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
     return;
   }
   int vp[4];
@@ -760,8 +756,7 @@ void vtkSketchPass::Render(const vtkRenderState* s)
   }
   vtkOpenGLCheckErrorMacro("failed after vtkSketchPass::Render");
 
-  gbuffer->RenderAfterGeometry(s);
-  this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
+  this->FinishScene(s);
 }
 
 //------------------------------------------------------------------------------

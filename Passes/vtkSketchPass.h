@@ -52,7 +52,7 @@
 #ifndef vtkSketchPass_h
 #define vtkSketchPass_h
 
-#include "vtkOpenGLRenderPass.h"
+#include "vtkStylizeStylePass.h"
 #include "vtkStylizePassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
@@ -62,11 +62,11 @@ class vtkFloatArray;
 class vtkStylizeGBufferPass;
 class vtkStylizeLightingPass;
 
-class VTKSTYLIZEPASSES_EXPORT vtkSketchPass : public vtkOpenGLRenderPass
+class VTKSTYLIZEPASSES_EXPORT vtkSketchPass : public vtkStylizeStylePass
 {
 public:
   static vtkSketchPass* New();
-  vtkTypeMacro(vtkSketchPass, vtkOpenGLRenderPass);
+  vtkTypeMacro(vtkSketchPass, vtkStylizeStylePass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** Where the principal directions come from. */
@@ -116,10 +116,10 @@ public:
   };
 
   /** The lighting pass (Standard model by default); change its model or settings freely. */
-  vtkStylizeLightingPass* GetLightingPass();
+  vtkStylizeLightingPass* GetLightingPass() override;
 
   /** The G-buffer pass (the sketch pass sets its channels each frame; FULL precision default). */
-  vtkStylizeGBufferPass* GetGBufferPass();
+  vtkStylizeGBufferPass* GetGBufferPass() override;
 
   ///@{
   /** The layer written to the output: SKETCH (default), DIRECTIONS, STROKES or TONE. */

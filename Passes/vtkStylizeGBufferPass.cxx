@@ -6,6 +6,7 @@
 #include "vtkHomogeneousTransform.h"
 #include "vtkLightsPass.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
 #include "vtkOpenGLError.h"
@@ -33,6 +34,7 @@
 #include "vtkStylizeDepthFS.h"
 #include "vtkStylizeGBufferDirectionFS.h"
 #include "vtkStylizeGBufferImpl.h"
+#include "vtkStylizeReconstructFS.h"
 
 #include <algorithm>
 #include <cmath>
@@ -139,6 +141,7 @@ class vtkStylizeGBufferPass::vtkInternals
 public:
   vtkNew<vtkStylizeGBufferClearPass> ClearPass;
   vtkStylizeShaderUtilities::ScreenQuad CompositeQuad;
+  vtkStylizeShaderUtilities::ScreenQuad ReconstructQuad;
   vtkNew<vtkMatrix4x4> InverseView;
   vtkNew<vtkMatrix4x4> View;
   vtkNew<vtkMatrix4x4> InverseModel;
@@ -147,6 +150,7 @@ public:
 
 vtkStandardNewMacro(vtkStylizeGBufferPass);
 vtkCxxSetObjectMacro(vtkStylizeGBufferPass, LightingPass, vtkStylizeLightingPass);
+vtkCxxSetObjectMacro(vtkStylizeGBufferPass, SceneImagePass, vtkRenderPass);
 
 //------------------------------------------------------------------------------
 vtkStylizeGBufferPass::vtkStylizeGBufferPass()
@@ -178,6 +182,7 @@ vtkStylizeGBufferPass::vtkStylizeGBufferPass()
 vtkStylizeGBufferPass::~vtkStylizeGBufferPass()
 {
   this->SetLightingPass(nullptr);
+  this->SetSceneImagePass(nullptr);
   this->FreeTextures(nullptr);
   this->GeometryCameraPass->Delete();
   this->GeometrySequence->Delete();
@@ -198,6 +203,9 @@ void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Viewport: " << this->Viewport[0] << " " << this->Viewport[1] << " "
      << this->Viewport[2] << " " << this->Viewport[3] << "\n";
   os << indent << "LightingPass: " << (this->LightingPass ? "set" : "(none: VTK lighting)")
+     << "\n";
+  os << indent << "SceneImagePass: "
+     << (this->SceneImagePass ? this->SceneImagePass->GetClassName() : "(none: the geometry)")
      << "\n";
   os << indent << "GeometryResolution: " << this->GeometryResolution[0] << " x "
      << this->GeometryResolution[1] << (this->GeometryResolution[0] > 0 ? "" : " (viewport)")
@@ -302,18 +310,21 @@ void vtkStylizeGBufferPass::FreeTextures(vtkWindow* w)
 {
   for (vtkTextureObject** tex : { &this->ColorTexture, &this->NormalTexture,
          &this->PositionTexture, &this->LinearDepthTexture, &this->DepthTexture,
-         &this->DirectionTexture })
+         &this->DirectionTexture, &this->ImageColorTexture, &this->ImageDepthTexture })
   {
     vtkStylizeShaderUtilities::FreeTexture(*tex, w);
   }
-  if (this->FrameBufferObject)
+  for (vtkOpenGLFramebufferObject** fbo : { &this->FrameBufferObject, &this->ImageFrameBuffer })
   {
-    if (w)
+    if (*fbo)
     {
-      this->FrameBufferObject->ReleaseGraphicsResources(w);
+      if (w)
+      {
+        (*fbo)->ReleaseGraphicsResources(w);
+      }
+      (*fbo)->Delete();
+      *fbo = nullptr;
     }
-    this->FrameBufferObject->Delete();
-    this->FrameBufferObject = nullptr;
   }
 }
 
@@ -322,6 +333,7 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
   this->NumberOfRenderedProps = 0;
+  this->SceneFromImage = this->SceneImagePass != nullptr;
   vtkRenderer* ren = s->GetRenderer();
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   if (!renWin)
@@ -340,7 +352,8 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   }
   vtkCamera* camera = ren->GetActiveCamera();
   camera->GetClippingRange(this->DepthRange);
-  this->LogarithmicDepth = !camera->GetParallelProjection() && this->DepthRange[0] > 0.0 &&
+  this->LogarithmicDepth = !this->SceneFromImage && !camera->GetParallelProjection() &&
+    this->DepthRange[0] > 0.0 &&
     this->DepthRange[1] > this->DepthRange[0] * this->LogarithmicDepthRatio;
   if (this->Channels != this->BuiltChannels || this->PositionSpace != this->BuiltPositionSpace ||
     this->LogarithmicDepth != this->BuiltLogarithmicDepth)
@@ -394,6 +407,15 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
 
   this->Internals->View->DeepCopy(ren->GetActiveCamera()->GetModelViewTransformMatrix());
   vtkMatrix4x4::Invert(this->Internals->View, this->Internals->InverseView);
+
+  if (this->SceneFromImage)
+  {
+    this->RenderSceneImage(s, renWin, w, h);
+    fbo->UnBind();
+    fbo->RestorePreviousBindingsAndBuffers();
+    vtkOpenGLCheckErrorMacro("failed after vtkStylizeGBufferPass::RenderGeometry (image)");
+    return true;
+  }
 
   vtkRenderState sfbo(ren);
   sfbo.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
@@ -467,7 +489,7 @@ void vtkStylizeGBufferPass::RenderAfterGeometry(const vtkRenderState* s)
 {
   vtkRenderer* ren = s->GetRenderer();
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!renWin)
+  if (!renWin || this->SceneFromImage) // an image already holds everything
   {
     return;
   }
@@ -509,6 +531,112 @@ void vtkStylizeGBufferPass::Render(const vtkRenderState* s)
   }
   this->RenderAfterGeometry(s);
   this->NumberOfRenderedProps += rendered;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::RenderSceneImage(
+  const vtkRenderState* s, vtkOpenGLRenderWindow* renWin, int gw, int gh)
+{
+  vtkRenderer* ren = s->GetRenderer();
+  const int w = this->Viewport[2];
+  const int h = this->Viewport[3];
+  using Utilities = vtkStylizeShaderUtilities;
+  Utilities::EnsureScreenTexture(this->ImageColorTexture, renWin, w, h,
+    this->Precision == FULL ? GL_RGBA32F : GL_RGBA16F);
+  Utilities::EnsureScreenTexture(this->ImageDepthTexture, renWin, w, h, GL_DEPTH_COMPONENT32F);
+  if (!this->ImageFrameBuffer)
+  {
+    this->ImageFrameBuffer = vtkOpenGLFramebufferObject::New();
+    this->ImageFrameBuffer->SetContext(renWin);
+  }
+
+  // 1. The image: the scene pass renders into colour and depth at the viewport's size.
+  vtkOpenGLFramebufferObject* image = this->ImageFrameBuffer;
+  vtkOpenGLState* ostate = renWin->GetState();
+  image->SaveCurrentBindingsAndBuffers();
+  image->Bind();
+  image->AddColorAttachment(0, this->ImageColorTexture);
+  image->ActivateDrawBuffers(1);
+  image->AddDepthAttachment(this->ImageDepthTexture);
+  image->StartNonOrtho(w, h);
+  ostate->vtkglViewport(0, 0, w, h);
+  ostate->vtkglScissor(0, 0, w, h);
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  vtkRenderState simage(ren);
+  simage.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+  simage.SetFrameBuffer(image);
+  simage.SetRequiredKeys(s->GetRequiredKeys());
+  this->SceneImagePass->Render(&simage);
+  this->NumberOfRenderedProps += this->SceneImagePass->GetNumberOfRenderedProps();
+  image->UnBind();
+  image->RestorePreviousBindingsAndBuffers();
+
+  // 2. The G-buffer from the image (the G-buffer's framebuffer is bound again).
+  // The requested channels, in attachment order, with literal gl_FragData indices.
+  std::ostringstream body;
+  body << "  stylizeReconstruct();\n  gl_FragData[0] = stylizeOutColor;\n";
+  int index = 1;
+  for (auto channel : { std::make_pair(this->NormalTexture, "stylizeOutNormal"),
+         std::make_pair(this->PositionTexture, "stylizeOutPosition"),
+         std::make_pair(this->LinearDepthTexture, "stylizeOutLinearDepth"),
+         std::make_pair(this->DirectionTexture, "vec4(0.0)") }) // no attribute: coherence 0
+  {
+    if (channel.first)
+    {
+      body << "  gl_FragData[" << index++ << "] = " << channel.second << ";\n";
+    }
+  }
+  const std::string defines =
+    this->PositionSpace == OBJECT ? "#define STYLIZE_POSITION_WORLD\n" : "";
+  vtkShaderProgram* program = this->Internals->ReconstructQuad.Prepare(
+    renWin, defines + vtkStylizeReconstructFS, body.str());
+  if (!program)
+  {
+    vtkErrorMacro("Could not build the G-buffer reconstruction shader.");
+    return;
+  }
+  // The projection the image was rendered with, inverted (vtkShaderProgram uploads row-major
+  // data as GLSL columns, hence the transposes).
+  // (The aspect as vtkCamera::GetProjectionTransformMatrix(vtkRenderer*) computes it; that
+  // method returns a new, transposed matrix.)
+  double aspect[2], viewportAspect[2];
+  ren->ComputeAspect();
+  ren->GetAspect(aspect);
+  ren->vtkViewport::ComputeAspect();
+  ren->vtkViewport::GetAspect(viewportAspect);
+  const double aspectRatio =
+    aspect[0] * viewportAspect[1] / (aspect[1] * viewportAspect[0]) * w / static_cast<double>(h);
+  vtkNew<vtkMatrix4x4> inverseProjection;
+  inverseProjection->DeepCopy(
+    ren->GetActiveCamera()->GetProjectionTransformMatrix(aspectRatio, -1.0, 1.0));
+  inverseProjection->Invert();
+  inverseProjection->Transpose();
+  vtkNew<vtkMatrix4x4> inverseView;
+  inverseView->DeepCopy(this->Internals->InverseView);
+  inverseView->Transpose();
+  program->SetUniformMatrix("stylizeInverseProjection", inverseProjection);
+  program->SetUniformMatrix("stylizeInverseView", inverseView);
+
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  ostate->vtkglViewport(0, 0, gw, gh);
+  ostate->vtkglScissor(0, 0, gw, gh);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  const double* t = this->GeometryScreenTransform;
+  Utilities::Uniforms(program)
+    .Texture("stylizeImageColor", this->ImageColorTexture)
+    .Texture("stylizeImageDepth", this->ImageDepthTexture)
+    .Float4("stylizeScreenTransform", t[0], t[1], t[2], t[3])
+    .Float2("stylizeImageSize", w, h);
+  this->Internals->ReconstructQuad.Render();
 }
 
 //------------------------------------------------------------------------------
@@ -588,7 +716,12 @@ void vtkStylizeGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   this->Internals->CompositeQuad.Release(w);
+  this->Internals->ReconstructQuad.Release(w);
   this->FreeTextures(w);
+  if (this->SceneImagePass)
+  {
+    this->SceneImagePass->ReleaseGraphicsResources(w);
+  }
   this->GeometryCameraPass->ReleaseGraphicsResources(w);
   this->AfterSequence->ReleaseGraphicsResources(w);
   this->OverlayPass->ReleaseGraphicsResources(w);

@@ -31,6 +31,19 @@
  * overlay (text, scalar bars), which is never stylized. Style passes call RenderGeometry(),
  * process the textures, write their image and depth, then call RenderAfterGeometry().
  *
+ * **Scene from an image.** When SceneImagePass is set, RenderGeometry() does not render the
+ * geometry: it renders that pass (which must leave a lit colour and a window depth, as VTK's
+ * default passes, a vtkStylizeLightingPass or ParaView's IceT compositing do) into an image at
+ * the viewport's size and fills the G-buffer from it. NORMAL is reconstructed from the depth
+ * (view space; on each axis the one-sided difference towards the neighbour closer in depth, so
+ * silhouettes do not bend it), POSITION is the view-space position (OBJECT space is not known
+ * from an image: it becomes world space), LINEAR_DEPTH is -z in view space and DIRECTION has
+ * coherence 0 everywhere. The lighting pass is not applied (the image is already lit), the
+ * depth is the image's window depth (never logarithmic), and RenderAfterGeometry() draws
+ * nothing (translucent geometry, volumes and the overlay are part of the image). The geometry
+ * resolution and screen transform still apply: the image is sampled (nearest) at the shifted
+ * pixel centres. This is how the styles run after a parallel compositor: see vtkStylizeStylePass.
+ *
  * Renderers that do not start at the window origin, several renderers, layered renderers
  * (the background of a layer above 0 is left transparent), tiled rendering
  * (vtkWindowToImageFilter with a scale) and window resizes are handled. ReleaseGraphicsResources()
@@ -143,6 +156,15 @@ public:
   virtual void SetLightingPass(vtkStylizeLightingPass* pass);
   ///@}
 
+  ///@{
+  /**
+   * A pass whose image (lit colour and window depth) replaces the geometry as the scene's
+   * source; see the class description. Default nullptr: render the geometry.
+   */
+  vtkGetObjectMacro(SceneImagePass, vtkRenderPass);
+  virtual void SetSceneImagePass(vtkRenderPass* pass);
+  ///@}
+
   /** Geometry, composite, translucent geometry and volumes, overlay. */
   void Render(const vtkRenderState* s) override;
 
@@ -239,6 +261,8 @@ protected:
   ~vtkStylizeGBufferPass() override;
 
   void AllocateTextures(vtkOpenGLRenderWindow* renWin, int w, int h);
+  /** RenderGeometry() for a scene from SceneImagePass; the G-buffer's FBO is bound. */
+  void RenderSceneImage(const vtkRenderState* s, vtkOpenGLRenderWindow* renWin, int w, int h);
   void FreeTextures(vtkWindow* w);
 
   int Channels = 0;
@@ -260,6 +284,11 @@ protected:
   int BuiltPositionSpace = -1;
 
   vtkStylizeLightingPass* LightingPass = nullptr;
+  vtkRenderPass* SceneImagePass = nullptr;
+  bool SceneFromImage = false; // the last RenderGeometry() used SceneImagePass
+  vtkOpenGLFramebufferObject* ImageFrameBuffer = nullptr;
+  vtkTextureObject* ImageColorTexture = nullptr;
+  vtkTextureObject* ImageDepthTexture = nullptr;
   vtkCameraPass* GeometryCameraPass = nullptr;
   vtkSequencePass* GeometrySequence = nullptr;
   vtkSequencePass* AfterSequence = nullptr;

@@ -8,6 +8,7 @@ int TestLightCountNoRebuild(int argc, char* argv[]);
 int TestLightingReference(int argc, char* argv[]);
 int TestLightingExtremes(int argc, char* argv[]);
 int TestGBuffer(int argc, char* argv[]);
+int TestSceneImage(int argc, char* argv[]);
 int TestComicRegression(int argc, char* argv[]);
 int TestComicScale(int argc, char* argv[]);
 int TestComicMagnify(int argc, char* argv[]);
@@ -40,6 +41,7 @@ const Entry Tests[] = {
   { "TestLightingReference", TestLightingReference },
   { "TestLightingExtremes", TestLightingExtremes },
   { "TestGBuffer", TestGBuffer },
+  { "TestSceneImage", TestSceneImage },
   { "TestComicRegression", TestComicRegression },
   { "TestComicScale", TestComicScale },
   { "TestComicMagnify", TestComicMagnify },
