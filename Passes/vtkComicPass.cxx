@@ -265,7 +265,8 @@ void vtkComicPass::Render(const vtkRenderState* s)
       .Float("comicBright", this->BrightThreshold)
       .Float("comicDark", this->DarkThreshold)
       .Float("comicCross", this->CrossThreshold)
-      .Int("comicDiscardBackground", ren->Transparent() ? 1 : 0);
+      .Int("comicDiscardBackground", ren->Transparent() ? 1 : 0)
+      .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0);
     gbuffer->SetDepthMappingUniforms(u.GetProgram());
   };
 

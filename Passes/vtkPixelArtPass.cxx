@@ -634,7 +634,8 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
       .Float("pixelAnchorUnit", anchorUnit)
       .Float3("pixelOutlineColor", this->OutlineColor[0], this->OutlineColor[1],
         this->OutlineColor[2])
-      .Int("pixelDiscardBackground", ren->Transparent() ? 1 : 0);
+      .Int("pixelDiscardBackground", ren->Transparent() ? 1 : 0)
+      .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0);
     gbuffer->SetDepthMappingUniforms(u.GetProgram());
   };
   bool ok = true;

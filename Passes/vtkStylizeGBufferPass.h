@@ -165,6 +165,9 @@ public:
   virtual void SetSceneImagePass(vtkRenderPass* pass);
   ///@}
 
+  /** Whether the last RenderGeometry() took the scene from SceneImagePass. */
+  vtkGetMacro(SceneFromImage, bool);
+
   /** Geometry, composite, translucent geometry and volumes, overlay. */
   void Render(const vtkRenderState* s) override;
 

@@ -7,8 +7,11 @@ STYLIZE_BUILD="${STYLIZE_BUILD:-$STYLIZE_ROOT/build}"
 STYLIZE_JOBS="${STYLIZE_JOBS:-$(nproc)}"
 
 # Debian packages the build, the tests and the demo need.
+# paraview and paraview-dev are for the ParaView plugin (its python3-paraview conflicts with
+# python3-vtk9, so the build unpacks it into the build tree instead of installing it), and
+# mpi-default-bin gives mpiexec for the 1-rank against 2-rank test.
 STYLIZE_PACKAGES=(cmake make g++ libvtk9-dev python3-vtk9 python3-dev libglm-dev xvfb xauth x11-utils
-  libgl1-mesa-dri)
+  libgl1-mesa-dri paraview paraview-dev mpi-default-bin)
 
 stylize_install_dependencies() {
   local missing=()

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Parameter reference of the VTK Stylize passes, generated from the headers and the code.
 
-    /usr/bin/python3 scripts/parameters.py           # writes docs/PARAMETERS.md and README tables
-    /usr/bin/python3 scripts/parameters.py --check   # verifies both, prints a diff, exit 1 on drift
+    /usr/bin/python3 scripts/parameters.py           # writes docs/PARAMETERS.md, README tables
+                                                     # and the ParaView XML in Plugin/View/
+    /usr/bin/python3 scripts/parameters.py --check   # verifies them, prints a diff, exit 1 on drift
 
 Sources, so that nothing can drift:
 
@@ -21,6 +22,13 @@ warning. The README's parameter tables are generated copies between marker comme
 (<!-- parameters:CLASS begin --> ... <!-- parameters:CLASS end -->); --check also fails on a
 hand-written parameter table outside them.
 
+The ParaView plugin's server-manager XML is generated from the same description:
+Plugin/View/StylizePasses.xml (a proxy per pass, a property per parameter: kind, default, range
+domain, documentation) and the blocks of Plugin/View/StylizeView.xml between its
+<!-- generated:exposed:PROXY begin/end --> markers (the view's <ExposedProperties>
+groups of those subproxies). Object-valued and list-valued parameters are not exposed, nor those
+in XML_SKIP (set by the view).
+
 Needs the build's python folder on PYTHONPATH (build/python and build/lib are tried when the
 import fails). Only instantiates the classes: no display, no OpenGL context.
 """
@@ -31,10 +39,13 @@ import math
 import os
 import re
 import sys
+import textwrap
+from xml.sax.saxutils import escape
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUTPUT = os.path.join("docs", "PARAMETERS.md")
 README = "README.md"
+DIFF_LINES = 200  # --check shows at most this many lines of each stale file's diff
 
 # The classes documented, in order: (class, header relative to the repository root).
 CLASSES = [
@@ -381,7 +392,8 @@ class Param:
         self.meaning_short = ""
         self.shared_with = None
         self.per_actor = []
-        self.range_numbers = None  # (lo, hi) when known
+        self.range_numbers = None  # (lo, hi) when known (vectors: of each component)
+        self.allowed_values = None  # the only values a snapping setter keeps, when it snaps
         self.header_path = None
         self.inherited = None  # (base class, in the project?, header) when inherited
 
@@ -981,6 +993,7 @@ def describe_class(mod, cls, path, errors, warnings):
             if values:
                 p.range_text = ", ".join(fmt_num(v) for v in values) + " (others are snapped)"
                 p.range_numbers = (values[0], values[-1])
+                p.allowed_values = values
                 stated_values = [float(x) for x in re.findall(NUM, text)]
                 if not all(any(same(v, s) for s in stated_values) for v in values):
                     warnings.append("%s: the comment does not list the values %s" % (
@@ -994,6 +1007,7 @@ def describe_class(mod, cls, path, errors, warnings):
                                                     p.range_text))
             elif stated:
                 p.range_text = "[%s, %s]" % (fmt_num(stated[0]), fmt_num(stated[1]))
+                p.range_numbers = stated
             else:
                 p.range_text = "—"
                 warnings.append("%s: the comment states no range" % loc)
@@ -1001,6 +1015,7 @@ def describe_class(mod, cls, path, errors, warnings):
             each = "each " if p.size > 1 else ""
             if stated:
                 p.range_text = "%s[%s, %s]" % (each, fmt_num(stated[0]), fmt_num(stated[1]))
+                p.range_numbers = stated
             else:
                 p.range_text = "—"
                 warnings.append("%s: the comment states no range" % loc)
@@ -1013,6 +1028,7 @@ def describe_class(mod, cls, path, errors, warnings):
                                                    fmt_num(probed[1])))
                 if not stated and probed:
                     p.range_text = "each [%s, %s]" % (fmt_num(probed[0]), fmt_num(probed[1]))
+                    p.range_numbers = probed
             if p.kind == "list":
                 most = probe_list_size(klass, p)
                 m = re.search(r"\bat most (\d+)", text)
@@ -1307,10 +1323,320 @@ def render_readme(text, docs, errors):
     return out
 
 
+# ------------------------------------------------------------------------------------------------
+# ParaView server-manager XML (the plugin's view exposes these proxies as subproxies)
+
+
+XML_PASSES = "Plugin/View/StylizePasses.xml"
+XML_VIEW = "Plugin/View/StylizeView.xml"
+XML_GROUP = "stylize_passes"
+# (proxy name, class, label, exposed-name prefix, values of the view's Style that show it; None:
+# every style, no decorator)
+XML_PROXIES = [
+    ("ComicPass", "vtkComicPass", "Comic", "Comic", "1"),
+    ("PixelArtPass", "vtkPixelArtPass", "Pixel art", "PixelArt", "2"),
+    ("SketchPass", "vtkSketchPass", "Sketch", "Sketch", "3"),
+    ("LightingPass", "vtkStylizeLightingPass", "Lighting", "Lighting", None),
+]
+XML_ALL_STYLES = "1 2 3"
+# Parameters the view sets itself, so not exposed: (class, parameter) -> why.
+XML_SKIP = {("vtkStylizeLightingPass", "Model"): "set by the view"}
+# panel_visibility="advanced": tuning knobs of the algorithms rather than of the look, by name,
+# and settings whose comment says they are for measurement, testing or a baseline.
+XML_ADVANCED_NAME = re.compile(r"(?:Thresholds?|Tolerance|Stride|Seed)$|^ReferenceHeight$")
+XML_ADVANCED_TEXT = re.compile(
+    r"\b(?:measurements?|testing|numeric tests?|baseline|accuracy study)\b", re.I)
+XML_ADVANCED_RULE = (
+    'panel_visibility="advanced" marks the tuning parameters: names ending in Threshold(s), '
+    "Tolerance, Stride or Seed, the ReferenceHeight (the size of a point), and parameters whose "
+    "comment says they are for measurement, testing or a baseline (e.g. the accuracy study's "
+    "screen-space LIC).")
+XML_INT_TYPES = {"int", "bool", "unsigned int", "long", "vtkIdType", "unsigned char", "char"}
+XML_WIDTH = 100
+
+
+def xml_text(text):
+    return escape(text)
+
+
+def xml_attr(text):
+    return escape(str(text), {'"': "&quot;"})
+
+
+def xml_num(v, loc, errors):
+    """A number as ParaView reads it (istringstream): no inf/nan; integral values without '.0'."""
+    if isinstance(v, bool):
+        return "1" if v else "0"
+    if isinstance(v, int):
+        return str(v)
+    v = float(v)
+    if math.isnan(v) or math.isinf(v):
+        errors.append("%s: %r cannot be written in the ParaView XML" % (loc, v))
+        return "0"
+    if v.is_integer() and abs(v) < 1e15:
+        return str(int(v))
+    return repr(v)
+
+
+def readable_enum(symbol):
+    """PALETTE16 -> 'Palette 16', SCREEN_2D -> 'Screen 2D', NO_EDGES -> 'No edges'."""
+    words = []
+    for part in symbol.split("_"):
+        words.extend(w for w in re.split(r"(?<=[A-Za-z])(?=\d)", part) if w)
+    out = []
+    for i, w in enumerate(words):
+        if re.search(r"\d", w):
+            out.append(w)
+        else:
+            out.append(w.capitalize() if i == 0 else w.lower())
+    return " ".join(out)
+
+
+def plain(text):
+    """Doc text for a tooltip: no markdown, normalized whitespace."""
+    text = text.replace("<br>", " ").replace("`", "").replace("\\|", "|")
+    return re.sub(r"\s+", " ", text).strip()
+
+
+def xml_kind(p):
+    """How a parameter is exposed: 'bool', 'enum', 'int', 'double', 'string', or None."""
+    if p.kind in ("object", "list"):
+        return None
+    if p.kind == "bool":
+        return "bool"
+    if p.kind in ("enum", "bitmask"):
+        return "enum" if p.kind == "enum" else "int"
+    if p.kind == "string":
+        return "string"
+    types = [a[0] for a in p.setter_args] if p.setter_args else [p.type]
+    if all(t in XML_INT_TYPES for t in types):
+        if p.kind == "scalar" and p.range_numbers and tuple(p.range_numbers) == (0, 1) and \
+                re.search(r"\bon/off\b|\bon\b.*\boff\b|\boff\b.*\bon\b", p.doc):
+            return "bool"
+        return "int"
+    return "double"
+
+
+def xml_skip_reason(cls, p):
+    if (cls, p.name) in XML_SKIP:
+        return XML_SKIP[(cls, p.name)]
+    if p.kind == "object":
+        return "object-valued, a %s" % p.object_type
+    if p.kind == "list":
+        return "list-valued, %s()/RemoveAll%ss()" % (p.setter, p.name)
+    if p.kind == "writeonly" and p.default is None:
+        return "no getter and no known default"
+    return None
+
+
+def xml_documentation(p, kind):
+    parts = [plain(p.meaning_full)]
+    if kind == "enum" and p.kind == "enum":
+        entries = [(readable_enum(n), plain(d)) for n, _, d in p.enum_entries]
+        if any(d for _, d in entries):
+            parts.append(" ".join("%s: %s." % (t, d.rstrip(".")) if d else "%s." % t
+                                  for t, d in entries))
+        parts.append("Default %s." % readable_enum(enum_symbol(p, p.default)))
+    elif kind == "bool":
+        parts.append("On/off, default %s." % ("on" if p.default else "off"))
+    elif kind == "string":
+        parts.append('Text, default "%s".' % (p.default or ""))
+    else:
+        unit = "Unit: %s. " % p.unit if p.unit not in ("—", "") else ""
+        default = plain(p.default_text)
+        rng = plain(p.range_text)
+        if p.allowed_values:
+            sentence = "Values %s, default %s." % (rng, default)
+        elif rng and rng != "—":
+            if rng.startswith("each "):
+                rng = rng[5:] + " each"
+            sentence = "Range %s, default %s." % (rng, default)
+        else:
+            sentence = "Default %s." % default
+        parts.append(unit + sentence)
+    return " ".join(t for t in parts if t)
+
+
+def wrap_xml_text(text, indent):
+    lines = textwrap.wrap(text, XML_WIDTH - len(indent), break_long_words=False,
+                          break_on_hyphens=False)
+    # a line starting with "- " or "* " could read as a list in ParaView's rst-to-html
+    out = []
+    for line in lines:
+        if out and re.match(r"[-*+] ", line):
+            out[-1] += " " + line
+        else:
+            out.append(line)
+    return "\n".join(indent + line for line in out)
+
+
+def xml_open(tag, attrs, indent, close=">"):
+    """An element's start tag; attributes past the line width go on indented continuation lines."""
+    items = ['%s="%s"' % (k, xml_attr(v)) for k, v in attrs]
+    line = "%s<%s %s%s" % (indent, tag, " ".join(items), close)
+    if len(line) <= XML_WIDTH:
+        return [line]
+    lines = ["%s<%s %s" % (indent, tag, items[0])]
+    for i, item in enumerate(items[1:], 2):
+        tail = len(close) if i == len(items) else 0
+        if len(lines[-1]) + 1 + len(item) + tail <= XML_WIDTH:
+            lines[-1] += " " + item
+        else:
+            lines.append(indent + "    " + item)
+    lines[-1] += close
+    return lines
+
+
+def xml_advanced(p):
+    return bool(XML_ADVANCED_NAME.search(p.name) or XML_ADVANCED_TEXT.search(p.doc))
+
+
+def xml_property(d, p, errors):
+    """The lines of one property element, or None with the reason it is not exposed."""
+    loc = "%s:%d: %s::%s" % (p.header_path, p.line, d.cls, p.name)
+    kind = xml_kind(p)
+    size = p.size if p.kind in ("vector", "writeonly") else 1
+    element = {"bool": "IntVectorProperty", "enum": "IntVectorProperty",
+               "int": "IntVectorProperty", "double": "DoubleVectorProperty",
+               "string": "StringVectorProperty"}[kind]
+    default = p.default
+    if kind == "string":
+        defaults = "" if default is None else default
+    else:
+        values = default if isinstance(default, (tuple, list)) else (default,)
+        if len(values) != size:
+            errors.append("%s: %d default values for %d elements" % (loc, len(values), size))
+        if kind in ("bool", "enum", "int"):
+            values = [int(v) for v in values]
+        defaults = " ".join(xml_num(v, loc, errors) for v in values)
+    attrs = [("name", p.name), ("command", p.setter), ("number_of_elements", str(size)),
+             ("default_values", defaults)]
+    if xml_advanced(p):
+        attrs.append(("panel_visibility", "advanced"))
+    is_color = (kind == "double" and size == 3
+                and (re.search(r"Colou?r$", p.name) or p.unit == "RGB"))
+    if is_color:
+        attrs.append(("panel_widget", "color_selector"))
+    L = xml_open(element, attrs, "      ")
+    if kind == "bool":
+        L.append('        <BooleanDomain name="bool"/>')
+    elif kind == "enum" or (kind == "int" and p.allowed_values):
+        L.append('        <EnumerationDomain name="enum">')
+        if kind == "enum":
+            entries = [(v, readable_enum(n)) for n, v, _ in p.enum_entries]
+        else:
+            entries = [(int(v), fmt_num(v)) for v in p.allowed_values]
+        for value, text in entries:
+            L.append('          <Entry value="%d" text="%s"/>' % (value, xml_attr(text)))
+        L.append("        </EnumerationDomain>")
+    elif kind in ("int", "double"):
+        rng = p.range_numbers
+        if p.kind == "bitmask":
+            instance = d.klass()
+            rng = (getattr(instance, "Get%sMinValue" % p.name)(),
+                   getattr(instance, "Get%sMaxValue" % p.name)())
+        if rng is not None:
+            lo = " ".join([xml_num(int(rng[0]) if kind == "int" else rng[0], loc, errors)] * size)
+            hi = " ".join([xml_num(int(rng[1]) if kind == "int" else rng[1], loc, errors)] * size)
+            L.append('        <%sRangeDomain name="range" min="%s" max="%s"/>' % (
+                "Int" if kind == "int" else "Double", lo, hi))
+    L.append("        <Documentation>")
+    L.append(wrap_xml_text(xml_text(xml_documentation(p, kind)), "          "))
+    L.append("        </Documentation>")
+    L.append("      </%s>" % element)
+    return L
+
+
+def xml_exposed(docs_by_class, errors):
+    """{proxy name: [(parameter, lines)]} and {proxy name: [(parameter, why skipped)]}."""
+    exposed, skipped = {}, {}
+    for name, cls, _, _, _ in XML_PROXIES:
+        d = docs_by_class[cls]
+        exposed[name], skipped[name] = [], []
+        for p in d.params:
+            why = xml_skip_reason(cls, p)
+            if why:
+                skipped[name].append((p, why))
+            else:
+                exposed[name].append((p, xml_property(d, p, errors)))
+    return exposed, skipped
+
+
+def render_xml_passes(docs_by_class, exposed, skipped):
+    L = ["<!--",
+         "  Generated by scripts/parameters.py from the headers in Passes/ and the built classes;",
+         "  do not edit by hand: run /usr/bin/python3 scripts/parameters.py (ctest -R",
+         "  docs.parameters fails when this file is out of date).",
+         "",
+         "  One proxy per pass, one property per user parameter of the class (docs/PARAMETERS.md).",
+         "  Defaults: Get<Name>() of a new instance; ranges and units as in docs/PARAMETERS.md.",
+         ""]
+    L.extend("  " + line for line in textwrap.wrap(XML_ADVANCED_RULE, XML_WIDTH - 2))
+    L.append("-->")
+    L.append("<ServerManagerConfiguration>")
+    L.append('  <ProxyGroup name="%s">' % XML_GROUP)
+    for name, cls, label, _, _ in XML_PROXIES:
+        L.append('    <Proxy name="%s" class="%s" label="%s">' % (name, cls, xml_attr(label)))
+        brief = plain(docs_by_class[cls].brief)
+        if brief:
+            L.append("      <Documentation>")
+            L.append(wrap_xml_text(xml_text(brief), "        "))
+            L.append("      </Documentation>")
+        if skipped[name]:
+            note = "not exposed: " + "; ".join("%s (%s)" % (p.name, why)
+                                               for p, why in skipped[name])
+            L.append("      <!--")
+            L.append(wrap_xml_text(note.replace("--", "-"), "        "))
+            L.append("      -->")
+        for _, lines in exposed[name]:
+            L.extend(lines)
+        L.append("    </Proxy>")
+    L.append("  </ProxyGroup>")
+    L.append("</ServerManagerConfiguration>")
+    L.append("")
+    return "\n".join(L)
+
+
+XML_VIEW_BLOCK = re.compile(
+    r"([ \t]*<!-- generated:exposed:(\w+) begin -->\n)(.*?)([ \t]*<!-- generated:exposed:\2 end -->)",
+    re.S)
+
+
+def render_xml_view(view_xml, exposed, errors):
+    """The view's XML with each subproxy's <ExposedProperties> rewritten between its markers."""
+    proxies = {name: (label, prefix, style) for name, _, label, prefix, style in XML_PROXIES}
+    seen = set()
+
+    def block(m):
+        name = m.group(2)
+        if name not in proxies:
+            errors.append("%s: unknown subproxy %s in a generated block" % (XML_VIEW, name))
+            return m.group(0)
+        seen.add(name)
+        label, prefix, style = proxies[name]
+        indent = m.group(1)[: len(m.group(1)) - len(m.group(1).lstrip())]
+        L = ["<ExposedProperties>", '  <PropertyGroup label="%s">' % xml_attr(label)]
+        for p, _ in exposed[name]:
+            L.append('    <Property name="%s" exposed_name="%s%s" />' % (p.name, prefix, p.name))
+        if style:
+            L.append('    <Hints><PropertyWidgetDecorator type="GenericDecorator" '
+                     'mode="visibility" property="Style" value="%s" /></Hints>' % style)
+        L.append("  </PropertyGroup>")
+        L.append("</ExposedProperties>")
+        return m.group(1) + "".join(indent + line + "\n" for line in L) + m.group(4)
+
+    out = XML_VIEW_BLOCK.sub(block, view_xml)
+    for name in proxies:
+        if name not in seen:
+            errors.append("%s: no <!-- generated:exposed:%s begin/end --> markers" % (XML_VIEW, name))
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--check", action="store_true",
-                        help="verify docs/PARAMETERS.md and the README tables; write nothing")
+                        help="verify docs/PARAMETERS.md, the README tables and the ParaView XML "
+                             "in Plugin/View/; write nothing")
     parser.add_argument("--build", default=os.path.join(ROOT, "build"),
                         help="build folder whose python/ and lib/ hold vtkstylize (used when the "
                              "import fails)")
@@ -1330,32 +1656,44 @@ def main():
     if not BLOCK.search(readme):
         warnings.append("%s: no <!-- parameters:CLASS begin --> blocks" % README)
 
+    exposed, skipped = xml_exposed({d.cls: d for d in docs}, errors)
+    xml_passes = render_xml_passes({d.cls: d for d in docs}, exposed, skipped)
+    with open(os.path.join(ROOT, XML_VIEW)) as f:
+        xml_view = render_xml_view(f.read(), exposed, errors)
+
     if not args.quiet:
         for w in warnings:
             print("warning: " + w)
-    out_path = os.path.join(ROOT, OUTPUT)
-    current = open(out_path).read() if os.path.exists(out_path) else ""
+    outputs = [(OUTPUT, generated), (README, new_readme), (XML_PASSES, xml_passes),
+               (XML_VIEW, xml_view)]
     stale = []
-    for path, old, new in ((OUTPUT, current, generated), (README, readme, new_readme)):
-        if old != new:
-            stale.append(path)
-            if args.check:
-                sys.stdout.writelines(difflib.unified_diff(
-                    old.splitlines(True), new.splitlines(True), "a/" + path, "b/" + path))
-    if not args.check:
-        for path, old, new in ((OUTPUT, current, generated), (README, readme, new_readme)):
-            if old != new:
-                os.makedirs(os.path.dirname(os.path.join(ROOT, path)) or ".", exist_ok=True)
-                with open(os.path.join(ROOT, path), "w") as f:
-                    f.write(new)
-                print("wrote %s" % path)
+    for path, new in outputs:
+        full = os.path.join(ROOT, path)
+        old = open(full).read() if os.path.exists(full) else None
+        if old == new:
+            continue
+        stale.append(path)
+        if args.check:
+            if old is None:
+                print("error: %s is missing" % path)
+                continue
+            diff = list(difflib.unified_diff(old.splitlines(True), new.splitlines(True),
+                                             "a/" + path, "b/" + path))
+            sys.stdout.writelines(diff[:DIFF_LINES])
+            if len(diff) > DIFF_LINES:
+                print("... (%d more lines of diff in %s)" % (len(diff) - DIFF_LINES, path))
+        else:
+            os.makedirs(os.path.dirname(full), exist_ok=True)
+            with open(full, "w") as f:
+                f.write(new)
+            print("wrote %s" % path)
     for e in errors:
         print("error: " + e)
     count = sum(len(d.params) for d in docs)
     if args.check:
         if stale:
             print("error: %s out of date: run /usr/bin/python3 scripts/parameters.py"
-                  % " and ".join(stale))
+                  % ", ".join(stale))
         if stale or errors:
             return 1
         print("parameters: %d parameters of %d classes agree with the code (%d warnings)"

@@ -190,7 +190,8 @@ float comicLines(float u, float aa)
 void comicMain()
 {
   ivec2 p = comicPixel();
-  vec3 colour = stylizeSaturateFinite(texelFetch(stylizeColorTexture, p, 0).rgb);
+  vec4 image = texelFetch(stylizeColorTexture, p, 0);
+  vec3 colour = stylizeSaturateFinite(image.rgb);
   float depth = texelFetch(stylizeDepthTexture, p, 0).r;
   bool background = !(depth < 1.0);
   float linearDepth = texelFetch(stylizeLinearDepthTexture, p, 0).r;
@@ -291,7 +292,8 @@ void comicMain()
   {
     discard;
   }
-  gl_FragData[0] = vec4(stylizeSaturateFinite(result), 1.0);
+  gl_FragData[0] =
+    vec4(stylizeSaturateFinite(result), stylizeOutputAlpha(background, image.a, 1.0 - e));
   gl_FragDepth = stylizeWindowDepth(depth);
 }
 

@@ -332,7 +332,8 @@ void pixelMain()
 #endif
   result = edge ? pixelOutlineColor : result;
 #endif
-  gl_FragData[0] = vec4(result, surface ? 1.0 : 0.0);
+  // alpha: 1 for art pixels with a surface or an outline, 0 for the background
+  gl_FragData[0] = vec4(result, surface || edge ? 1.0 : 0.0);
 }
 #endif
 
@@ -346,7 +347,7 @@ void pixelMain()
   {
     discard;
   }
-  gl_FragData[0] = vec4(art.rgb, 1.0);
+  gl_FragData[0] = vec4(art.rgb, stylizeOutputAlpha(art.a < 0.5, 0.0, art.a));
 #ifdef PIXEL_WRITE_DEPTH
 #ifdef PIXEL_FAST
   float depth = texelFetch(stylizeDepthTexture, k, 0).r;

@@ -532,7 +532,8 @@ float sketchStroke(ivec2 p, vec3 x0, vec3 dir0, vec3 n0, bool across)
 void sketchMain()
 {
   ivec2 p = sketchPixel();
-  vec3 colour = texelFetch(stylizeColorTexture, p, 0).rgb;
+  vec4 image = texelFetch(stylizeColorTexture, p, 0);
+  vec3 colour = image.rgb;
   float depth = texelFetch(stylizeDepthTexture, p, 0).r;
   vec4 field = texelFetch(sketchField, p, 0);
   vec3 n0 = texelFetch(stylizeNormalTexture, p, 0).xyz;
@@ -605,7 +606,8 @@ void sketchMain()
   {
     discard;
   }
-  gl_FragData[0] = vec4(stylizeSaturateFinite(result), 1.0);
+  gl_FragData[0] =
+    vec4(stylizeSaturateFinite(result), stylizeOutputAlpha(background, image.a, 0.0));
   gl_FragDepth = stylizeWindowDepth(depth);
 }
 #endif

@@ -47,3 +47,14 @@ int stylizeBayer(ivec2 q)
   return stylizeBayerMatrix[m.y * 8 + m.x];
 }
 #endif
+
+// Alpha of a style's output pixel. Surfaces are opaque. On the background, a scene that came
+// from an image (vtkStylizeGBufferPass::SceneImagePass: a compositor such as IceT leaves the
+// background transparent for the root to fill) keeps the image's alpha, plus the ink drawn
+// there (outlines); a scene rendered from geometry is opaque everywhere, as before.
+uniform int stylizeSceneFromImage;
+
+float stylizeOutputAlpha(bool background, float imageAlpha, float ink)
+{
+  return (background && stylizeSceneFromImage == 1) ? clamp(max(imageAlpha, ink), 0.0, 1.0) : 1.0;
+}

@@ -1,0 +1,176 @@
+#include "vtkPVStylizeView.h"
+
+#include "vtkComicPass.h"
+#include "vtkObjectFactory.h"
+#include "vtkPVDefaultPass.h"
+#include "vtkPVSynchronizedRenderer.h"
+#include "vtkPixelArtPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSketchPass.h"
+#include "vtkStylizeLightingPass.h"
+
+vtkStandardNewMacro(vtkPVStylizeView);
+
+//------------------------------------------------------------------------------
+vtkPVStylizeView::vtkPVStylizeView()
+{
+  this->ComicPass = vtkSmartPointer<vtkComicPass>::New();
+  this->PixelArtPass = vtkSmartPointer<vtkPixelArtPass>::New();
+  this->SketchPass = vtkSmartPointer<vtkSketchPass>::New();
+  this->LightingPass = vtkSmartPointer<vtkStylizeLightingPass>::New();
+  // Per rank, the lighting pass renders what ParaView's default pass renders.
+  this->LightingDelegate = vtkSmartPointer<vtkPVDefaultPass>::New();
+  this->LightingPass->SetDelegatePass(this->LightingDelegate);
+  this->RequestedFXAA = this->UseFXAA;
+}
+
+//------------------------------------------------------------------------------
+vtkPVStylizeView::~vtkPVStylizeView()
+{
+  if (this->SynchronizedRenderers)
+  {
+    this->SynchronizedRenderers->SetImageProcessingPass(nullptr);
+    this->SynchronizedRenderers->SetRenderPass(nullptr);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::SetComicPass(vtkComicPass* pass)
+{
+  this->ComicPass = pass ? pass : vtkSmartPointer<vtkComicPass>::New().GetPointer();
+  this->Modified();
+}
+
+void vtkPVStylizeView::SetPixelArtPass(vtkPixelArtPass* pass)
+{
+  this->PixelArtPass = pass ? pass : vtkSmartPointer<vtkPixelArtPass>::New().GetPointer();
+  this->Modified();
+}
+
+void vtkPVStylizeView::SetSketchPass(vtkSketchPass* pass)
+{
+  this->SketchPass = pass ? pass : vtkSmartPointer<vtkSketchPass>::New().GetPointer();
+  this->Modified();
+}
+
+void vtkPVStylizeView::SetLightingPass(vtkStylizeLightingPass* pass)
+{
+  this->LightingPass =
+    pass ? pass : vtkSmartPointer<vtkStylizeLightingPass>::New().GetPointer();
+  this->LightingPass->SetDelegatePass(this->LightingDelegate);
+  this->Modified();
+}
+
+vtkComicPass* vtkPVStylizeView::GetComicPass()
+{
+  return this->ComicPass;
+}
+
+vtkPixelArtPass* vtkPVStylizeView::GetPixelArtPass()
+{
+  return this->PixelArtPass;
+}
+
+vtkSketchPass* vtkPVStylizeView::GetSketchPass()
+{
+  return this->SketchPass;
+}
+
+vtkStylizeLightingPass* vtkPVStylizeView::GetLightingPass()
+{
+  return this->LightingPass;
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeStylePass* vtkPVStylizeView::GetActiveStylePass()
+{
+  switch (this->Style)
+  {
+    case COMIC:
+      return this->ComicPass;
+    case PIXEL_ART:
+      return this->PixelArtPass;
+    case SKETCH:
+      return this->SketchPass;
+    default:
+      return nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::SetUseFXAA(bool use)
+{
+  this->RequestedFXAA = use;
+  this->Superclass::SetUseFXAA(use && this->Style == NONE);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::ReleasePassResources(vtkStylizeStylePass* keep)
+{
+  vtkRenderWindow* window = this->GetRenderWindow();
+  if (!window)
+  {
+    return;
+  }
+  for (vtkStylizeStylePass* pass : { static_cast<vtkStylizeStylePass*>(this->ComicPass),
+         static_cast<vtkStylizeStylePass*>(this->PixelArtPass),
+         static_cast<vtkStylizeStylePass*>(this->SketchPass) })
+  {
+    if (pass && pass != keep)
+    {
+      pass->ReleaseGraphicsResources(window);
+    }
+  }
+  if (!keep && this->LightingPass)
+  {
+    this->LightingPass->ReleaseGraphicsResources(window);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::ConfigurePasses()
+{
+  vtkStylizeStylePass* style = this->GetActiveStylePass();
+  if (style != this->LastStylePass)
+  {
+    // A style that is switched off gives its textures back.
+    this->ReleasePassResources(style);
+    this->LastStylePass = style;
+  }
+  int model = this->LightingModel - 1;
+  if (this->LightingModel == STYLE_DEFAULT)
+  {
+    model = this->Style == COMIC
+      ? vtkStylizeLightingPass::COMIC
+      : (this->Style == PIXEL_ART ? vtkStylizeLightingPass::PIXEL_ART
+                                  : vtkStylizeLightingPass::STANDARD);
+  }
+  this->LightingPass->SetModel(model);
+  const bool lighting = style || this->LightingModel != STYLE_DEFAULT;
+  this->Superclass::SetUseFXAA(this->RequestedFXAA && !style);
+  this->SynchronizedRenderers->SetRenderPass(lighting ? this->LightingPass.GetPointer() : nullptr);
+  if (style)
+  {
+    // The composited depth is needed (IceT pastes it back only when asked).
+    this->SynchronizedRenderers->SetUseDepthBuffer(true);
+  }
+  this->SynchronizedRenderers->SetImageProcessingPass(style);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::Render(bool interactive, bool skip_rendering)
+{
+  this->ConfigurePasses();
+  this->Superclass::Render(interactive, skip_rendering);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  static const char* const names[] = { "None", "Comic", "Pixel art", "Sketch" };
+  os << indent << "Style: " << names[this->Style] << "\n";
+  os << indent << "LightingModel: " << this->LightingModel << "\n";
+  os << indent << "RequestedFXAA: " << this->RequestedFXAA << "\n";
+}

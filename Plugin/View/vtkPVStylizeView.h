@@ -1,0 +1,126 @@
+/**
+ * @class   vtkPVStylizeView
+ * @brief   A ParaView render view that draws the scene in one of the VTK Stylize styles.
+ *
+ * The view is ParaView's render view (everything it does, it still does) plus a Style: None,
+ * Comic, Pixel art or Sketch. It follows the design ParaView's eye-dome-lighting view uses, in
+ * two stages, so that it works the same in the GUI, in pvbatch and under MPI with IceT:
+ *
+ * 1. **Per process, before compositing:** the lighting model (vtkStylizeLightingPass, the
+ *    style's model unless LightingModel says otherwise) is the render pass: each rank lights
+ *    its own part of the data, including per-representation settings
+ *    (vtkStylizeSurfaceRepresentation: the comic subject factor, gray levels, specular gain).
+ * 2. **After compositing:** the style pass (a vtkStylizeStylePass) is the image-processing pass.
+ *    It receives the composited colour and depth (IceT hands over nothing else) and runs its
+ *    screen-space stages on them, with normals and positions reconstructed from the depth
+ *    (vtkStylizeGBufferPass, SceneImagePass). With one process the same path is taken, so the
+ *    image does not depend on the number of ranks beyond what compositing itself changes.
+ *
+ * The passes are the view's sub-proxies (ComicPass, PixelArtPass, SketchPass, LightingPass);
+ * their settings appear in the view's properties panel (generated from the pass headers by
+ * scripts/parameters.py). FXAA is kept off while a style is shown (it would blur the style's
+ * pixels); the user's FXAA setting applies again with the style None.
+ */
+
+#ifndef vtkPVStylizeView_h
+#define vtkPVStylizeView_h
+
+#include "vtkPVRenderView.h"
+#include "vtkSmartPointer.h"              // for vtkSmartPointer
+#include "vtkStylizeParaViewViewModule.h" // for export macro
+
+class vtkComicPass;
+class vtkPixelArtPass;
+class vtkSketchPass;
+class vtkStylizeLightingPass;
+class vtkStylizeStylePass;
+class vtkRenderPass;
+
+class VTKSTYLIZEPARAVIEWVIEW_EXPORT vtkPVStylizeView : public vtkPVRenderView
+{
+public:
+  static vtkPVStylizeView* New();
+  vtkTypeMacro(vtkPVStylizeView, vtkPVRenderView);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The styles. */
+  enum Styles
+  {
+    NONE = 0,
+    COMIC = 1,
+    PIXEL_ART = 2,
+    SKETCH = 3
+  };
+
+  ///@{
+  /** The style drawn: NONE (ParaView's rendering), COMIC, PIXEL_ART or SKETCH. Default NONE. */
+  vtkSetClampMacro(Style, int, NONE, SKETCH);
+  vtkGetMacro(Style, int);
+  ///@}
+
+  /** Lighting model choices: the style's own, or one of vtkStylizeLightingPass's models. */
+  enum LightingModels
+  {
+    STYLE_DEFAULT = 0,
+    STANDARD = 1,
+    COMIC_LIGHTING = 2,
+    PIXEL_ART_LIGHTING = 3
+  };
+
+  ///@{
+  /**
+   * The lighting model: STYLE_DEFAULT (Comic for comic, PixelArt for pixel art, Standard for
+   * sketch, ParaView's own lighting for the style None), or STANDARD, COMIC_LIGHTING or
+   * PIXEL_ART_LIGHTING for any style (with None this shows the lighting model alone).
+   */
+  vtkSetClampMacro(LightingModel, int, STYLE_DEFAULT, PIXEL_ART_LIGHTING);
+  vtkGetMacro(LightingModel, int);
+  ///@}
+
+  ///@{
+  /** The passes (the view's sub-proxies' objects; the view creates its own when not set). */
+  void SetComicPass(vtkComicPass* pass);
+  void SetPixelArtPass(vtkPixelArtPass* pass);
+  void SetSketchPass(vtkSketchPass* pass);
+  void SetLightingPass(vtkStylizeLightingPass* pass);
+  vtkComicPass* GetComicPass();
+  vtkPixelArtPass* GetPixelArtPass();
+  vtkSketchPass* GetSketchPass();
+  vtkStylizeLightingPass* GetLightingPass();
+  ///@}
+
+  /** FXAA as the user asked; applied only while the style is None. */
+  void SetUseFXAA(bool use) override;
+
+  /** The style pass in use (nullptr for the style None). */
+  vtkStylizeStylePass* GetActiveStylePass();
+
+protected:
+  vtkPVStylizeView();
+  ~vtkPVStylizeView() override;
+
+  /** Configures the passes for the current settings, then renders as vtkPVRenderView. */
+  void Render(bool interactive, bool skip_rendering) override;
+
+  /** Puts the lighting pass and the style pass into ParaView's render and image slots. */
+  void ConfigurePasses();
+
+  /** Frees the graphics resources of the style passes other than keep (all when nullptr). */
+  void ReleasePassResources(vtkStylizeStylePass* keep);
+
+  int Style = NONE;
+  int LightingModel = STYLE_DEFAULT;
+  bool RequestedFXAA = false;
+  vtkStylizeStylePass* LastStylePass = nullptr;
+  vtkSmartPointer<vtkComicPass> ComicPass;
+  vtkSmartPointer<vtkPixelArtPass> PixelArtPass;
+  vtkSmartPointer<vtkSketchPass> SketchPass;
+  vtkSmartPointer<vtkStylizeLightingPass> LightingPass;
+  vtkSmartPointer<vtkRenderPass> LightingDelegate;
+
+private:
+  vtkPVStylizeView(const vtkPVStylizeView&) = delete;
+  void operator=(const vtkPVStylizeView&) = delete;
+};
+
+#endif

@@ -1,0 +1,42 @@
+"""Renders a scene in the VTK Stylize view, once per style, with pvbatch (one or more ranks).
+
+    pvbatch-stylize render_styles.py OUTPUT_PREFIX [WIDTH HEIGHT]
+
+Writes OUTPUT_PREFIX-none.png, -comic.png, -pixel.png and -sketch.png and prints one line
+"ranks N pieces P points M" (P: how many ranks hold part of the data) for the caller to check.
+The data is a contour of ParaView's Wavelet source, which ParaView splits across ranks.
+"""
+import sys
+
+from paraview.simple import *  # noqa: F401,F403
+
+prefix = sys.argv[1]
+size = [int(sys.argv[2]), int(sys.argv[3])] if len(sys.argv) > 3 else [400, 300]
+
+view = CreateView("StylizeView")
+view.ViewSize = size
+view.OrientationAxesVisibility = 0
+view.UseColorPaletteForBackground = 0
+view.Background = [0.32, 0.34, 0.43]
+
+wavelet = Wavelet()
+contour = Contour(Input=wavelet, ContourBy=["POINTS", "RTData"], Isosurfaces=[157.0])
+ids = (globals().get("GenerateProcessIds") or globals().get("ProcessIdScalars"))(Input=contour)
+ids.UpdatePipeline()
+array = ids.PointData.GetArray("ProcessId")
+low, high = array.GetRange() if array else (0, 0)
+print("ranks %d pieces %d points %d" % (servermanager.vtkProcessModule.GetProcessModule()
+      .GetNumberOfLocalPartitions(), int(high - low) + 1, ids.GetDataInformation().GetNumberOfPoints()))
+
+display = Show(contour, view)
+ColorBy(display, None)
+view.CameraPosition = [30.0, -45.0, 25.0]
+view.CameraFocalPoint = [0.0, 0.0, 0.0]
+view.CameraViewUp = [0.0, 0.0, 1.0]
+view.ResetCamera()
+
+for style, name in enumerate(["none", "comic", "pixel", "sketch"]):
+    view.Style = style
+    Render(view)
+    SaveScreenshot("%s-%s.png" % (prefix, name), view, ImageResolution=size)
+print("rendered")

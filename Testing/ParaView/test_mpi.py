@@ -1,0 +1,83 @@
+#!/usr/bin/python3
+"""paraview.mpi: the same scene on 1 and on 2 ranks (mpiexec -n N pvbatch), each style compared.
+
+    test_mpi.py PVBATCH_WRAPPER OUTPUT_DIR
+
+With 2 ranks the data is split (each rank holds a piece: checked), each rank lights its piece
+(the lighting pass, before IceT compositing) and the style runs once on the composited colour
+and depth. With 1 rank there is no compositing. Tolerances, from what differs and why:
+
+- none (ParaView's own rendering): at most 2 levels apart (IceT's blending over the background
+  rounds differently by one level).
+- comic, pixel art, sketch: SSIM >= 0.95 and at most 3% of the pixels more than 16 levels apart.
+  IceT leaves the background transparent black (ParaView paints the background colour after
+  the image stage), while one rank sees the background colour: stages that look at colour
+  across the silhouette (colour edges, Canny, the sketch's tone blur) see a different
+  neighbour there, so a few pixels along the silhouettes differ.
+"""
+import os
+import subprocess
+import sys
+
+import vtkstylize
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+pvbatch, out = sys.argv[1], sys.argv[2]
+os.makedirs(out, exist_ok=True)
+script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "render_styles.py")
+env = dict(os.environ)
+if os.getuid() == 0:  # OpenMPI refuses root without these (CI runs as root)
+    env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+failures = []
+
+
+def run(ranks):
+    prefix = os.path.join(out, "ranks%d" % ranks)
+    command = ["mpiexec", "-n", str(ranks), "--oversubscribe", pvbatch, script, prefix]
+    result = subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
+    sys.stdout.write(result.stdout)
+    if result.returncode != 0:
+        sys.stdout.write(result.stderr[-4000:])
+        sys.exit("FAIL: %s exited with %d" % (" ".join(command), result.returncode))
+    pieces = [line for line in result.stdout.splitlines() if line.startswith("ranks")]
+    return prefix, pieces[-1].split() if pieces else []
+
+
+def read(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+one, info1 = run(1)
+two, info2 = run(2)
+if len(info2) < 4 or int(info2[3]) != 2:
+    failures.append("the data is not split across the 2 ranks: %s" % " ".join(info2))
+
+M = vtkstylize.vtkStylizeImageMetrics
+print("| style | SSIM | max difference | pixels > 16 levels | PSNR dB |")
+print("|---|---:|---:|---:|---:|")
+for name in ["none", "comic", "pixel", "sketch"]:
+    a = read("%s-%s.png" % (one, name))
+    b = read("%s-%s.png" % (two, name))
+    dims = a.GetDimensions()
+    pixels = dims[0] * dims[1]
+    ssim = M.SSIM(a, b, 255.0)
+    worst = M.MaximumDifference(a, b)
+    far = M.CountDifferences(a, b, 16.0)
+    psnr = M.PSNR(a, b, 255.0)
+    print("| %s | %.4f | %.0f | %d (%.2f%%) | %.1f |" % (name, ssim, worst, far,
+          100.0 * far / pixels, psnr))
+    if name == "none":
+        if worst > 2:
+            failures.append("none: 1 and 2 ranks differ (max %g)" % worst)
+    elif ssim < 0.95 or far > 0.03 * pixels:
+        failures.append("%s: SSIM %.4f or %d pixels beyond 16 levels" % (name, ssim, far))
+    # each style must differ from ParaView's own image (the style ran after compositing)
+    if name != "none" and M.SSIM(read("%s-none.png" % two), b, 255.0) > 0.9:
+        failures.append("%s: the 2-rank image looks unstylized" % name)
+
+for f in failures:
+    print("FAIL:", f)
+sys.exit(1 if failures else 0)
