@@ -9,9 +9,10 @@ STYLIZE_JOBS="${STYLIZE_JOBS:-$(nproc)}"
 # Debian packages the build, the tests and the demo need.
 # paraview and paraview-dev are for the ParaView plugin (its python3-paraview conflicts with
 # python3-vtk9, so the build unpacks it into the build tree instead of installing it), and
-# mpi-default-bin gives mpiexec for the 1-rank against 2-rank test.
+# mpi-default-bin gives mpiexec for the 1-rank against 2-rank test; libqt5svg5 draws the
+# GUI's toolbar icons (Debian's paraview does not pull it in).
 STYLIZE_PACKAGES=(cmake make g++ libvtk9-dev python3-vtk9 python3-dev libglm-dev xvfb xauth x11-utils
-  libgl1-mesa-dri paraview paraview-dev mpi-default-bin)
+  libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5)
 
 stylize_install_dependencies() {
   local missing=()

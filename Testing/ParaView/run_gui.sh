@@ -1,0 +1,96 @@
+#!/bin/sh
+# paraview.gui: runs the ParaView GUI (Qt) with the VTK Stylize plugin, non-interactively.
+#
+#   run_gui.sh PARAVIEW_STYLIZE OUTPUT_DIR [TIMEOUT_SECONDS]
+#
+# PARAVIEW_STYLIZE is the paraview-stylize wrapper (it sets PV_PLUGIN_PATH, so the plugin
+# autoloads); DISPLAY must name an X server (Xvfb). The GUI runs test_gui.py as its startup
+# script (--script), then plays the QtTesting events written below (--test-script) and quits
+# (--exit; a failed event makes it exit 1). The events type "comic" into the properties panel's
+# search box, check that the panel's Style widget reads Comic and the representation toolbar
+# reads Stylized Surface, widen the panel and call test_gui.capture_window() from the Python
+# shell, which saves the whole window. The test passes when paraview exits 0 and
+# OUTPUT_DIR/gui-result.txt says PASS with no failed line.
+#
+# Why --dr: without it ParaView reads the user's settings and, 1 s after the window shows, opens
+# the modal "Welcome to ParaView" dialog; the first script call that processes Qt events (e.g.
+# assigning a view to the layout) then runs that dialog's event loop and the script never
+# returns. --dr (disable registry) skips the settings and the dialog. HOME and the XDG folders
+# point to a fresh temporary folder as well, so nothing of the user's can interfere.
+# -geometry is Qt's: the main window is 1280x800 at the screen's top-left corner.
+set -u
+paraview=${1:?usage: run_gui.sh PARAVIEW_STYLIZE OUTPUT_DIR [TIMEOUT_SECONDS]}
+out=${2:?usage: run_gui.sh PARAVIEW_STYLIZE OUTPUT_DIR [TIMEOUT_SECONDS]}
+limit=${3:-240}
+here=$(cd "$(dirname "$0")" && pwd)
+mkdir -p "$out" || exit 1
+out=$(cd "$out" && pwd)
+if [ -z "${DISPLAY:-}" ]; then
+  echo "run_gui.sh: DISPLAY is not set (start Xvfb, e.g. Xvfb :95 &, and export DISPLAY=:95)" >&2
+  exit 1
+fi
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/stylize-gui.XXXXXX") || exit 1
+trap 'rm -rf "$tmp"' EXIT
+mkdir -p "$tmp/home" "$tmp/config" "$tmp/cache" "$tmp/data" "$tmp/runtime"
+chmod 700 "$tmp/runtime"
+HOME="$tmp/home" XDG_CONFIG_HOME="$tmp/config" XDG_CACHE_HOME="$tmp/cache"
+XDG_DATA_HOME="$tmp/data" XDG_RUNTIME_DIR="$tmp/runtime" STYLIZE_GUI_OUT="$out"
+export HOME XDG_CONFIG_HOME XDG_CACHE_HOME XDG_DATA_HOME XDG_RUNTIME_DIR STYLIZE_GUI_OUT
+rm -f "$out/gui-result.txt" "$out/gui-window.png" "$out/gui-comic.png" "$out/gui-none.png"
+
+panel=pqClientMainWindow/propertiesDock/propertiesPanel
+sections=$panel/scrollArea/qt_scrollarea_viewport/scrollAreaWidgetContents
+view_panel=$sections/ViewFrame/ProxyPanel
+cat > "$tmp/events.xml" <<EOF
+<?xml version="1.0" ?>
+<pqevents>
+  <pqevent object="pqClientMainWindow" command="process_events" arguments="200" />
+  <pqevent object="$panel/SearchBox/SearchLineEdit" command="set_string" arguments="comic" />
+  <pqevent object="pqClientMainWindow" command="process_events" arguments="200" />
+  <pqcheck object="$view_panel/Style/ComboBox" property="currentText" arguments="Comic" />
+  <pqcheck object="$view_panel/ComicEdgeWidth" property="visible" arguments="true" />
+  <pqcheck object="pqClientMainWindow/representationToolbar/displayRepresentation/comboBox"
+      property="currentText" arguments="Stylized Surface" />
+  <!-- for the screenshot: collapse the source's and the display's sections, widen the left
+       dock area and shorten the pipeline browser (drag the dock separators) -->
+  <pqevent object="$sections/PropertiesButtons/PropertiesButton" command="mousePress"
+      arguments="1,1,0,20,10" />
+  <pqevent object="$sections/PropertiesButtons/PropertiesButton" command="mouseRelease"
+      arguments="1,0,0,20,10" />
+  <pqevent object="$sections/DisplayButtons/DisplayButton" command="mousePress"
+      arguments="1,1,0,20,10" />
+  <pqevent object="$sections/DisplayButtons/DisplayButton" command="mouseRelease"
+      arguments="1,0,0,20,10" />
+  <pqevent object="pqClientMainWindow" command="mousePress" arguments="1,1,0,295,600" />
+  <pqevent object="pqClientMainWindow" command="mouseMove" arguments="1,1,0,380,600" />
+  <pqevent object="pqClientMainWindow" command="mouseMove" arguments="1,1,0,440,600" />
+  <pqevent object="pqClientMainWindow" command="mouseRelease" arguments="1,0,0,440,600" />
+  <pqevent object="pqClientMainWindow" command="mousePress" arguments="1,1,0,200,364" />
+  <pqevent object="pqClientMainWindow" command="mouseMove" arguments="1,1,0,200,300" />
+  <pqevent object="pqClientMainWindow" command="mouseMove" arguments="1,1,0,200,250" />
+  <pqevent object="pqClientMainWindow" command="mouseRelease" arguments="1,0,0,200,250" />
+  <pqevent object="pqClientMainWindow" command="process_events" arguments="300" />
+  <pqevent object="pqClientMainWindow/pythonShellDock/pythonShell/consoleWidget"
+      command="executeCommand" arguments="import __main__; __main__.capture_window()" />
+</pqevents>
+EOF
+
+timeout -k 10 "$limit" "$paraview" --dr -geometry 1280x800+0+0 \
+  --script="$here/test_gui.py" --test-script="$tmp/events.xml" --test-directory="$out" --exit
+rc=$?
+echo "paraview exited with $rc"
+if [ "$rc" -eq 124 ] || [ "$rc" -eq 137 ]; then
+  echo "FAIL: paraview did not exit within $limit s (a modal dialog waiting for a click?)"
+fi
+if [ ! -f "$out/gui-result.txt" ]; then
+  echo "FAIL: test_gui.py wrote no $out/gui-result.txt (the script did not run or did not end)"
+  exit 1
+fi
+cat "$out/gui-result.txt"
+[ "$rc" -eq 0 ] || exit 1
+if [ "$(head -n 1 "$out/gui-result.txt")" != PASS ] || grep -q '^FAIL' "$out/gui-result.txt" ||
+   ! grep -q '^window captured' "$out/gui-result.txt"; then
+  exit 1
+fi
+echo "paraview.gui passed"

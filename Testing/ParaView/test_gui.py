@@ -1,0 +1,204 @@
+"""paraview.gui: the VTK Stylize plugin in the ParaView GUI (run by run_gui.sh, not directly).
+
+    paraview-stylize --dr --script=test_gui.py --test-script=EVENTS.xml --exit
+
+with STYLIZE_GUI_OUT naming the output folder. As the GUI's startup script it replaces the
+layout's render view by a Render View (Stylize), shows a contour of the Wavelet source as a
+Stylized Surface, sets Style to Comic and checks, in the GUI session, the Style property and
+its entries, a few of the exposed pass settings, that 'Stylized Surface' is offered for the
+display, and that the comic image differs from the style None's. It saves the view as
+gui-comic.png and writes gui-result.txt: "PASS" or the failed checks (run_gui.sh fails the test
+unless the file says PASS). Then run_gui.sh's QtTesting events check the properties panel's
+widgets and call capture_window() (below) to save the whole window as gui-window.png.
+"""
+import ctypes
+import ctypes.util
+import os
+import struct
+import zlib
+
+from paraview.simple import *  # noqa: F401,F403
+from paraview.vtk.vtkIOImage import vtkPNGReader
+
+out = os.environ.get("STYLIZE_GUI_OUT", os.getcwd())
+os.makedirs(out, exist_ok=True)
+result = os.path.join(out, "gui-result.txt")
+failures = []
+
+
+def check(condition, message):
+    print(("ok   " if condition else "FAIL ") + message, flush=True)
+    if not condition:
+        failures.append(message)
+
+
+def pixels(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    scalars = reader.GetOutput().GetPointData().GetScalars()
+    n = scalars.GetNumberOfComponents()
+    values = [scalars.GetValue(i) for i in range(scalars.GetNumberOfValues())]
+    return [tuple(values[i:i + 3]) for i in range(0, len(values), n)]
+
+
+def write_png(path, width, height, rgb):
+    """An 8-bit RGB PNG from rows of packed RGB bytes, top row first."""
+    stride = 3 * width
+    raw = b"".join(b"\0" + bytes(rgb[y * stride:(y + 1) * stride]) for y in range(height))
+
+    def chunk(kind, data):
+        return (struct.pack(">I", len(data)) + kind + data
+                + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0,
+                                                                   0, 0))
+                + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+class _XImage(ctypes.Structure):
+    _fields_ = [("width", ctypes.c_int), ("height", ctypes.c_int), ("xoffset", ctypes.c_int),
+                ("format", ctypes.c_int), ("data", ctypes.c_void_p), ("byte_order", ctypes.c_int),
+                ("bitmap_unit", ctypes.c_int), ("bitmap_bit_order", ctypes.c_int),
+                ("bitmap_pad", ctypes.c_int), ("depth", ctypes.c_int),
+                ("bytes_per_line", ctypes.c_int), ("bits_per_pixel", ctypes.c_int),
+                ("red_mask", ctypes.c_ulong), ("green_mask", ctypes.c_ulong),
+                ("blue_mask", ctypes.c_ulong)]
+
+
+def capture_window(name="gui-window.png", width=1280, height=800):
+    """Saves the screen's top-left width x height pixels (the main window, which run_gui.sh
+    places at +0+0) with Xlib's XGetImage, so that no screenshot tool is needed. Called from
+    run_gui.sh's events once the GUI has painted; records the outcome in gui-result.txt."""
+    path = os.path.join(out, name)
+    try:
+        x11 = ctypes.CDLL(ctypes.util.find_library("X11") or "libX11.so.6")
+        x11.XOpenDisplay.restype = ctypes.c_void_p
+        x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
+        x11.XDefaultRootWindow.restype = ctypes.c_ulong
+        x11.XDefaultRootWindow.argtypes = [ctypes.c_void_p]
+        x11.XDefaultScreen.argtypes = [ctypes.c_void_p]
+        x11.XDisplayWidth.argtypes = x11.XDisplayHeight.argtypes = [ctypes.c_void_p, ctypes.c_int]
+        x11.XGetImage.restype = ctypes.POINTER(_XImage)
+        x11.XGetImage.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.c_int, ctypes.c_int,
+                                  ctypes.c_uint, ctypes.c_uint, ctypes.c_ulong, ctypes.c_int]
+        x11.XCloseDisplay.argtypes = [ctypes.c_void_p]
+        display = x11.XOpenDisplay(None)
+        if not display:
+            raise RuntimeError("cannot open the X display")
+        try:
+            screen = x11.XDefaultScreen(display)
+            width = min(width, x11.XDisplayWidth(display, screen))
+            height = min(height, x11.XDisplayHeight(display, screen))
+            image = x11.XGetImage(display, x11.XDefaultRootWindow(display), 0, 0, width, height,
+                                  ctypes.c_ulong(-1).value, 2)  # AllPlanes, ZPixmap
+            if not image:
+                raise RuntimeError("XGetImage failed")
+            im = image.contents
+            if im.bits_per_pixel != 32 or im.byte_order != 0:  # 32-bit LSBFirst pixels only
+                raise RuntimeError("unsupported pixels: %d bits, byte order %d"
+                                   % (im.bits_per_pixel, im.byte_order))
+            data = ctypes.string_at(im.data, im.bytes_per_line * height)
+            shift = {m: (m & -m).bit_length() - 1 for m in (im.red_mask, im.green_mask,
+                                                              im.blue_mask)}
+            rgb = bytearray(3 * width * height)
+            for y in range(height):
+                row = data[y * im.bytes_per_line:y * im.bytes_per_line + 4 * width]
+                for c, mask in enumerate((im.red_mask, im.green_mask, im.blue_mask)):
+                    rgb[3 * width * y + c:3 * width * (y + 1):3] = row[shift[mask] // 8::4]
+        finally:
+            x11.XCloseDisplay(display)
+        write_png(path, width, height, rgb)
+        colours = len(set(bytes(rgb[i:i + 3]) for i in range(0, len(rgb), 3 * 97)))
+        message = "window captured to %s (%dx%d, %d colours sampled)" % (path, width, height,
+                                                                         colours)
+        ok = colours > 20
+    except Exception as error:  # noqa: BLE001 - recorded as a failure
+        message, ok = "window capture failed: %s" % error, False
+    print(("ok   " if ok else "FAIL ") + message, flush=True)
+    with open(result, "a") as f:
+        f.write(("" if ok else "FAIL ") + message + "\n")
+    return ok
+
+
+def run():
+    # --- the plugin's view in the GUI's layout, in place of the default render view
+    layout = GetLayout()
+    check(layout is not None, "the GUI has an active layout")
+    old = GetActiveView()
+    if old is not None:
+        check(old.GetXMLName() == "RenderView", "the default view is a render view (%s)"
+              % old.GetXMLName())
+        Delete(old)
+        del old
+    view = CreateView("StylizeView")  # raises when the plugin did not load
+    check(view.GetXMLLabel() == "Render View (Stylize)", "view label '%s'" % view.GetXMLLabel())
+    AssignViewToLayout(view=view, layout=layout, hint=0)
+    SetActiveView(view)
+    check(layout.GetViewLocation(view) >= 0 and len(GetViewsInLayout(layout)) == 1,
+          "the Stylize view is the layout's only view")
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [1.0, 1.0, 1.0]
+
+    # --- the properties the panel shows
+    style = view.GetProperty("Style")
+    check(style is not None, "view property Style exists")
+    entries = [style.GetDomain("enum").GetEntryText(i)
+               for i in range(style.GetDomain("enum").GetNumberOfEntries())]
+    check(entries == ["None", "Comic", "Pixel art", "Sketch"], "Style entries %s" % entries)
+    for name in ["ComicEdgeWidth", "ComicDots", "ComicHatching", "PixelArtPixelSize",
+                 "SketchStepLength", "LightingSubjectFactor"]:
+        check(view.GetProperty(name) is not None, "view property %s exists" % name)
+    exposed = [p for p in view.ListProperties()
+               if p.startswith(("Comic", "PixelArt", "Sketch", "Lighting"))]
+    check(len(exposed) >= 60, "at least 60 pass settings on the view (%d)" % len(exposed))
+
+    # --- a contour of the Wavelet source as a Stylized Surface
+    wavelet = Wavelet()
+    contour = Contour(Input=wavelet, ContourBy=["POINTS", "RTData"], Isosurfaces=[157.0])
+    display = Show(contour, view)
+    available = list(display.GetProperty("Representation").Available)
+    check("Stylized Surface" in available, "'Stylized Surface' offered for the display %s"
+          % available)
+    display.SetRepresentationType("Stylized Surface")
+    check(display.Representation == "Stylized Surface", "display representation %s"
+          % display.Representation)
+    check(display.GetProperty("StylizeSubjectFactor") is not None,
+          "display property StylizeSubjectFactor exists")
+    view.CameraPosition = [30.0, -45.0, 25.0]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    Render(view)  # the first render resets the camera; move closer after it
+    view.ResetCamera()
+    focal, position = list(view.CameraFocalPoint), list(view.CameraPosition)
+    view.CameraPosition = [f + (p - f) / 1.3 for f, p in zip(focal, position)]  # closer
+
+    # --- the style None, then Comic: the comic image is gray and differs from None's
+    images = {}
+    for index, name in [(0, "none"), (1, "comic")]:
+        view.Style = index
+        Render(view)
+        path = os.path.join(out, "gui-%s.png" % name)
+        SaveScreenshot(path, view, ImageResolution=[600, 450])
+        images[name] = pixels(path)
+    element = view.SMProxy.GetProperty("Style").GetElement(0)
+    check(element == 1 and view.Style == "Comic", "Style is Comic (%d, %s)" % (element, view.Style))
+    d = sum(abs(x - y) for p, q in zip(images["none"], images["comic"])
+            for x, y in zip(p, q)) / (3.0 * max(1, len(images["none"])))
+    check(d > 5.0, "the comic image differs from the style None's (mean %.1f levels)" % d)
+    chroma = max(max(p) - min(p) for p in images["comic"])
+    check(chroma <= 2, "the comic image is gray (chroma %d)" % chroma)
+    # the contour stays the active source, so the panel shows its display and the view
+    SetActiveSource(contour)
+
+
+try:
+    run()
+except Exception as error:  # noqa: BLE001 - any error fails the test through the result file
+    import traceback
+    traceback.print_exc()
+    failures.append("error: %r" % error)
+with open(result, "w") as f:
+    f.write("".join("FAIL %s\n" % m for m in failures) if failures else "PASS\n")
+print("%d failures" % len(failures), flush=True)
