@@ -8,6 +8,7 @@
 // ms, ratios to plain, light-count slopes, triangle-count flatness). Run with --help.
 
 #include "vtkCamera.h"
+#include "vtkCameraPass.h"
 #include "vtkComicPass.h"
 #include "vtkPixelArtPass.h"
 #include "vtkSketchPass.h"
@@ -76,7 +77,7 @@ const std::vector<std::string>& AllConfigs()
     "light-standard", "light-comic", "light-pixelart", "gbuf-standard", "gbuf-comic",
     "gbuf-pixelart", "gbuf-standard-color", "gbuf-comic-lin", "comic", "comic-geometric", "pixel-fast-2",
     "pixel-fast-4", "pixel-fast-8", "pixel-faithful-2", "pixel-faithful-4", "pixel-faithful-8", "sketch-2", "sketch-4", "sketch-8",
-    "sketch-8-stage" };
+    "sketch-8-stage", "comic-image", "pixel-image", "sketch-image" };
   return configs;
 }
 
@@ -460,6 +461,32 @@ ConfigPasses MakeConfig(const std::string& name, double diagonal)
     c.Description = name == "comic"
       ? "vtkComicPass, defaults (three edge phases, dots, hatching, screen anchor)"
       : "vtkComicPass, depth and normal edges only (single screen pass), dots, hatching";
+  }
+  else if (name == "comic-image" || name == "pixel-image" || name == "sketch-image")
+  {
+    // The image path (ParaView's, after IceT): the style runs over its delegate's colour and
+    // depth, lit by the style's own lighting pass (default delegate), normals reconstructed.
+    vtkSmartPointer<vtkStylizeStylePass> style;
+    if (name == "comic-image")
+    {
+      style = vtkSmartPointer<vtkComicPass>::New();
+    }
+    else if (name == "pixel-image")
+    {
+      style = vtkSmartPointer<vtkPixelArtPass>::New();
+    }
+    else
+    {
+      style = vtkSmartPointer<vtkSketchPass>::New();
+    }
+    auto camera = vtkSmartPointer<vtkCameraPass>::New();
+    camera->SetDelegatePass(style->GetLightingPass());
+    style->SetDelegatePass(camera);
+    c.Root = style;
+    c.Keep = { camera };
+    c.Description = std::string(style->GetClassName()) +
+      " over its delegate's image (camera pass -> its lighting pass), defaults: the path ParaView "
+      "takes after compositing";
   }
   else if (name.rfind("pixel-", 0) == 0)
   {
