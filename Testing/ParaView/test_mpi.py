@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """paraview.mpi: the same scene on 1 and on 2 ranks (mpiexec -n N pvbatch), each style compared.
 
-    test_mpi.py PVBATCH_WRAPPER OUTPUT_DIR
+    test_mpi.py PVBATCH_WRAPPER OUTPUT_DIR [BASELINE_DIR]
 
 With 2 ranks the data is split (each rank holds a piece: checked), each rank lights its piece
 (the lighting pass, before IceT compositing) and the style runs once on the composited colour
@@ -14,8 +14,14 @@ and depth. With 1 rank there is no compositing. Tolerances, from what differs an
   the image stage), while one rank sees the background colour: stages that look at colour
   across the silhouette (colour edges, Canny, the sketch's tone blur) see a different
   neighbour there, so a few pixels along the silhouettes differ.
+
+With BASELINE_DIR, the 1-rank images are also regression images: each must match
+BASELINE_DIR/paraview.<style>.png with at most 0.2% of the pixels more than 2 levels apart and
+none more than 32 (llvmpipe renders the same image byte for byte; the margin is for another
+Mesa). A missing baseline fails and names the image to copy there.
 """
 import os
+import shutil
 import subprocess
 import sys
 
@@ -23,6 +29,7 @@ import vtkstylize
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 pvbatch, out = sys.argv[1], sys.argv[2]
+baselines = sys.argv[3] if len(sys.argv) > 3 else None
 os.makedirs(out, exist_ok=True)
 script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "render_styles.py")
 env = dict(os.environ)
@@ -77,6 +84,26 @@ for name in ["none", "comic", "pixel", "sketch"]:
     # each style must differ from ParaView's own image (the style ran after compositing)
     if name != "none" and M.SSIM(read("%s-none.png" % two), b, 255.0) > 0.9:
         failures.append("%s: the 2-rank image looks unstylized" % name)
+
+if baselines:
+    for name in ["none", "comic", "pixel", "sketch"]:
+        image = "%s-%s.png" % (one, name)
+        baseline = os.path.join(baselines, "paraview.%s.png" % name)
+        if not os.path.exists(baseline):
+            failures.append("no baseline %s: copy %s there if it is right" % (baseline, image))
+            continue
+        a, b = read(image), read(baseline)
+        if a.GetDimensions() != b.GetDimensions():
+            failures.append("%s: size %s, baseline %s" % (name, a.GetDimensions(), b.GetDimensions()))
+            continue
+        dims = a.GetDimensions()
+        worst = M.MaximumDifference(a, b)
+        far = M.CountDifferences(a, b, 2.0)
+        print("baseline %s: max difference %g levels, %d pixels beyond 2 levels" % (name, worst, far))
+        if worst > 32 or far > 0.002 * dims[0] * dims[1]:
+            shutil.copy(image, os.path.join(out, "paraview.%s.failed.png" % name))
+            failures.append("%s differs from its baseline (max %g, %d pixels beyond 2 levels)"
+                            % (name, worst, far))
 
 for f in failures:
     print("FAIL:", f)
