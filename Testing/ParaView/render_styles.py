@@ -2,7 +2,9 @@
 
     pvbatch-stylize render_styles.py OUTPUT_PREFIX [WIDTH HEIGHT]
 
-Writes OUTPUT_PREFIX-none.png, -comic.png, -pixel.png and -sketch.png and prints one line
+Writes OUTPUT_PREFIX-none.png, -comic.png, -pixel.png and -sketch.png, then -comic-subject.png
+(comic with the display as a Stylized Surface whose own subject factor is 1: per-representation
+lighting, which every rank must apply to its piece), and prints one line
 "ranks N pieces P points M" (P: how many ranks hold part of the data) for the caller to check.
 The data is a contour of ParaView's Wavelet source, which ParaView splits across ranks.
 """
@@ -39,4 +41,11 @@ for style, name in enumerate(["none", "comic", "pixel", "sketch"]):
     view.Style = style
     Render(view)
     SaveScreenshot("%s-%s.png" % (prefix, name), view, ImageResolution=size)
+view.Style = 1
+display.SetRepresentationType("Stylized Surface")
+display.StylizeOverrideLighting = 1
+display.StylizeSubjectFactor = 1.0
+Render(view)
+SaveScreenshot("%s-comic-subject.png" % prefix, view, ImageResolution=size)
+Delete(view)
 print("rendered")

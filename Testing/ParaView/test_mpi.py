@@ -9,6 +9,9 @@ and depth. With 1 rank there is no compositing. Tolerances, from what differs an
 
 - none (ParaView's own rendering): at most 2 levels apart (IceT's blending over the background
   rounds differently by one level).
+- comic-subject: comic with a Stylized Surface's own subject factor 1 (per-representation
+  lighting, applied by each rank to its piece): as for the styles below, and it must change
+  the 2-rank image (at least 2000 pixels beyond 16 levels from the comic image).
 - comic, pixel art, sketch: SSIM >= 0.95 and at most 3% of the pixels more than 16 levels apart.
   IceT leaves the background transparent black (ParaView paints the background colour after
   the image stage), while one rank sees the background colour: stages that look at colour
@@ -65,7 +68,7 @@ if len(info2) < 4 or int(info2[3]) != 2:
 M = vtkstylize.vtkStylizeImageMetrics
 print("| style | SSIM | max difference | pixels > 16 levels | PSNR dB |")
 print("|---|---:|---:|---:|---:|")
-for name in ["none", "comic", "pixel", "sketch"]:
+for name in ["none", "comic", "pixel", "sketch", "comic-subject"]:
     a = read("%s-%s.png" % (one, name))
     b = read("%s-%s.png" % (two, name))
     dims = a.GetDimensions()
@@ -84,6 +87,13 @@ for name in ["none", "comic", "pixel", "sketch"]:
     # each style must differ from ParaView's own image (the style ran after compositing)
     if name != "none" and M.SSIM(read("%s-none.png" % two), b, 255.0) > 0.9:
         failures.append("%s: the 2-rank image looks unstylized" % name)
+
+# per-representation lighting reached every rank: the subject factor changes the 2-rank image
+# (everywhere: a rank without the setting would leave its piece as in the comic image)
+subject_change = M.CountDifferences(read("%s-comic.png" % two), read("%s-comic-subject.png" % two), 16.0)
+print("comic-subject vs comic on 2 ranks: %d pixels beyond 16 levels" % subject_change)
+if subject_change < 2000:
+    failures.append("the Stylized Surface subject factor barely changes the 2-rank image")
 
 if baselines:
     for name in ["none", "comic", "pixel", "sketch"]:
