@@ -12,6 +12,7 @@
 #include "vtkStylizeTestUtilities.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <vector>
 
@@ -151,6 +152,99 @@ void CompareStyle(const char* name, double minimumSSIM)
   const double white[3] = { 1, 1, 1 };
   STYLIZE_CHECK(CountForeground(image, white) > 20000, "%s: empty image", name);
 }
+
+// The image path at the extremes: scales 1e-6 and 1e6, near/far 1e7, both projections, a 1x1
+// window, an empty scene. Every channel finite, every normal unit length, and each style
+// leaves ink where there is a surface.
+void Extremes()
+{
+  struct Case
+  {
+    const char* Name;
+    int W, H;
+    double Scale;
+    bool Parallel;
+    bool Empty;
+    std::function<void(vtkRenderer*)> Adjust;
+  };
+  const std::vector<Case> cases = {
+    { "scale 1e-6", 320, 240, 1e-6, false, false, nullptr },
+    { "scale 1e6", 320, 240, 1e6, false, false, nullptr },
+    { "scale 1e-6 parallel", 320, 240, 1e-6, true, false, nullptr },
+    { "near/far 1e7", 320, 240, 1.0, false, false,
+      [](vtkRenderer* r) {
+        double range[2];
+        r->GetActiveCamera()->GetClippingRange(range);
+        r->GetActiveCamera()->SetClippingRange(range[1] * 1e-7, range[1]);
+      } },
+    { "1x1 window", 1, 1, 1.0, false, false, nullptr },
+    { "empty scene", 160, 120, 1.0, false, true, nullptr },
+  };
+  for (const Case& c : cases)
+  {
+    TestScene scene = MakeTestScene(c.W, c.H, c.Parallel, c.Scale);
+    if (c.Empty)
+    {
+      scene.Renderer->RemoveAllViewProps();
+    }
+    if (c.Adjust)
+    {
+      c.Adjust(scene.Renderer);
+    }
+    vtkNew<vtkStylizeLightingPass> lighting;
+    vtkNew<vtkStylizeGBufferPass> gbuffer;
+    gbuffer->SetPrecision(vtkStylizeGBufferPass::FULL);
+    gbuffer->SetPositionSpace(vtkStylizeGBufferPass::OBJECT);
+    gbuffer->SetChannels(vtkStylizeGBufferPass::NORMAL | vtkStylizeGBufferPass::POSITION |
+      vtkStylizeGBufferPass::LINEAR_DEPTH | vtkStylizeGBufferPass::DIRECTION);
+    gbuffer->SetSceneImagePass(lighting);
+    scene.Renderer->SetPass(gbuffer);
+    scene.Window->Render();
+    Channels image;
+    Download(gbuffer, image, c.Name);
+    vtkIdType surface = 0;
+    for (vtkIdType i = 0; i < image.Normal->GetNumberOfTuples(); ++i)
+    {
+      const float* n = image.Normal->GetPointer(4 * i);
+      if (n[3] > 0.5f)
+      {
+        ++surface;
+        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        STYLIZE_CHECK(std::abs(len - 1.0) < 1e-3, "%s: normal length %g", c.Name, len);
+      }
+    }
+    std::printf("%s: %lld surface pixels from the image\n", c.Name, static_cast<long long>(surface));
+    STYLIZE_CHECK(c.Empty ? surface == 0 : surface > 0, "%s: surface pixels %lld", c.Name,
+      static_cast<long long>(surface));
+    scene.Renderer->SetPass(nullptr);
+
+    // Each style over the image: ink where there is a surface.
+    std::vector<vtkSmartPointer<vtkStylizeStylePass>> styles = { vtkSmartPointer<vtkComicPass>::New(),
+      vtkSmartPointer<vtkPixelArtPass>::New(), vtkSmartPointer<vtkSketchPass>::New() };
+    for (vtkStylizeStylePass* style : styles)
+    {
+      vtkNew<vtkCameraPass> camera;
+      camera->SetDelegatePass(style->GetLightingPass());
+      style->SetDelegatePass(camera);
+      scene.Renderer->SetPass(style);
+      scene.Window->Render();
+      vtkSmartPointer<vtkImageData> shot = Capture(scene.Window);
+      const double white[3] = { 1, 1, 1 };
+      const vtkIdType ink = CountForeground(shot, white);
+      if (!c.Empty && c.W > 1)
+      {
+        STYLIZE_CHECK(ink > 100, "%s: %s drew no ink", c.Name, style->GetClassName());
+      }
+      if (c.Empty)
+      {
+        STYLIZE_CHECK(ink == 0, "%s: %s drew %lld pixels on an empty scene", c.Name,
+          style->GetClassName(), static_cast<long long>(ink));
+      }
+      scene.Renderer->SetPass(nullptr);
+      style->ReleaseGraphicsResources(scene.Window);
+    }
+  }
+}
 }
 
 int TestSceneImage(int, char*[])
@@ -161,5 +255,6 @@ int TestSceneImage(int, char*[])
   CompareStyle<vtkComicPass>("comic", 0.95);
   CompareStyle<vtkPixelArtPass>("pixel art", 0.98);
   CompareStyle<vtkSketchPass>("sketch", 0.85);
+  Extremes();
   return Failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
