@@ -265,9 +265,7 @@ void vtkComicPass::Render(const vtkRenderState* s)
       .Float("comicBright", this->BrightThreshold)
       .Float("comicDark", this->DarkThreshold)
       .Float("comicCross", this->CrossThreshold)
-      .Int("comicDiscardBackground", ren->Transparent() ? 1 : 0)
-      .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0);
-    gbuffer->SetDepthMappingUniforms(u.GetProgram());
+      .SceneOutput(gbuffer, ren);
   };
 
   if (defines != this->Internals->Defines || this->Internals->Declarations.empty())

@@ -634,9 +634,7 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
       .Float("pixelAnchorUnit", anchorUnit)
       .Float3("pixelOutlineColor", this->OutlineColor[0], this->OutlineColor[1],
         this->OutlineColor[2])
-      .Int("pixelDiscardBackground", ren->Transparent() ? 1 : 0)
-      .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0);
-    gbuffer->SetDepthMappingUniforms(u.GetProgram());
+      .SceneOutput(gbuffer, ren);
   };
   bool ok = true;
   // Runs one art-resolution stage into `targets`.

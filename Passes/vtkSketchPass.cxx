@@ -743,8 +743,7 @@ void vtkSketchPass::Render(const vtkRenderState* s)
       .Float("sketchCross", crossThreshold)
       .Float3("sketchPencil", this->PencilColor[0], this->PencilColor[1], this->PencilColor[2])
       .Float3("sketchPaper", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2])
-      .Int("sketchDiscardBackground", ren->Transparent() ? 1 : 0)
-      .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0);
+      .SceneOutput(gbuffer, ren);
     in.FinalQuad.Render();
   }
   else

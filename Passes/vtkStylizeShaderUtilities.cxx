@@ -1,5 +1,7 @@
 #include "vtkStylizeShaderUtilities.h"
 
+#include "vtkStylizeGBufferPass.h"
+
 #include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -8,6 +10,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkStylizeGBufferPass.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -255,6 +258,16 @@ vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float4
       static_cast<float>(w) };
     this->Program->SetUniform4f(name, v);
   }
+  return *this;
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::SceneOutput(
+  vtkStylizeGBufferPass* gbuffer, vtkRenderer* ren)
+{
+  this->Int("stylizeDiscardBackground", ren->Transparent() ? 1 : 0)
+    .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0);
+  gbuffer->SetDepthMappingUniforms(this->Program);
   return *this;
 }
 

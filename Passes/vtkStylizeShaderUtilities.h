@@ -28,6 +28,7 @@ class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShaderProgram;
+class vtkStylizeGBufferPass;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -90,6 +91,12 @@ public:
     Uniforms& Float4(const char* name, double x, double y, double z, double w);
     /** Binds tex (when not null) to a free unit and sets the sampler. */
     Uniforms& Texture(const char* name, vtkTextureObject* tex);
+    /**
+     * How a style's stage writes the scene's background and depth, from its G-buffer's last
+     * frame: stylizeDiscardBackground (layered renderers), stylizeSceneFromImage (keep an
+     * image's background alpha) and the depth mapping (vtkStylizeDepthFS).
+     */
+    Uniforms& SceneOutput(vtkStylizeGBufferPass* gbuffer, vtkRenderer* ren);
     vtkShaderProgram* GetProgram() const { return this->Program; }
 
   private:

@@ -9,11 +9,6 @@
 // Lengths arrive in pixels of the final (possibly magnified) image, already multiplied by the
 // pixels-per-point factor on the CPU, so the shader is resolution-free.
 
-uniform sampler2D stylizeColorTexture;       // lit colour E
-uniform sampler2D stylizeDepthTexture;       // window depth (written back as gl_FragDepth)
-uniform sampler2D stylizeLinearDepthTexture; // -z_view, 0 where there is no surface
-uniform sampler2D stylizeNormalTexture;      // view-space normal, a = 1 on surfaces
-uniform sampler2D stylizePositionTexture;    // object-space position, a = 1 on surfaces
 uniform sampler2D comicEdgeTexture;          // stage 1 output: luminance of f_normal, k1, k2
 
 uniform ivec2 comicSize;           // viewport size (pixels)
@@ -34,7 +29,6 @@ uniform int comicHatchDirections;  // 0: one direction; n: normal-dependent, n s
 uniform float comicBright;         // a1 of eq. 13-14: dots above
 uniform float comicDark;           // a2 of eq. 13-14: hatching below
 uniform float comicCross;          // cross-hatching below this tone
-uniform int comicDiscardBackground;
 
 float comicLuminance(vec3 c)
 {
@@ -288,7 +282,7 @@ void comicMain()
 #elif COMIC_LAYER == 2
   result = background ? colour : vec3(pattern);
 #endif
-  if (comicDiscardBackground == 1 && background && e >= 1.0)
+  if (stylizeDiscardBackground == 1 && background && e >= 1.0)
   {
     discard;
   }

@@ -14,11 +14,8 @@
 //   PIXEL_STYLIZE_BACKGROUND, PIXEL_PALETTE (0 levels, 1 grays, 2 list), PIXEL_LAYER
 //   (0 pixel art, 1 pixelated, 2 edges).
 
-uniform sampler2D stylizeColorTexture;       // lit colour (full resolution or art pixels)
-uniform sampler2D stylizeDepthTexture;       // window depth
-uniform sampler2D stylizeLinearDepthTexture; // -z_view, 0 where there is no surface
-uniform sampler2D stylizeNormalTexture;      // view-space normal, a = 1 on surfaces
-uniform sampler2D stylizePositionTexture;    // object-space position, a = 1 on surfaces
+// stylizeColorTexture (declared in vtkStylizeScreenFS) is the full-resolution lit colour, or the
+// art pixels once they are reduced.
 uniform sampler2D pixelInputTexture;         // the previous stage's output
 uniform sampler2D pixelArtTexture;           // the art-pixel image (upsample)
 uniform sampler2D pixelPaletteTexture;       // palette colours, N x 1
@@ -43,7 +40,6 @@ uniform float pixelArtWorld;     // world size of an art pixel: times depth (per
 uniform int pixelParallel;
 uniform float pixelAnchorUnit;   // world size of a dither cell (surface anchor)
 uniform vec3 pixelOutlineColor;
-uniform int pixelDiscardBackground;
 
 // This fragment's art pixel (art-resolution stages) from the quad's texture coordinate.
 ivec2 pixelArtCoord()
@@ -343,7 +339,7 @@ void pixelMain()
   ivec2 v = clamp(ivec2(texCoord * vec2(pixelViewportSize)), ivec2(0), pixelViewportSize - 1);
   ivec2 k = clamp((v - pixelGridOrigin) / pixelBlock, ivec2(0), pixelArtSize - 1);
   vec4 art = texelFetch(pixelArtTexture, k, 0);
-  if (pixelDiscardBackground == 1 && art.a < 0.5)
+  if (stylizeDiscardBackground == 1 && art.a < 0.5)
   {
     discard;
   }

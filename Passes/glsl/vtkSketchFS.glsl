@@ -14,11 +14,6 @@
 //   SKETCH_LAYER 0|1|2|3 (sketch, directions, strokes, tone)
 // Lengths arrive in pixels of this viewport or in world units, converted on the CPU.
 
-uniform sampler2D stylizeColorTexture;       // lit colour
-uniform sampler2D stylizeDepthTexture;       // window depth (written back as gl_FragDepth)
-uniform sampler2D stylizeLinearDepthTexture; // -z_view, 0 where there is no surface
-uniform sampler2D stylizeNormalTexture;      // view-space normal, a = 1 on surfaces
-uniform sampler2D stylizePositionTexture;    // object-space position, a = 1 on surfaces
 uniform sampler2D stylizeDirectionTexture;   // G-buffer DIRECTION channel (model-space mode)
 
 uniform ivec2 sketchSize;        // viewport size (pixels)
@@ -407,7 +402,6 @@ uniform vec2 sketchBright;       // t1, t2
 uniform float sketchCross;       // cross-hatching below this tone
 uniform vec3 sketchPencil;
 uniform vec3 sketchPaper;
-uniform int sketchDiscardBackground;
 
 // The field at continuous pixel position f, bilinear over the taps on the stroke's surface
 // (depth within tol of the expected depth), directions flipped to agree with ref. w = 0: none.
@@ -602,7 +596,7 @@ void sketchMain()
 #elif SKETCH_LAYER == 3
   result = surface ? vec3(tone) : colour;
 #endif
-  if (sketchDiscardBackground == 1 && background)
+  if (stylizeDiscardBackground == 1 && background)
   {
     discard;
   }

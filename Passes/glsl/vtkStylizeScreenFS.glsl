@@ -48,6 +48,15 @@ int stylizeBayer(ivec2 q)
 }
 #endif
 
+// The G-buffer channels every style samples (vtkStylizeGBufferPass), and how a style's final
+// stage writes the background (stylizeOutputAlpha() below, stylizeDiscardBackground).
+uniform sampler2D stylizeColorTexture;       // lit colour
+uniform sampler2D stylizeDepthTexture;       // window depth (written back as gl_FragDepth)
+uniform sampler2D stylizeLinearDepthTexture; // -z_view, 0 where there is no surface
+uniform sampler2D stylizeNormalTexture;      // view-space normal, a = 1 on surfaces
+uniform sampler2D stylizePositionTexture;    // object-space position, a = 1 on surfaces
+uniform int stylizeDiscardBackground; // 1 for layered renderers: keep the layer below
+
 // Alpha of a style's output pixel. Surfaces are opaque. On the background, a scene that came
 // from an image (vtkStylizeGBufferPass::SceneImagePass: a compositor such as IceT leaves the
 // background transparent for the root to fill) keeps the image's alpha, plus the ink drawn

@@ -243,16 +243,7 @@ int TestComicExtremes(int, char*[])
       win->Render();
       vtkStylizeGBufferPass* g = comic->GetGBufferPass();
       const std::string tag = k.Name + (parallel ? " [parallel]" : " [perspective]");
-      for (int b : { vtkStylizeGBufferPass::COLOR_BUFFER, vtkStylizeGBufferPass::DEPTH_BUFFER,
-             vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER, vtkStylizeGBufferPass::NORMAL_BUFFER,
-             vtkStylizeGBufferPass::POSITION_BUFFER })
-      {
-        vtkNew<vtkFloatArray> a;
-        if (g->DownloadChannel(b, a))
-        {
-          CheckFinite(a, tag + " buffer " + std::to_string(b));
-        }
-      }
+      CheckChannelsFinite(g, tag);
       auto img = Capture(win);
       const double white[3] = { 1, 1, 1 };
       const vtkIdType ink = CountForeground(img, white);

@@ -1039,15 +1039,7 @@ int TestPixelArtExtremes(int argc, char* argv[])
       },
       true },
     { "empty data", 240, 180, 1.0,
-      [](vtkRenderer* r, P*) {
-        r->RemoveAllViewProps();
-        vtkNew<vtkPolyData> empty;
-        vtkNew<vtkPolyDataMapper> m;
-        m->SetInputData(empty);
-        vtkNew<vtkActor> a;
-        a->SetMapper(m);
-        r->AddActor(a);
-      },
+      [](vtkRenderer* r, P*) { SetEmptyScene(r); },
       false },
   };
   std::vector<Case> all = cases;
@@ -1079,16 +1071,7 @@ int TestPixelArtExtremes(int argc, char* argv[])
         const std::string tag = k.Name + (mode == P::FAST ? " [fast" : " [faithful") +
           (parallel ? ", parallel]" : ", perspective]");
         vtkStylizeGBufferPass* g = pass->GetGBufferPass();
-        for (int b : { vtkStylizeGBufferPass::COLOR_BUFFER, vtkStylizeGBufferPass::DEPTH_BUFFER,
-               vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER, vtkStylizeGBufferPass::NORMAL_BUFFER,
-               vtkStylizeGBufferPass::POSITION_BUFFER })
-        {
-          vtkNew<vtkFloatArray> a;
-          if (g->DownloadChannel(b, a))
-          {
-            CheckFinite(a, tag + " buffer " + std::to_string(b));
-          }
-        }
+        CheckChannelsFinite(g, tag);
         auto img = Capture(win);
         const double white[3] = { 1, 1, 1 };
         const vtkIdType ink = CountForeground(img, white);

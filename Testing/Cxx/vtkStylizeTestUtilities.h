@@ -27,7 +27,9 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeImageMetrics.h"
+#include "vtkPolyData.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkWindowToImageFilter.h"
@@ -344,6 +346,33 @@ inline bool CheckFinite(vtkFloatArray* a, const std::string& what)
   const vtkIdType bad = vtkStylizeImageMetrics::CountNonFinite(a);
   STYLIZE_CHECK(bad == 0, "%s: %lld non-finite values", what.c_str(), static_cast<long long>(bad));
   return bad == 0;
+}
+
+/** Downloads every channel the G-buffer allocated in its last frame and checks it is finite. */
+inline void CheckChannelsFinite(vtkStylizeGBufferPass* g, const std::string& tag)
+{
+  for (int b : { vtkStylizeGBufferPass::COLOR_BUFFER, vtkStylizeGBufferPass::DEPTH_BUFFER,
+         vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER, vtkStylizeGBufferPass::NORMAL_BUFFER,
+         vtkStylizeGBufferPass::POSITION_BUFFER, vtkStylizeGBufferPass::DIRECTION_BUFFER })
+  {
+    vtkNew<vtkFloatArray> a;
+    if (g->DownloadChannel(b, a))
+    {
+      CheckFinite(a, tag + " buffer " + std::to_string(b));
+    }
+  }
+}
+
+/** Replaces the renderer's props by one actor with empty polydata. */
+inline void SetEmptyScene(vtkRenderer* r)
+{
+  r->RemoveAllViewProps();
+  vtkNew<vtkPolyData> empty;
+  vtkNew<vtkPolyDataMapper> m;
+  m->SetInputData(empty);
+  vtkNew<vtkActor> a;
+  a->SetMapper(m);
+  r->AddActor(a);
 }
 
 /** Pixels whose colour differs from the background (RGB 8-bit image). */
