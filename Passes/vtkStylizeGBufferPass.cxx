@@ -146,6 +146,7 @@ public:
   vtkNew<vtkMatrix4x4> View;
   vtkNew<vtkMatrix4x4> InverseModel;
   vtkNew<vtkMatrix4x4> Product;
+  vtkNew<vtkMatrix4x4> Upload; // a matrix on its way to a shader (transposed)
 };
 
 vtkStandardNewMacro(vtkStylizeGBufferPass);
@@ -609,16 +610,13 @@ void vtkStylizeGBufferPass::RenderSceneImage(
   ren->vtkViewport::GetAspect(viewportAspect);
   const double aspectRatio =
     aspect[0] * viewportAspect[1] / (aspect[1] * viewportAspect[0]) * w / static_cast<double>(h);
-  vtkNew<vtkMatrix4x4> inverseProjection;
-  inverseProjection->DeepCopy(
-    ren->GetActiveCamera()->GetProjectionTransformMatrix(aspectRatio, -1.0, 1.0));
-  inverseProjection->Invert();
-  inverseProjection->Transpose();
-  vtkNew<vtkMatrix4x4> inverseView;
-  inverseView->DeepCopy(this->Internals->InverseView);
-  inverseView->Transpose();
-  program->SetUniformMatrix("stylizeInverseProjection", inverseProjection);
-  program->SetUniformMatrix("stylizeInverseView", inverseView);
+  vtkMatrix4x4* upload = this->Internals->Upload;
+  vtkMatrix4x4::Invert(
+    ren->GetActiveCamera()->GetProjectionTransformMatrix(aspectRatio, -1.0, 1.0), upload);
+  upload->Transpose();
+  program->SetUniformMatrix("stylizeInverseProjection", upload);
+  vtkMatrix4x4::Transpose(this->Internals->InverseView, upload);
+  program->SetUniformMatrix("stylizeInverseView", upload);
 
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
