@@ -3,7 +3,7 @@
  * @brief   Black-and-white comic rendering: toon lighting, three-phase edges, halftone dots where
  *          the tone is bright and hatch lines where it is dark.
  *
- * The comic method of "real-time comic-style rendering" (ALGORITHMS.md section 2) as one render
+ * The comic method of "real-time comic-style rendering" (docs/algorithms.md section 2) as one render
  * pass. Use it like any VTK pass: `renderer->SetPass(comic)`; it needs no delegate.
  *
  * 1. The opaque geometry is rendered once into the shared G-buffer (vtkStylizeGBufferPass) with
@@ -41,10 +41,6 @@
 #include "vtkStylizeStylePass.h"
 #include "vtkStylizePassesModule.h" // for export macro
 
-#include <memory> // for std::unique_ptr
-
-class vtkStylizeGBufferPass;
-class vtkStylizeLightingPass;
 
 class VTKSTYLIZEPASSES_EXPORT vtkComicPass : public vtkStylizeStylePass
 {
@@ -73,12 +69,6 @@ public:
   vtkSetClampMacro(Layer, int, COMIC, PATTERN);
   vtkGetMacro(Layer, int);
   ///@}
-
-  /** The lighting pass (Comic model by default); change its model or settings freely. */
-  vtkStylizeLightingPass* GetLightingPass() override;
-
-  /** The G-buffer pass (read-only use: the comic pass sets its channels each frame). */
-  vtkStylizeGBufferPass* GetGBufferPass() override;
 
   ///@{
   /** Draw the three-phase edges. Default on. */
@@ -250,11 +240,11 @@ public:
   vtkGetMacro(ReferenceHeight, double);
   ///@}
 
-  /** Renders the comic image of the renderer's props. */
+  /**
+   * Renders the comic image of the renderer's props: the scene into the G-buffer, the colour
+   * edges (when their weight is not 0), then edges, pattern and ink into the output.
+   */
   void Render(const vtkRenderState* s) override;
-
-  /** Frees the G-buffer, the intermediate textures, the framebuffer and the programs. */
-  void ReleaseGraphicsResources(vtkWindow* w) override;
 
 protected:
   vtkComicPass();
@@ -283,8 +273,15 @@ protected:
   int Layer = COMIC;
   double ReferenceHeight = 1080.0;
 
-  class vtkInternals;
-  std::unique_ptr<vtkInternals> Internals;
+  /** What a frame computes (the enabled stages, their channels and defines). */
+  struct Plan;
+  Plan PlanFrame() const;
+  /** The uniforms both stages read. */
+  void SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, const Plan& plan);
+  /** Stage 1 (colour edges only): luminance of f_normal, k1 and k2 into the edge texture. */
+  void RenderEdgeStage(const Frame& frame, const Plan& plan);
+  /** Stage 2: edges, pattern and ink into the output framebuffer, with the scene's depth. */
+  void RenderCompositeStage(const Frame& frame, const Plan& plan);
 
 private:
   vtkComicPass(const vtkComicPass&) = delete;

@@ -7,15 +7,11 @@
 #include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLError.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLState.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkScalarsToColors.h"
-#include "vtkShaderProgram.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeShaderUtilities.h"
@@ -23,12 +19,8 @@
 #include "vtk_glew.h"
 
 #include "vtkPixelArtFS.h"
-#include "vtkStylizeCommonFS.h"
-#include "vtkStylizeDepthFS.h"
-#include "vtkStylizeScreenFS.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <vector>
 
@@ -58,57 +50,68 @@ int PositiveMod(long long a, long long b)
   const long long m = a % b;
   return static_cast<int>(m < 0 ? m + b : m);
 }
+
+enum Stages
+{
+  REDUCE_STAGE = 0,   // FAITHFUL: average each block of the full-resolution G-buffer
+  GAUSS_STAGE,        // grayscale and the paper's 3x3 Gaussian
+  GRADIENT_STAGE,     // Sobel gradient
+  CLASSIFY_STAGE,     // non-maximum suppression, double threshold, depth and normal edges
+  HYSTERESIS_STAGE,   // one step of hysteresis
+  STYLIZE_STAGE,      // the art pixels: palette, dither, outlines
+  UPSAMPLE_STAGE      // the art pixels into the output
+};
+enum Textures
+{
+  REDUCED_COLOR = 0,
+  REDUCED_LINEAR,
+  REDUCED_NORMAL,
+  REDUCED_POSITION,
+  GRAY,
+  GRADIENT,
+  CLASSES_0,
+  CLASSES_1,
+  ART,
+  PALETTE
+};
 }
 
 class vtkPixelArtPass::vtkInternals
 {
 public:
-  vtkNew<vtkStylizeLightingPass> Lighting;
-  vtkNew<vtkStylizeGBufferPass> GBuffer;
-  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
-
-  // Art-resolution textures.
-  vtkTextureObject* ReducedColor = nullptr;
-  vtkTextureObject* ReducedLinear = nullptr;
-  vtkTextureObject* ReducedNormal = nullptr;
-  vtkTextureObject* ReducedPosition = nullptr;
-  vtkTextureObject* Gray = nullptr;
-  vtkTextureObject* Gradient = nullptr;
-  vtkTextureObject* Classes[2] = { nullptr, nullptr };
-  vtkTextureObject* Art = nullptr;
-  vtkTextureObject* PaletteTexture = nullptr;
-  std::vector<float> PaletteData; // what PaletteTexture holds (RGBA)
+  std::vector<float> PaletteData; // what the PALETTE texture holds (RGBA)
   double PaletteSpread = 0.0;     // its median colour spacing
-
-  vtkStylizeShaderUtilities::ScreenQuad ReduceQuad, GaussQuad, GradientQuad, ClassifyQuad,
-    HysteresisQuad, StylizeQuad, UpsampleQuad;
-  std::string Defines;
-  std::array<std::string, 7> Declarations;
-
-  std::vector<double> Custom; // the CUSTOM palette, RGB
+  std::vector<double> Custom;     // the CUSTOM palette, RGB
   int Block[2] = { 1, 1 };
   int Grid[2] = { 0, 0 };
+};
 
-  void FreeTextures(vtkWindow* w)
-  {
-    using U = vtkStylizeShaderUtilities;
-    for (vtkTextureObject** t : { &this->ReducedColor, &this->ReducedLinear, &this->ReducedNormal,
-           &this->ReducedPosition, &this->Gray, &this->Gradient, &this->Classes[0],
-           &this->Classes[1], &this->Art, &this->PaletteTexture })
-    {
-      U::FreeTexture(*t, w);
-    }
-    this->PaletteData.clear();
-    if (this->Framebuffer)
-    {
-      if (w)
-      {
-        this->Framebuffer->ReleaseGraphicsResources(w);
-      }
-      this->Framebuffer->Delete();
-      this->Framebuffer = nullptr;
-    }
-  }
+/** What a frame computes: the art-pixel grid, the enabled stages, their channels and defines. */
+struct vtkPixelArtPass::Plan
+{
+  int Block[2];        // art pixel size in screen pixels
+  int Grid[2];         // art pixels over the viewport
+  int Origin[2];       // the first art pixel's corner, viewport pixels
+  int ExtentOrigin[2]; // FAITHFUL: the rendered extent of the blocks, viewport pixels
+  int Extent[2];
+  int DitherOrigin[2];
+  double Shift[2];     // the snap shift, pixels
+  double ArtWorld;     // world size of an art pixel (times the depth in perspective)
+  double AnchorUnit;   // world size of a dither cell on the surface
+  bool Fast, WriteDepth, Canny, Sobel, DepthEdges, NormalEdges, Edges, SurfaceAnchor;
+  std::vector<float> Colours; // the list palette (RGBA); empty for LEVELS and GRAYS
+  SceneRequest Scene;
+  std::string Defines;
+};
+
+/** The textures the art-resolution stages read (the G-buffer's, or their block averages). */
+struct vtkPixelArtPass::Inputs
+{
+  vtkTextureObject* Colour;
+  vtkTextureObject* Linear;
+  vtkTextureObject* Normal;
+  vtkTextureObject* Position;
+  vtkTextureObject* Depth; // the full-resolution depth, read by the upsample stage only
 };
 
 vtkStandardNewMacro(vtkPixelArtPass);
@@ -116,29 +119,18 @@ vtkCxxSetObjectMacro(vtkPixelArtPass, LookupTable, vtkScalarsToColors);
 
 //------------------------------------------------------------------------------
 vtkPixelArtPass::vtkPixelArtPass()
-  : Internals(new vtkInternals)
+  : vtkStylizeStylePass(vtkStylizeLightingPass::PIXEL_ART, vtkPixelArtFS,
+      { "PIXEL_STAGE_REDUCE", "PIXEL_STAGE_GAUSS", "PIXEL_STAGE_GRADIENT", "PIXEL_STAGE_CLASSIFY",
+        "PIXEL_STAGE_HYSTERESIS", "PIXEL_STAGE_STYLIZE", "PIXEL_STAGE_UPSAMPLE" },
+      "  pixelMain();\n")
+  , Internals(new vtkInternals)
 {
-  this->Internals->Lighting->SetModel(vtkStylizeLightingPass::PIXEL_ART);
-  this->Internals->GBuffer->SetLightingPass(this->Internals->Lighting);
 }
 
 //------------------------------------------------------------------------------
 vtkPixelArtPass::~vtkPixelArtPass()
 {
   this->SetLookupTable(nullptr);
-  this->Internals->FreeTextures(nullptr);
-}
-
-//------------------------------------------------------------------------------
-vtkStylizeLightingPass* vtkPixelArtPass::GetLightingPass()
-{
-  return this->Internals->Lighting;
-}
-
-//------------------------------------------------------------------------------
-vtkStylizeGBufferPass* vtkPixelArtPass::GetGBufferPass()
-{
-  return this->Internals->GBuffer;
 }
 
 //------------------------------------------------------------------------------
@@ -257,8 +249,6 @@ void vtkPixelArtPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Layer: " << layers[this->Layer] << "\n";
   os << indent << "DepthOutput: " << (this->DepthOutput == DEPTH_ALWAYS ? "always" : "auto")
      << "\n";
-  os << indent << "LightingPass:\n";
-  this->Internals->Lighting->PrintSelf(os, indent.GetNextIndent());
 }
 
 namespace
@@ -325,189 +315,225 @@ double MedianSpacing(const std::vector<float>& rgba)
 //------------------------------------------------------------------------------
 void vtkPixelArtPass::Render(const vtkRenderState* s)
 {
-  vtkOpenGLClearErrorMacro();
-  this->NumberOfRenderedProps = 0;
-  vtkRenderer* ren = s->GetRenderer();
-  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  vtkStylizeGBufferPass* gbuffer = this->Internals->GBuffer;
-  vtkInternals& in = *this->Internals;
-  if (!renWin)
+  Frame frame;
+  if (!this->BeginFrame(s, frame))
   {
     return;
   }
-  int w, h, ox, oy;
-  ren->GetTiledSizeAndOrigin(&w, &h, &ox, &oy);
-  if (w < 1 || h < 1)
+  const Plan plan = this->PlanFrame(s, frame);
+  this->Internals->Block[0] = plan.Block[0];
+  this->Internals->Block[1] = plan.Block[1];
+  this->Internals->Grid[0] = plan.Grid[0];
+  this->Internals->Grid[1] = plan.Grid[1];
+  if (!this->RenderScene(s, plan.Scene))
   {
-    gbuffer->SetGeometryResolution(0, 0);
-    this->RenderScene(s, gbuffer->GetChannels());
     return;
+  }
+  this->UpdatePalette(frame, plan);
+  this->SetShaderDefines(plan.Defines);
+  Inputs inputs = { this->GetSceneTexture(vtkStylizeGBufferPass::COLOR_BUFFER),
+    this->GetSceneTexture(vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER),
+    this->GetSceneTexture(vtkStylizeGBufferPass::NORMAL_BUFFER),
+    this->GetSceneTexture(vtkStylizeGBufferPass::POSITION_BUFFER),
+    this->GetSceneTexture(vtkStylizeGBufferPass::DEPTH_BUFFER) };
+  if (!plan.Fast)
+  {
+    this->RenderReduceStage(frame, plan, inputs);
+  }
+  vtkTextureObject* edges = plan.Edges ? this->RenderEdgeStages(frame, plan, inputs) : nullptr;
+  this->RenderArtStage(frame, plan, inputs, edges);
+  this->RenderUpsampleStage(frame, plan, inputs);
+  this->EndFrame(s);
+}
+
+//------------------------------------------------------------------------------
+vtkPixelArtPass::Plan vtkPixelArtPass::PlanFrame(const vtkRenderState* s, const Frame& frame)
+{
+  Plan p;
+  this->PlanGrid(frame, p);
+  this->PlanPalette(s, p);
+
+  // What this frame computes.
+  p.Fast = this->Mode == FAST;
+  p.WriteDepth = this->DepthOutput == DEPTH_ALWAYS;
+  for (int i = 0; i < s->GetPropArrayCount() && !p.WriteDepth; ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    p.WriteDepth = prop->GetVisibility() &&
+      (prop->HasTranslucentPolygonalGeometry() || prop->IsA("vtkVolume"));
+  }
+  const bool layerEdges = this->Layer != PIXELATED;
+  p.Canny = layerEdges && this->EdgeDetector == CANNY;
+  p.Sobel = layerEdges && this->EdgeDetector == SOBEL;
+  p.DepthEdges = layerEdges && this->DepthEdges;
+  p.NormalEdges = layerEdges && this->NormalEdges;
+  p.Edges = p.Canny || p.Sobel || p.DepthEdges || p.NormalEdges;
+  p.SurfaceAnchor = this->Layer == PIXEL_ART && this->DitherAnchor == SURFACE;
+
+  // The G-buffer: at the art-pixel resolution over the grid (FAST) or at full resolution over
+  // the blocks' extent (FAITHFUL), shifted onto the grid.
+  SceneRequest& r = p.Scene;
+  r.Channels = vtkStylizeGBufferPass::LINEAR_DEPTH;
+  if (p.NormalEdges)
+  {
+    r.Channels |= vtkStylizeGBufferPass::NORMAL;
+  }
+  if (p.SurfaceAnchor)
+  {
+    r.Channels |= vtkStylizeGBufferPass::POSITION;
+    r.PositionSpace = vtkStylizeGBufferPass::OBJECT;
+  }
+  const int* size = frame.Size;
+  for (int a = 0; a < 2; ++a)
+  {
+    const double first = p.Fast ? p.Origin[a] : p.ExtentOrigin[a];
+    const double span = p.Fast ? static_cast<double>(p.Grid[a]) * p.Block[a] : p.Extent[a];
+    r.ScreenTransform[a] = size[a] / span;
+    r.ScreenTransform[2 + a] =
+      r.ScreenTransform[a] - 1.0 - 2.0 * first / span + 2.0 * p.Shift[a] / span;
+    r.AfterShift[a] = 2.0 * p.Shift[a] / size[a];
+  }
+  if (p.Fast)
+  {
+    r.Resolution[0] = p.Grid[0];
+    r.Resolution[1] = p.Grid[1];
+  }
+  else if (p.Extent[0] != size[0] || p.Extent[1] != size[1])
+  {
+    r.Resolution[0] = p.Extent[0];
+    r.Resolution[1] = p.Extent[1];
   }
 
-  // The full (possibly tiled, magnified) image: its size and this tile's offset in it.
-  using U = vtkStylizeShaderUtilities;
-  const U::FullImage full = U::GetFullImage(ren, ox, oy);
-  const long long offset[2] = { std::llround(full.Offset[0]), std::llround(full.Offset[1]) };
+  // World size of an art pixel (depth edges) and of a dither cell on the surface.
+  p.ArtWorld = frame.PixelWorld * p.Block[1];
+  p.AnchorUnit =
+    (frame.Parallel ? p.ArtWorld : p.ArtWorld * frame.Camera->GetDistance()) * this->DitherSize;
+  if (!(p.AnchorUnit > 0.0) || !std::isfinite(p.AnchorUnit))
+  {
+    p.AnchorUnit = 1.0;
+  }
+
+  auto define = [&p](bool on, const char* name) {
+    if (on)
+    {
+      p.Defines += std::string("#define ") + name + "\n";
+    }
+  };
+  define(p.Fast, "PIXEL_FAST");
+  define(p.Canny, "PIXEL_CANNY");
+  define(p.Sobel, "PIXEL_SOBEL");
+  define(p.DepthEdges, "PIXEL_DEPTH_EDGES");
+  define(p.NormalEdges, "PIXEL_NORMAL_EDGES");
+  define(p.NormalEdges, "PIXEL_NORMALS");
+  define(p.SurfaceAnchor, "PIXEL_POSITIONS");
+  define(p.Edges, "PIXEL_EDGES");
+  define(p.SurfaceAnchor, "PIXEL_SURFACE_ANCHOR");
+  define(this->StylizeBackground, "PIXEL_STYLIZE_BACKGROUND");
+  define(p.WriteDepth, "PIXEL_WRITE_DEPTH");
+  const int palette = p.Colours.empty() ? (this->Palette == GRAYS ? 1 : 0) : 2;
+  p.Defines += "#define PIXEL_PALETTE " + std::to_string(palette) + "\n";
+  p.Defines += "#define PIXEL_LAYER " + std::to_string(this->Layer) + "\n";
+  return p;
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::PlanGrid(const Frame& frame, Plan& p) const
+{
+  const long long offset[2] = { std::llround(frame.FullOffset[0]),
+    std::llround(frame.FullOffset[1]) };
+  const int* size = frame.Size;
 
   // Art pixel size in screen pixels.
-  int block[2];
   if (this->ArtPixelsAcross > 0)
   {
-    block[0] = block[1] = static_cast<int>(
-      std::max(1.0, std::min(1.0e6, std::round(full.Size[0] / this->ArtPixelsAcross))));
+    p.Block[0] = p.Block[1] = static_cast<int>(
+      std::max(1.0, std::min(1.0e6, std::round(frame.FullSize[0] / this->ArtPixelsAcross))));
   }
   else
   {
-    block[0] = this->PixelSize * full.TileScale[0];
-    block[1] = this->PixelSize * full.TileScale[1];
+    p.Block[0] = this->PixelSize * frame.TileScale[0];
+    p.Block[1] = this->PixelSize * frame.TileScale[1];
   }
 
   // The grid: art columns i0 .. i1 of the full image cover this viewport. FAITHFUL renders the
   // full-resolution extent of these blocks (clipped to the full image), so that an art pixel
   // that straddles two tiles of a magnified screenshot averages the same pixels in both.
-  int grid[2], origin[2], extentOrigin[2], extent[2];
-  const int size[2] = { w, h };
   for (int a = 0; a < 2; ++a)
   {
-    const long long i0 = FloorDiv(offset[a], block[a]);
-    const long long i1 = FloorDiv(offset[a] + size[a] - 1, block[a]);
-    grid[a] = static_cast<int>(i1 - i0 + 1);
-    origin[a] = static_cast<int>(i0 * block[a] - offset[a]);
-    const long long lo = std::max(i0 * block[a], 0LL);
-    const long long hi = std::max(std::min((i1 + 1) * block[a],
-      static_cast<long long>(std::llround(full.Size[a]))), offset[a] + size[a]);
-    extentOrigin[a] = static_cast<int>(std::min(lo, offset[a]) - offset[a]);
-    extent[a] = static_cast<int>(hi - offset[a] - extentOrigin[a]);
-    if (extent[a] > 3 * size[a])
+    const int block = p.Block[a];
+    const long long i0 = FloorDiv(offset[a], block);
+    const long long i1 = FloorDiv(offset[a] + size[a] - 1, block);
+    p.Grid[a] = static_cast<int>(i1 - i0 + 1);
+    p.Origin[a] = static_cast<int>(i0 * block - offset[a]);
+    const long long lo = std::max(i0 * block, 0LL);
+    const long long hi = std::max(std::min((i1 + 1) * block,
+      static_cast<long long>(std::llround(frame.FullSize[a]))), offset[a] + size[a]);
+    p.ExtentOrigin[a] = static_cast<int>(std::min(lo, offset[a]) - offset[a]);
+    p.Extent[a] = static_cast<int>(hi - offset[a] - p.ExtentOrigin[a]);
+    if (p.Extent[a] > 3 * size[a])
     {
       // Art pixels far larger than a tile: reduce the tile's own pixels only (a seam is
       // possible) rather than render a texture many times the tile's size.
-      extentOrigin[a] = 0;
-      extent[a] = size[a];
+      p.ExtentOrigin[a] = 0;
+      p.Extent[a] = size[a];
     }
   }
-  in.Block[0] = block[0];
-  in.Block[1] = block[1];
-  in.Grid[0] = grid[0];
-  in.Grid[1] = grid[1];
 
   // Where the world origin falls, in full-image pixels; the snap shift that puts it on the grid.
-  vtkCamera* cam = ren->GetActiveCamera();
-  const bool parallel = cam->GetParallelProjection() != 0;
-  double shift[2] = { 0.0, 0.0 };
+  p.Shift[0] = p.Shift[1] = 0.0;
   long long gridOrigin[2] = { 0, 0 }; // art index of the world origin in the full image
+  const double aspect = frame.Renderer->GetTiledAspectRatio();
+  vtkMatrix4x4* m = frame.Camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0);
+  const double clip[4] = { m->GetElement(0, 3), m->GetElement(1, 3), m->GetElement(2, 3),
+    m->GetElement(3, 3) };
+  if (clip[3] > 0.0 && std::isfinite(clip[0]) && std::isfinite(clip[1]))
   {
-    double aspect = ren->GetTiledAspectRatio();
-    vtkMatrix4x4* m = cam->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0);
-    const double clip[4] = { m->GetElement(0, 3), m->GetElement(1, 3), m->GetElement(2, 3),
-      m->GetElement(3, 3) };
-    if (clip[3] > 0.0 && std::isfinite(clip[0]) && std::isfinite(clip[1]))
+    for (int a = 0; a < 2; ++a)
     {
-      for (int a = 0; a < 2; ++a)
+      const double ndc = clip[a] / clip[3];
+      const double pixel = (ndc + 1.0) * 0.5 * size[a] + static_cast<double>(offset[a]);
+      if (std::isfinite(pixel) && std::abs(pixel) < 1.0e15)
       {
-        const double ndc = clip[a] / clip[3];
-        const double pixel = (ndc + 1.0) * 0.5 * size[a] + static_cast<double>(offset[a]);
-        if (std::isfinite(pixel) && std::abs(pixel) < 1.0e15)
+        const double cells = std::round(pixel / p.Block[a]);
+        gridOrigin[a] = static_cast<long long>(cells);
+        if (frame.Parallel && this->SnapToGrid)
         {
-          const double cells = std::round(pixel / block[a]);
-          gridOrigin[a] = static_cast<long long>(cells);
-          if (parallel && this->SnapToGrid)
-          {
-            shift[a] = cells * block[a] - pixel;
-          }
+          p.Shift[a] = cells * p.Block[a] - pixel;
         }
       }
     }
   }
-  int ditherOrigin[2];
   for (int a = 0; a < 2; ++a)
   {
-    const long long firstArt = FloorDiv(offset[a], block[a]);
+    const long long firstArt = FloorDiv(offset[a], p.Block[a]);
     const long long index = this->DitherAnchor == SCREEN ? firstArt : firstArt - gridOrigin[a];
-    ditherOrigin[a] = PositiveMod(index, 8LL * this->DitherSize);
+    p.DitherOrigin[a] = PositiveMod(index, 8LL * this->DitherSize);
   }
+}
 
-  // What this frame computes.
-  const bool fast = this->Mode == FAST;
-  bool writeDepth = this->DepthOutput == DEPTH_ALWAYS;
-  for (int i = 0; i < s->GetPropArrayCount() && !writeDepth; ++i)
-  {
-    vtkProp* prop = s->GetPropArray()[i];
-    writeDepth = prop->GetVisibility() &&
-      (prop->HasTranslucentPolygonalGeometry() || prop->IsA("vtkVolume"));
-  }
-  const bool layerEdges = this->Layer != PIXELATED;
-  const bool canny = layerEdges && this->EdgeDetector == CANNY;
-  const bool sobel = layerEdges && this->EdgeDetector == SOBEL;
-  const bool depthEdges = layerEdges && this->DepthEdges;
-  const bool normalEdges = layerEdges && this->NormalEdges;
-  const bool edges = canny || sobel || depthEdges || normalEdges;
-  const bool surfaceAnchor = this->Layer == PIXEL_ART && this->DitherAnchor == SURFACE;
-  int channels = vtkStylizeGBufferPass::LINEAR_DEPTH;
-  if (normalEdges)
-  {
-    channels |= vtkStylizeGBufferPass::NORMAL;
-  }
-  if (surfaceAnchor)
-  {
-    channels |= vtkStylizeGBufferPass::POSITION;
-    gbuffer->SetPositionSpace(vtkStylizeGBufferPass::OBJECT);
-  }
-
-  // Geometry: at the art-pixel resolution over the grid (FAST) or at full resolution over the
-  // blocks' extent (FAITHFUL), shifted onto the grid.
-  const double shiftNDC[2] = { 2.0 * shift[0] / w, 2.0 * shift[1] / h };
-  {
-    double t[4];
-    for (int a = 0; a < 2; ++a)
-    {
-      const double first = fast ? origin[a] : extentOrigin[a];
-      const double span = fast ? static_cast<double>(grid[a]) * block[a] : extent[a];
-      t[a] = size[a] / span;
-      t[2 + a] = t[a] - 1.0 - 2.0 * first / span + 2.0 * shift[a] / span;
-    }
-    gbuffer->SetGeometryScreenTransform(t[0], t[1], t[2], t[3]);
-    if (fast)
-    {
-      gbuffer->SetGeometryResolution(grid[0], grid[1]);
-    }
-    else if (extent[0] == w && extent[1] == h)
-    {
-      gbuffer->SetGeometryResolution(0, 0);
-    }
-    else
-    {
-      gbuffer->SetGeometryResolution(extent[0], extent[1]);
-    }
-  }
-  gbuffer->SetAfterScreenShift(shiftNDC[0], shiftNDC[1]);
-  if (!this->RenderScene(s, channels))
-  {
-    return;
-  }
-
-  // The palette (list palettes only).
-  int palette = this->Palette;
-  std::vector<float> colours;
-  auto addColour = [&](double r, double g, double b) {
-    colours.insert(colours.end(),
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::PlanPalette(const vtkRenderState* s, Plan& p) const
+{
+  auto addColour = [&p](double r, double g, double b) {
+    p.Colours.insert(p.Colours.end(),
       { static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), 1.0f });
   };
-  if (palette == PALETTE16)
+  if (this->Palette == PALETTE16)
   {
     for (int i = 0; i < 16; ++i)
     {
       addColour(Palette16[3 * i], Palette16[3 * i + 1], Palette16[3 * i + 2]);
     }
   }
-  else if (palette == CUSTOM)
+  else if (this->Palette == CUSTOM)
   {
-    for (size_t i = 0; i + 2 < in.Custom.size(); i += 3)
+    const std::vector<double>& custom = this->Internals->Custom;
+    for (size_t i = 0; i + 2 < custom.size(); i += 3)
     {
-      addColour(in.Custom[i], in.Custom[i + 1], in.Custom[i + 2]);
+      addColour(custom[i], custom[i + 1], custom[i + 2]);
     }
   }
-  else if (palette == COLORMAP)
+  else if (this->Palette == COLORMAP)
   {
     vtkScalarsToColors* lut = this->LookupTable ? this->LookupTable : FindLookupTable(s);
     if (lut)
@@ -516,8 +542,7 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
       addColour(0.0, 0.0, 0.0);
       for (int i = 0; i < this->ColormapColors; ++i)
       {
-        const double v =
-          range[0] + (i + 0.5) / this->ColormapColors * (range[1] - range[0]);
+        const double v = range[0] + (i + 0.5) / this->ColormapColors * (range[1] - range[0]);
         double rgb[3];
         lut->GetColor(v, rgb);
         for (int k = 1; k <= this->ColormapShades; ++k)
@@ -528,276 +553,156 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
       }
     }
   }
-  if (palette >= PALETTE16 && colours.empty())
-  {
-    palette = LEVELS; // an empty list or no colormap
-  }
-  const int shaderPalette = palette == LEVELS ? 0 : (palette == GRAYS ? 1 : 2);
-  const bool quantize = this->Layer == PIXEL_ART;
-  if (quantize && shaderPalette == 2 &&
-    (colours != in.PaletteData || !in.PaletteTexture || in.PaletteTexture->GetContext() != renWin))
-  {
-    vtkStylizeShaderUtilities::FreeTexture(in.PaletteTexture, renWin);
-    in.PaletteTexture = vtkTextureObject::New();
-    in.PaletteTexture->SetContext(renWin);
-    in.PaletteTexture->Create2DFromRaw(
-      static_cast<unsigned int>(colours.size() / 4), 1, 4, VTK_FLOAT, colours.data());
-    in.PaletteData = colours;
-    in.PaletteSpread = MedianSpacing(colours);
-  }
-
-  // Shader sources: one program per stage, rebuilt when the defines change.
-  std::string defines;
-  auto define = [&](bool on, const char* name) {
-    if (on)
-    {
-      defines += std::string("#define ") + name + "\n";
-    }
-  };
-  define(fast, "PIXEL_FAST");
-  define(canny, "PIXEL_CANNY");
-  define(sobel, "PIXEL_SOBEL");
-  define(depthEdges, "PIXEL_DEPTH_EDGES");
-  define(normalEdges, "PIXEL_NORMAL_EDGES");
-  define(normalEdges, "PIXEL_NORMALS");
-  define(surfaceAnchor, "PIXEL_POSITIONS");
-  define(edges, "PIXEL_EDGES");
-  define(surfaceAnchor, "PIXEL_SURFACE_ANCHOR");
-  define(this->StylizeBackground, "PIXEL_STYLIZE_BACKGROUND");
-  define(writeDepth, "PIXEL_WRITE_DEPTH");
-  defines += "#define PIXEL_PALETTE " + std::to_string(shaderPalette) + "\n";
-  defines += "#define PIXEL_LAYER " + std::to_string(this->Layer) + "\n";
-  if (defines != in.Defines || in.Declarations[0].empty())
-  {
-    in.Defines = defines;
-    static const char* const stages[7] = { "REDUCE", "GAUSS", "GRADIENT", "CLASSIFY",
-      "HYSTERESIS", "STYLIZE", "UPSAMPLE" };
-    for (int i = 0; i < 7; ++i)
-    {
-      in.Declarations[i] = std::string("#define PIXEL_STAGE_") + stages[i] + "\n" + defines +
-        vtkStylizeCommonFS + vtkStylizeDepthFS + vtkStylizeScreenFS + vtkPixelArtFS;
-    }
-  }
-
-  // World size of an art pixel (depth edges) and of a dither cell on the surface.
-  const double pixelWorld = U::PixelWorldSize(cam, w, h);
-  const double artWorld = pixelWorld * block[1];
-  double anchorUnit = (parallel ? artWorld : artWorld * cam->GetDistance()) * this->DitherSize;
-  if (!(anchorUnit > 0.0) || !std::isfinite(anchorUnit))
-  {
-    anchorUnit = 1.0;
-  }
-
-  // Inputs of the art-resolution stages.
-  vtkTextureObject* colour = gbuffer->GetColorTexture();
-  vtkTextureObject* linear = gbuffer->GetLinearDepthTexture();
-  vtkTextureObject* normal = gbuffer->GetNormalTexture();
-  vtkTextureObject* position = gbuffer->GetPositionTexture();
-  vtkTextureObject* depth = gbuffer->GetDepthTexture();
-
-  const int nx = grid[0], ny = grid[1];
-  const bool fullPrecision = gbuffer->GetPrecision() == vtkStylizeGBufferPass::FULL;
-  if (!in.Framebuffer)
-  {
-    in.Framebuffer = vtkOpenGLFramebufferObject::New();
-    in.Framebuffer->SetContext(renWin);
-  }
-  vtkOpenGLFramebufferObject* fbo = in.Framebuffer;
-
-  auto setUniforms = [&](U::Uniforms& u, vtkTextureObject* input) {
-    u.Texture("stylizeColorTexture", colour)
-      .Texture("stylizeLinearDepthTexture", linear)
-      .Texture("stylizeNormalTexture", normal)
-      .Texture("stylizePositionTexture", position)
-      .Texture("stylizeDepthTexture", depth)
-      .Texture("pixelInputTexture", input)
-      .Texture("pixelArtTexture", in.Art)
-      .Texture("pixelPaletteTexture", in.PaletteTexture)
-      .Int2("pixelArtSize", nx, ny)
-      .Int2("pixelViewportSize", w, h)
-      .Int2("pixelBlock", block[0], block[1])
-      .Int2("pixelGridOrigin", origin[0], origin[1])
-      .Int2("pixelExtentOrigin", extentOrigin[0], extentOrigin[1])
-      .Int2("pixelExtentSize", extent[0], extent[1])
-      .Int2("pixelDitherOrigin", ditherOrigin[0], ditherOrigin[1])
-      .Int("pixelDitherSize", this->DitherSize)
-      .Float("pixelDitherStrength", this->DitherStrength)
-      .Int("pixelLevels", this->Levels)
-      .Int("pixelPaletteSize", static_cast<int>(in.PaletteData.size() / 4))
-      .Float("pixelPaletteSpread", in.PaletteSpread)
-      .Float("pixelLow", this->LowThreshold)
-      .Float("pixelHigh", this->HighThreshold)
-      .Float("pixelDepthThreshold", this->DepthThreshold)
-      .Float("pixelNormalThreshold", this->NormalThreshold)
-      .Float("pixelArtWorld", artWorld)
-      .Int("pixelParallel", parallel ? 1 : 0)
-      .Float("pixelAnchorUnit", anchorUnit)
-      .Float3("pixelOutlineColor", this->OutlineColor[0], this->OutlineColor[1],
-        this->OutlineColor[2])
-      .SceneOutput(gbuffer, ren);
-  };
-  bool ok = true;
-  // Runs one art-resolution stage into `targets`.
-  auto stage = [&](vtkStylizeShaderUtilities::ScreenQuad& quad, int index,
-                 std::initializer_list<vtkTextureObject*> targets, vtkTextureObject* input) {
-    fbo->RemoveColorAttachments(4);
-    unsigned int i = 0;
-    for (vtkTextureObject* t : targets)
-    {
-      fbo->AddColorAttachment(i++, t);
-    }
-    fbo->ActivateDrawBuffers(i);
-    vtkShaderProgram* program =
-      quad.Prepare(renWin, in.Declarations[index], "  pixelMain();\n");
-    if (!program)
-    {
-      ok = false;
-      return;
-    }
-    U::Uniforms u(program);
-    setUniforms(u, input);
-    quad.Render();
-  };
-
-  vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
-  ostate->vtkglViewport(0, 0, nx, ny);
-  ostate->vtkglScissor(0, 0, nx, ny);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-
-  // Faithful mode: average each block of the full-resolution G-buffer.
-  if (!fast)
-  {
-    U::EnsureScreenTexture(in.ReducedColor, renWin, nx, ny, fullPrecision ? GL_RGBA32F : GL_RGBA16F);
-    U::EnsureScreenTexture(in.ReducedLinear, renWin, nx, ny, GL_R32F);
-    if (normalEdges)
-    {
-      U::EnsureScreenTexture(in.ReducedNormal, renWin, nx, ny, GL_RGBA16F);
-    }
-    if (surfaceAnchor)
-    {
-      U::EnsureScreenTexture(in.ReducedPosition, renWin, nx, ny, GL_RGBA32F);
-    }
-    if (normalEdges && surfaceAnchor)
-    {
-      stage(in.ReduceQuad, 0, { in.ReducedColor, in.ReducedLinear, in.ReducedNormal,
-                                in.ReducedPosition }, nullptr);
-    }
-    else if (normalEdges)
-    {
-      stage(in.ReduceQuad, 0, { in.ReducedColor, in.ReducedLinear, in.ReducedNormal }, nullptr);
-    }
-    else if (surfaceAnchor)
-    {
-      stage(in.ReduceQuad, 0, { in.ReducedColor, in.ReducedLinear, in.ReducedPosition }, nullptr);
-    }
-    else
-    {
-      stage(in.ReduceQuad, 0, { in.ReducedColor, in.ReducedLinear }, nullptr);
-    }
-    colour = in.ReducedColor;
-    linear = in.ReducedLinear;
-    normal = normalEdges ? in.ReducedNormal : nullptr;
-    position = surfaceAnchor ? in.ReducedPosition : nullptr;
-  }
-  vtkTextureObject* fullDepth = depth;
-  depth = nullptr; // not read at the art resolution
-
-  // Edges: Gaussian, Sobel, classification, hysteresis.
-  vtkTextureObject* edgeImage = nullptr;
-  if (edges)
-  {
-    U::EnsureScreenTexture(in.Classes[0], renWin, nx, ny, GL_R32F);
-    if (canny || sobel)
-    {
-      U::EnsureScreenTexture(in.Gray, renWin, nx, ny, GL_R32F);
-      U::EnsureScreenTexture(in.Gradient, renWin, nx, ny, GL_RGBA32F);
-      stage(in.GaussQuad, 1, { in.Gray }, nullptr);
-      stage(in.GradientQuad, 2, { in.Gradient }, in.Gray);
-    }
-    stage(in.ClassifyQuad, 3, { in.Classes[0] }, in.Gradient);
-    edgeImage = in.Classes[0];
-    if (canny && this->HysteresisIterations > 0)
-    {
-      U::EnsureScreenTexture(in.Classes[1], renWin, nx, ny, GL_R32F);
-      for (int i = 0; i < this->HysteresisIterations; ++i)
-      {
-        vtkTextureObject* target = edgeImage == in.Classes[0] ? in.Classes[1] : in.Classes[0];
-        stage(in.HysteresisQuad, 4, { target }, edgeImage);
-        edgeImage = target;
-      }
-    }
-  }
-
-  // The art-pixel image.
-  U::EnsureScreenTexture(in.Art, renWin, nx, ny, GL_RGBA16F);
-  {
-    vtkTextureObject* art = in.Art;
-    in.Art = nullptr; // not an input of its own stage
-    stage(in.StylizeQuad, 5, { art }, edgeImage);
-    in.Art = art;
-  }
-  fbo->RemoveColorAttachments(4);
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
-
-  // Upsample into the output framebuffer, with the depth.
-  ostate->vtkglViewport(ox, oy, w, h);
-  ostate->vtkglScissor(ox, oy, w, h);
-  ostate->vtkglDepthMask(GL_TRUE);
-  if (writeDepth)
-  {
-    ostate->vtkglEnable(GL_DEPTH_TEST);
-    ostate->vtkglDepthFunc(GL_ALWAYS);
-  }
-  else
-  {
-    ostate->vtkglEnable(GL_SCISSOR_TEST);
-    ostate->vtkglClearDepth(1.0);
-    ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-  }
-  depth = fullDepth;
-  vtkShaderProgram* program = in.UpsampleQuad.Prepare(renWin, in.Declarations[6], "  pixelMain();\n");
-  if (program)
-  {
-    U::Uniforms u(program);
-    setUniforms(u, nullptr);
-    in.UpsampleQuad.Render();
-  }
-  else
-  {
-    ok = false;
-  }
-  if (!ok)
-  {
-    vtkErrorMacro("Could not build a pixel-art shader.");
-  }
-  vtkOpenGLCheckErrorMacro("failed after vtkPixelArtPass::Render");
-
-  this->FinishScene(s);
 }
 
 //------------------------------------------------------------------------------
-void vtkPixelArtPass::ReleaseGraphicsResources(vtkWindow* w)
+void vtkPixelArtPass::UpdatePalette(const Frame& frame, const Plan& plan)
 {
-  this->Superclass::ReleaseGraphicsResources(w);
   vtkInternals& in = *this->Internals;
-  for (auto* quad : { &in.ReduceQuad, &in.GaussQuad, &in.GradientQuad, &in.ClassifyQuad,
-         &in.HysteresisQuad, &in.StylizeQuad, &in.UpsampleQuad })
+  vtkTextureObject*& texture = this->TextureSlot(PALETTE);
+  if (this->Layer != PIXEL_ART || plan.Colours.empty() ||
+    (plan.Colours == in.PaletteData && texture && texture->GetContext() == frame.Window))
   {
-    quad->Release(w);
+    return;
   }
-  in.FreeTextures(w);
-  in.GBuffer->ReleaseGraphicsResources(w);
+  this->FreeTexture(PALETTE);
+  texture = vtkTextureObject::New();
+  texture->SetContext(frame.Window);
+  texture->Create2DFromRaw(
+    static_cast<unsigned int>(plan.Colours.size() / 4), 1, 4, VTK_FLOAT,
+    const_cast<float*>(plan.Colours.data()));
+  in.PaletteData = plan.Colours;
+  in.PaletteSpread = MedianSpacing(plan.Colours);
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame,
+  const Plan& p, const Inputs& inputs, vtkTextureObject* input, vtkTextureObject* art)
+{
+  const vtkInternals& in = *this->Internals;
+  u.Texture("stylizeColorTexture", inputs.Colour)
+    .Texture("stylizeLinearDepthTexture", inputs.Linear)
+    .Texture("stylizeNormalTexture", inputs.Normal)
+    .Texture("stylizePositionTexture", inputs.Position)
+    .Texture("stylizeDepthTexture", inputs.Depth)
+    .Texture("pixelInputTexture", input)
+    .Texture("pixelArtTexture", art)
+    .Texture("pixelPaletteTexture", this->TextureSlot(PALETTE))
+    .Int2("pixelArtSize", p.Grid[0], p.Grid[1])
+    .Int2("pixelViewportSize", frame.Size[0], frame.Size[1])
+    .Int2("pixelBlock", p.Block[0], p.Block[1])
+    .Int2("pixelGridOrigin", p.Origin[0], p.Origin[1])
+    .Int2("pixelExtentOrigin", p.ExtentOrigin[0], p.ExtentOrigin[1])
+    .Int2("pixelExtentSize", p.Extent[0], p.Extent[1])
+    .Int2("pixelDitherOrigin", p.DitherOrigin[0], p.DitherOrigin[1])
+    .Int("pixelDitherSize", this->DitherSize)
+    .Float("pixelDitherStrength", this->DitherStrength)
+    .Int("pixelLevels", this->Levels)
+    .Int("pixelPaletteSize", static_cast<int>(in.PaletteData.size() / 4))
+    .Float("pixelPaletteSpread", in.PaletteSpread)
+    .Float("pixelLow", this->LowThreshold)
+    .Float("pixelHigh", this->HighThreshold)
+    .Float("pixelDepthThreshold", this->DepthThreshold)
+    .Float("pixelNormalThreshold", this->NormalThreshold)
+    .Float("pixelArtWorld", p.ArtWorld)
+    .Int("pixelParallel", frame.Parallel ? 1 : 0)
+    .Float("pixelAnchorUnit", p.AnchorUnit)
+    .Float3("pixelOutlineColor", this->OutlineColor[0], this->OutlineColor[1],
+      this->OutlineColor[2]);
+  this->SetSceneOutputUniforms(u, frame.Renderer);
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::RenderReduceStage(const Frame& frame, const Plan& p, Inputs& inputs)
+{
+  const int nx = p.Grid[0], ny = p.Grid[1];
+  const bool full =
+    this->GetGBufferPass()->GetPrecision() == vtkStylizeGBufferPass::FULL;
+  vtkTextureObject* colour = this->EnsureTexture(REDUCED_COLOR, nx, ny, full ? GL_RGBA32F : GL_RGBA16F);
+  vtkTextureObject* linear = this->EnsureTexture(REDUCED_LINEAR, nx, ny, GL_R32F);
+  vtkTextureObject* normal =
+    p.NormalEdges ? this->EnsureTexture(REDUCED_NORMAL, nx, ny, GL_RGBA16F) : nullptr;
+  vtkTextureObject* position =
+    p.SurfaceAnchor ? this->EnsureTexture(REDUCED_POSITION, nx, ny, GL_RGBA32F) : nullptr;
+  auto uniforms = [&](vtkStylizeUniforms& u) {
+    this->SetStageUniforms(u, frame, p, inputs, nullptr, nullptr);
+  };
+  if (normal && position)
+  {
+    this->RenderStage(REDUCE_STAGE, { colour, linear, normal, position }, nx, ny, uniforms);
+  }
+  else if (normal || position)
+  {
+    this->RenderStage(REDUCE_STAGE, { colour, linear, normal ? normal : position }, nx, ny,
+      uniforms);
+  }
+  else
+  {
+    this->RenderStage(REDUCE_STAGE, { colour, linear }, nx, ny, uniforms);
+  }
+  inputs.Colour = colour;
+  inputs.Linear = linear;
+  inputs.Normal = normal;
+  inputs.Position = position;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkPixelArtPass::RenderEdgeStages(
+  const Frame& frame, const Plan& p, const Inputs& inputs)
+{
+  const int nx = p.Grid[0], ny = p.Grid[1];
+  Inputs art = inputs;
+  art.Depth = nullptr; // not read at the art resolution
+  auto stage = [&](int index, vtkTextureObject* target, vtkTextureObject* input) {
+    this->RenderStage(index, { target }, nx, ny, [&](vtkStylizeUniforms& u) {
+      this->SetStageUniforms(u, frame, p, art, input, nullptr);
+    });
+  };
+  vtkTextureObject* classes = this->EnsureTexture(CLASSES_0, nx, ny, GL_R32F);
+  vtkTextureObject* gradient = nullptr;
+  if (p.Canny || p.Sobel)
+  {
+    vtkTextureObject* gray = this->EnsureTexture(GRAY, nx, ny, GL_R32F);
+    gradient = this->EnsureTexture(GRADIENT, nx, ny, GL_RGBA32F);
+    stage(GAUSS_STAGE, gray, nullptr);
+    stage(GRADIENT_STAGE, gradient, gray);
+  }
+  else
+  {
+    gradient = this->TextureSlot(GRADIENT); // not read without Canny or Sobel
+  }
+  stage(CLASSIFY_STAGE, classes, gradient);
+  vtkTextureObject* edges = classes;
+  if (p.Canny && this->HysteresisIterations > 0)
+  {
+    vtkTextureObject* other = this->EnsureTexture(CLASSES_1, nx, ny, GL_R32F);
+    for (int i = 0; i < this->HysteresisIterations; ++i)
+    {
+      vtkTextureObject* target = edges == classes ? other : classes;
+      stage(HYSTERESIS_STAGE, target, edges);
+      edges = target;
+    }
+  }
+  return edges;
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::RenderArtStage(
+  const Frame& frame, const Plan& p, const Inputs& inputs, vtkTextureObject* edges)
+{
+  const int nx = p.Grid[0], ny = p.Grid[1];
+  Inputs art = inputs;
+  art.Depth = nullptr; // not read at the art resolution
+  vtkTextureObject* target = this->EnsureTexture(ART, nx, ny, GL_RGBA16F);
+  this->RenderStage(STYLIZE_STAGE, { target }, nx, ny, [&](vtkStylizeUniforms& u) {
+    this->SetStageUniforms(u, frame, p, art, edges, nullptr);
+  });
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::RenderUpsampleStage(const Frame& frame, const Plan& p, const Inputs& inputs)
+{
+  this->RenderStageToOutput(frame, UPSAMPLE_STAGE, p.WriteDepth, [&](vtkStylizeUniforms& u) {
+    this->SetStageUniforms(u, frame, p, inputs, nullptr, this->TextureSlot(ART));
+  });
 }

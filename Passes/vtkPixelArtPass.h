@@ -3,7 +3,7 @@
  * @brief   Pixel-art rendering: the pixel-art lighting model, pixelation to a grid of art
  *          pixels, Canny outlines, and 8x8 ordered dithering to a small palette.
  *
- * The method of "real-time pixel-art rendering" (ALGORITHMS.md section 1) as one render pass.
+ * The method of "real-time pixel-art rendering" (docs/algorithms.md section 1) as one render pass.
  * Use it like any VTK pass: `renderer->SetPass(pixelArt)`; it needs no delegate.
  *
  * 1. The opaque geometry is rendered into the shared G-buffer (vtkStylizeGBufferPass) with the
@@ -59,8 +59,6 @@
 #include <memory> // for std::unique_ptr
 
 class vtkScalarsToColors;
-class vtkStylizeGBufferPass;
-class vtkStylizeLightingPass;
 
 class VTKSTYLIZEPASSES_EXPORT vtkPixelArtPass : public vtkStylizeStylePass
 {
@@ -109,12 +107,6 @@ public:
     PIXELATED = 1, ///< the art-pixel colours before edges and dither
     EDGES = 2      ///< black edge art pixels on white
   };
-
-  /** The lighting pass (PixelArt model by default); change its model or settings freely. */
-  vtkStylizeLightingPass* GetLightingPass() override;
-
-  /** The G-buffer pass (its channels and resolution are set by this pass each frame). */
-  vtkStylizeGBufferPass* GetGBufferPass() override;
 
   ///@{
   /** FAST or FAITHFUL (default) pixelation. */
@@ -349,8 +341,12 @@ public:
   /** The 16-colour DawnBringer palette, RGB in [0, 1], 48 values. */
   static const double* GetPalette16() VTK_SIZEHINT(48);
 
+  /**
+   * Renders the pixel-art image: the scene into the G-buffer at the art resolution (FAST) or
+   * at full resolution then reduced per block (FAITHFUL), the edges, the art pixels, then the
+   * upsample into the output. The lighting pass's default model is PixelArt.
+   */
   void Render(const vtkRenderState* s) override;
-  void ReleaseGraphicsResources(vtkWindow* w) override;
 
 protected:
   vtkPixelArtPass();
@@ -380,6 +376,30 @@ protected:
   bool StylizeBackground = false;
   int Layer = PIXEL_ART;
   int DepthOutput = DEPTH_AUTO;
+
+  /** What a frame computes: the grid, the enabled stages, their channels and defines. */
+  struct Plan;
+  /** The textures the art-resolution stages read. */
+  struct Inputs;
+  Plan PlanFrame(const vtkRenderState* s, const Frame& frame);
+  /** The art-pixel grid of this viewport in the full image, the snap shift, the dither origin. */
+  void PlanGrid(const Frame& frame, Plan& plan) const;
+  /** The list palette's colours (PALETTE16, CUSTOM, COLORMAP), RGBA. */
+  void PlanPalette(const vtkRenderState* s, Plan& plan) const;
+  /** Uploads the list palette when it changed. */
+  void UpdatePalette(const Frame& frame, const Plan& plan);
+  /** The uniforms every stage reads; `input` is the stage's own input, `art` the art pixels. */
+  void SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, const Plan& plan,
+    const Inputs& inputs, vtkTextureObject* input, vtkTextureObject* art);
+  /** FAITHFUL: averages each block of the G-buffer; `inputs` become the averages. */
+  void RenderReduceStage(const Frame& frame, const Plan& plan, Inputs& inputs);
+  /** Gaussian, Sobel, classification and hysteresis; returns the edge image. */
+  vtkTextureObject* RenderEdgeStages(const Frame& frame, const Plan& plan, const Inputs& inputs);
+  /** The art pixels: palette, dither and outlines. */
+  void RenderArtStage(
+    const Frame& frame, const Plan& plan, const Inputs& inputs, vtkTextureObject* edges);
+  /** The art pixels into the output framebuffer (with the depth when needed). */
+  void RenderUpsampleStage(const Frame& frame, const Plan& plan, const Inputs& inputs);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

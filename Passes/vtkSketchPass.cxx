@@ -9,15 +9,11 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLError.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLState.h"
 #include "vtkPointData.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
-#include "vtkShaderProgram.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeShaderUtilities.h"
@@ -26,9 +22,6 @@
 #include "vtk_glew.h"
 
 #include "vtkSketchFS.h"
-#include "vtkStylizeCommonFS.h"
-#include "vtkStylizeDepthFS.h"
-#include "vtkStylizeScreenFS.h"
 
 #include <algorithm>
 #include <array>
@@ -54,119 +47,75 @@ double Fade(double t)
 {
   return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
 }
+
+enum Stages
+{
+  ESTIMATE_STAGE = 0, // raw principal directions (focal surfaces, or the model's)
+  SMOOTH_STAGE,       // 3x3 smoothing, or filling of undefined pixels
+  RESOLVE_STAGE,      // fallbacks and the requested direction
+  BLUR_X_STAGE,       // strided blur of the lit luminance, x then y
+  BLUR_Y_STAGE,
+  FINAL_STAGE         // strokes and tone into the output
+};
+enum Textures
+{
+  FIELD_0 = 0, // raw field ping-pong
+  FIELD_1,
+  RESOLVED, // xyz direction, w linear depth
+  BLUR_X,
+  BLUR_Y,
+  NOISE
+};
 }
 
 class vtkSketchPass::vtkInternals
 {
 public:
-  vtkNew<vtkStylizeLightingPass> Lighting;
-  vtkNew<vtkStylizeGBufferPass> GBuffer;
-  vtkStylizeShaderUtilities::ScreenQuad EstimateQuad;
-  vtkStylizeShaderUtilities::ScreenQuad SmoothQuad;
-  vtkStylizeShaderUtilities::ScreenQuad ResolveQuad;
-  vtkStylizeShaderUtilities::ScreenQuad BlurXQuad;
-  vtkStylizeShaderUtilities::ScreenQuad BlurYQuad;
-  vtkStylizeShaderUtilities::ScreenQuad FinalQuad;
-  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
-  vtkTextureObject* Field[2] = { nullptr, nullptr }; // raw field ping-pong
-  vtkTextureObject* Resolved = nullptr;               // xyz direction, w linear depth
-  vtkTextureObject* BlurX = nullptr;
-  vtkTextureObject* BlurY = nullptr;
-  vtkTextureObject* NoiseTexture = nullptr;
   int NoiseKind = -1;
   double NoiseStats[2] = { 0.5, 0.29 };
 
-  std::string Defines;
-  std::string Declarations[6]; // estimate, smooth, resolve, blur x, blur y, final
-
   // Mappers given the direction attribute, and the array name they were given.
   std::vector<std::pair<vtkWeakPointer<vtkOpenGLPolyDataMapper>, std::string>> Mapped;
+};
 
-  void FreeTextures(vtkWindow* w)
-  {
-    for (vtkTextureObject** t :
-      { &this->Field[0], &this->Field[1], &this->Resolved, &this->BlurX, &this->BlurY })
-    {
-      vtkStylizeShaderUtilities::FreeTexture(*t, w);
-    }
-    vtkStylizeShaderUtilities::FreeTexture(this->NoiseTexture, w);
-    this->NoiseKind = -1;
-    if (this->Framebuffer)
-    {
-      if (w)
-      {
-        this->Framebuffer->ReleaseGraphicsResources(w);
-      }
-      this->Framebuffer->Delete();
-      this->Framebuffer = nullptr;
-    }
-  }
-
-  void EnsureNoise(vtkOpenGLRenderWindow* renWin, int kind)
-  {
-    if (this->NoiseTexture && this->NoiseKind == kind &&
-      this->NoiseTexture->GetContext() == renWin)
-    {
-      return;
-    }
-    vtkStylizeShaderUtilities::FreeTexture(this->NoiseTexture, renWin);
-    vtkNew<vtkFloatArray> values;
-    vtkSketchPass::GenerateNoise(kind, NoiseTextureSize, values);
-    const vtkIdType n = values->GetNumberOfTuples();
-    double sum = 0.0, sum2 = 0.0;
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      const double v = values->GetValue(i);
-      sum += v;
-      sum2 += v * v;
-    }
-    this->NoiseStats[0] = sum / n;
-    this->NoiseStats[1] = std::sqrt(std::max(0.0, sum2 / n - this->NoiseStats[0] * this->NoiseStats[0]));
-    this->NoiseTexture = vtkTextureObject::New();
-    this->NoiseTexture->SetContext(renWin);
-    this->NoiseTexture->SetWrapS(vtkTextureObject::Repeat);
-    this->NoiseTexture->SetWrapT(vtkTextureObject::Repeat);
-    this->NoiseTexture->SetWrapR(vtkTextureObject::Repeat);
-    const int filter = kind == vtkSketchPass::WHITE ? vtkTextureObject::Nearest
-                                                    : vtkTextureObject::Linear;
-    this->NoiseTexture->SetMinificationFilter(filter);
-    this->NoiseTexture->SetMagnificationFilter(filter);
-    this->NoiseTexture->Create3DFromRaw(NoiseTextureSize, NoiseTextureSize, NoiseTextureSize, 1,
-      VTK_FLOAT, values->GetPointer(0));
-    this->NoiseKind = kind;
-  }
+/** What a frame computes: the enabled stages, their channels and defines, lengths in pixels. */
+struct vtkSketchPass::Plan
+{
+  bool Model, Strokes, ObjectNoise, Contrast;
+  SceneRequest Scene;
+  std::string Defines;
+  // Settings as used (a NaN setting counts as its range's minimum), lengths in pixels.
+  double PointSize;   // pixels per point
+  double FocalPixel;  // world size of a pixel at the focal distance
+  double Planar, Umbilic, StepLength, StrokeContrast, CrossThreshold, ContrastSetting;
+  int MaxStride;
+  double SpacingWorld;
+  double FillRadius;  // pixels; < 0: no fill
+  double Fallback;    // radians
+  int BlurSize[2];
+  double BlurRadius;  // pixels
+  double NoiseUnit;
 };
 
 vtkStandardNewMacro(vtkSketchPass);
 
 //------------------------------------------------------------------------------
 vtkSketchPass::vtkSketchPass()
-  : Internals(new vtkInternals)
+  : vtkStylizeStylePass(vtkStylizeLightingPass::STANDARD, vtkSketchFS,
+      { "SKETCH_STAGE_ESTIMATE", "SKETCH_STAGE_SMOOTH", "SKETCH_STAGE_RESOLVE",
+        "SKETCH_STAGE_BLUR_X", "SKETCH_STAGE_BLUR_Y", "SKETCH_STAGE_FINAL" },
+      "  sketchMain();\n")
+  , Internals(new vtkInternals)
 {
-  this->Internals->Lighting->SetModel(vtkStylizeLightingPass::STANDARD);
-  this->Internals->GBuffer->SetLightingPass(this->Internals->Lighting);
   // The estimate differentiates normals: half floats (3 digits) would dominate its error.
-  this->Internals->GBuffer->SetPrecision(vtkStylizeGBufferPass::FULL);
+  this->GetGBufferPass()->SetPrecision(vtkStylizeGBufferPass::FULL);
   this->SetDirectionArrayName("PrincipalDirectionMin");
 }
 
 //------------------------------------------------------------------------------
 vtkSketchPass::~vtkSketchPass()
 {
-  this->Internals->FreeTextures(nullptr);
   this->SetDirectionArrayName(nullptr);
-}
-
-//------------------------------------------------------------------------------
-vtkStylizeLightingPass* vtkSketchPass::GetLightingPass()
-{
-  return this->Internals->Lighting;
-}
-
-//------------------------------------------------------------------------------
-vtkStylizeGBufferPass* vtkSketchPass::GetGBufferPass()
-{
-  return this->Internals->GBuffer;
 }
 
 //------------------------------------------------------------------------------
@@ -391,8 +340,6 @@ void vtkSketchPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->PaperColor[2] << "\n";
   os << indent << "Tinted: " << this->Tinted << "\n";
   os << indent << "ReferenceHeight: " << this->ReferenceHeight << " px\n";
-  os << indent << "LightingPass:\n";
-  this->Internals->Lighting->PrintSelf(os, indent.GetNextIndent());
 }
 
 //------------------------------------------------------------------------------
@@ -441,334 +388,277 @@ void vtkSketchPass::MapDirectionArrays(vtkRenderer* ren)
 //------------------------------------------------------------------------------
 bool vtkSketchPass::DownloadDirections(vtkFloatArray* out)
 {
-  vtkTextureObject* tex = this->Internals->Resolved;
-  if (!tex || !out || !this->Internals->Framebuffer)
-  {
-    return false;
-  }
-  const int w = static_cast<int>(tex->GetWidth());
-  const int h = static_cast<int>(tex->GetHeight());
-  out->SetNumberOfComponents(4);
-  out->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
-  vtkOpenGLFramebufferObject* fbo = this->Internals->Framebuffer;
-  fbo->SaveCurrentBindingsAndBuffers(GL_READ_FRAMEBUFFER);
-  fbo->Bind(GL_READ_FRAMEBUFFER);
-  fbo->AddColorAttachment(0, tex);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, out->GetPointer(0));
-  fbo->RemoveColorAttachments(1);
-  fbo->UnBind(GL_READ_FRAMEBUFFER);
-  fbo->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
-  return true;
+  return this->DownloadTexture(this->TextureSlot(RESOLVED), out);
 }
 
 //------------------------------------------------------------------------------
 void vtkSketchPass::Render(const vtkRenderState* s)
 {
-  vtkOpenGLClearErrorMacro();
-  this->NumberOfRenderedProps = 0;
-  vtkRenderer* ren = s->GetRenderer();
-  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  vtkInternals& in = *this->Internals;
-  vtkStylizeGBufferPass* gbuffer = in.GBuffer;
-  if (!renWin)
+  Frame frame;
+  if (!this->BeginFrame(s, frame))
   {
     return;
   }
-  using U = vtkStylizeShaderUtilities;
+  const Plan plan = this->PlanFrame(frame);
+  if (plan.Model)
+  {
+    this->MapDirectionArrays(frame.Renderer);
+  }
+  if (!this->RenderScene(s, plan.Scene))
+  {
+    return;
+  }
+  this->SetShaderDefines(plan.Defines);
+  if (plan.Strokes)
+  {
+    this->UpdateNoise(frame);
+  }
+  this->RenderEstimateStage(frame, plan);
+  const int field = this->RenderSmoothStages(frame, plan);
+  this->RenderResolveStage(frame, plan, field);
+  if (plan.Contrast)
+  {
+    this->RenderBlurStages(frame, plan);
+  }
+  else
+  {
+    this->FreeTexture(BLUR_X);
+    this->FreeTexture(BLUR_Y);
+  }
+  this->RenderFinalStage(frame, plan);
+  this->EndFrame(s);
+}
 
-  // What this frame computes: only the enabled stages, and only their channels.
-  const bool model = this->DirectionSource == MODEL;
+//------------------------------------------------------------------------------
+vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
+{
+  Plan p;
   // Strokes are drawn in the SKETCH and STROKES layers; the tone (and so the blur) is read by
   // the SKETCH and TONE layers.
-  const bool strokes = this->Layer == SKETCH || this->Layer == STROKES;
+  p.Model = this->DirectionSource == MODEL;
+  p.Strokes = this->Layer == SKETCH || this->Layer == STROKES;
   const bool tone = this->Layer == SKETCH || this->Layer == TONE;
-  const bool objectNoise = strokes && this->NoiseSpace == OBJECT;
-  const bool contrast = tone && this->Contrast > 0.0;
+  p.ObjectNoise = p.Strokes && this->NoiseSpace == OBJECT;
+  p.Contrast = tone && this->Contrast > 0.0;
   const bool cross = this->CrossHatching && this->Layer == SKETCH;
-  int channels = vtkStylizeGBufferPass::LINEAR_DEPTH | vtkStylizeGBufferPass::NORMAL;
-  if (objectNoise)
+  p.Scene.Channels = vtkStylizeGBufferPass::LINEAR_DEPTH | vtkStylizeGBufferPass::NORMAL;
+  if (p.ObjectNoise)
   {
-    channels |= vtkStylizeGBufferPass::POSITION;
-    gbuffer->SetPositionSpace(vtkStylizeGBufferPass::OBJECT);
+    p.Scene.Channels |= vtkStylizeGBufferPass::POSITION;
+    p.Scene.PositionSpace = vtkStylizeGBufferPass::OBJECT;
   }
-  if (model)
+  if (p.Model)
   {
-    channels |= vtkStylizeGBufferPass::DIRECTION;
-    this->MapDirectionArrays(ren);
+    p.Scene.Channels |= vtkStylizeGBufferPass::DIRECTION;
   }
-  if (!this->RenderScene(s, channels))
-  {
-    return;
-  }
-  int vp[4];
-  gbuffer->GetViewport(vp);
-  const int w = vp[2], h = vp[3];
-  const int ox = vp[0], oy = vp[1];
 
-  // The clamp macros let NaN through: a NaN setting counts as its range's minimum.
-  auto finite = [](double v, double fallback) { return std::isfinite(v) ? v : fallback; };
-  const double referenceHeight = finite(this->ReferenceHeight, this->GetReferenceHeightMinValue());
-  const double neighborSpacing = finite(this->NeighborSpacing, this->GetNeighborSpacingMinValue());
-  const double maxStrideSetting = finite(this->MaxStride, this->GetMaxStrideMinValue());
-  const double planar = finite(this->PlanarTolerance, this->GetPlanarToleranceMinValue());
-  const double umbilic = finite(this->UmbilicTolerance, this->GetUmbilicToleranceMinValue());
-  const double fillSetting = finite(this->FillRadius, this->GetFillRadiusMinValue());
-  const double fallbackAngle = finite(this->FallbackAngle, this->GetFallbackAngleMinValue());
-  const double stepLength = finite(this->StepLength, this->GetStepLengthMinValue());
-  const double noiseSize = finite(this->NoiseSize, this->GetNoiseSizeMinValue());
-  const double strokeContrast = finite(this->StrokeContrast, this->GetStrokeContrastMinValue());
-  const double crossThreshold = finite(this->CrossThreshold, this->GetCrossThresholdMinValue());
-  const double contrastSetting = finite(this->Contrast, this->GetContrastMinValue());
-  const double blurSetting = finite(this->BlurRadius, this->GetBlurRadiusMinValue());
-
-  // Points -> pixels of this (possibly magnified) image; world lengths at the focal distance.
-  const U::FullImage full = U::GetFullImage(ren, ox, oy);
-  const double pointSize = full.Size[1] / referenceHeight;
-  vtkCamera* cam = ren->GetActiveCamera();
-  const bool parallel = cam->GetParallelProjection() != 0;
-  const double pixelWorld = U::PixelWorldSize(cam, w, h);
-  double focalPixel = parallel ? pixelWorld : pixelWorld * cam->GetDistance();
-  if (!(focalPixel > 0.0) || !std::isfinite(focalPixel))
-  {
-    focalPixel = 1.0;
-  }
-  vtkMatrix4x4* projection = cam->GetProjectionTransformMatrix(ren);
-  const double p00 = projection->GetElement(0, 0), p11 = projection->GetElement(1, 1);
-  const double p02 = projection->GetElement(0, 2), p12 = projection->GetElement(1, 2);
-  const double p03 = projection->GetElement(0, 3), p13 = projection->GetElement(1, 3);
-
-  std::string defines;
-  auto define = [&](bool on, const std::string& name) {
+  auto define = [&p](bool on, const std::string& name) {
     if (on)
     {
-      defines += "#define " + name + "\n";
+      p.Defines += "#define " + name + "\n";
     }
   };
   define(true, "SKETCH_NEIGHBORS " + std::to_string(this->Neighbors));
-  define(model, "SKETCH_MODEL");
+  define(p.Model, "SKETCH_MODEL");
   define(true, "SKETCH_DIRECTION " + std::to_string(this->Direction));
-  define(!objectNoise, "SKETCH_NOISE_SCREEN");
+  define(!p.ObjectNoise, "SKETCH_NOISE_SCREEN");
   define(this->LicMode == SCREEN_2D, "SKETCH_SCREEN_LIC");
   define(cross, "SKETCH_CROSS");
-  define(contrast, "SKETCH_CONTRAST");
+  define(p.Contrast, "SKETCH_CONTRAST");
   define(this->Tinted, "SKETCH_TINTED");
   define(true, "SKETCH_LAYER " + std::to_string(this->Layer));
-  if (defines != in.Defines || in.Declarations[0].empty())
+
+  // The clamp macros let NaN through: a NaN setting counts as its range's minimum.
+  auto finite = [](double v, double fallback) { return std::isfinite(v) ? v : fallback; };
+  auto* self = const_cast<vtkSketchPass*>(this); // the Min/Max getters are not const
+  p.Planar = finite(this->PlanarTolerance, self->GetPlanarToleranceMinValue());
+  p.Umbilic = finite(this->UmbilicTolerance, self->GetUmbilicToleranceMinValue());
+  p.StepLength = finite(this->StepLength, self->GetStepLengthMinValue());
+  p.StrokeContrast = finite(this->StrokeContrast, self->GetStrokeContrastMinValue());
+  p.CrossThreshold = finite(this->CrossThreshold, self->GetCrossThresholdMinValue());
+  p.ContrastSetting = finite(this->Contrast, self->GetContrastMinValue());
+
+  // Points -> pixels of this (possibly magnified) image; world lengths at the focal distance.
+  const double referenceHeight =
+    finite(this->ReferenceHeight, self->GetReferenceHeightMinValue());
+  p.PointSize = frame.FullSize[1] / referenceHeight;
+  p.FocalPixel =
+    frame.Parallel ? frame.PixelWorld : frame.PixelWorld * frame.Camera->GetDistance();
+  if (!(p.FocalPixel > 0.0) || !std::isfinite(p.FocalPixel))
   {
-    in.Defines = defines;
-    static const char* const stages[6] = { "ESTIMATE", "SMOOTH", "RESOLVE", "BLUR_X", "BLUR_Y",
-      "FINAL" };
-    for (int i = 0; i < 6; ++i)
-    {
-      in.Declarations[i] = std::string("#define SKETCH_STAGE_") + stages[i] + "\n" + defines +
-        vtkStylizeCommonFS + vtkStylizeDepthFS + vtkStylizeScreenFS + vtkSketchFS;
-    }
+    p.FocalPixel = 1.0;
   }
+  const double maxStride = finite(this->MaxStride, self->GetMaxStrideMinValue());
+  p.MaxStride = std::max(1, static_cast<int>(std::lround(maxStride * p.PointSize)));
+  p.SpacingWorld = finite(this->NeighborSpacing, self->GetNeighborSpacingMinValue()) *
+    p.PointSize * p.FocalPixel;
+  const double fill = finite(this->FillRadius, self->GetFillRadiusMinValue());
+  p.FillRadius = fill > 0.0 ? std::max(1.0, fill * p.PointSize) : -1.0;
+  p.Fallback =
+    vtkMath::RadiansFromDegrees(finite(this->FallbackAngle, self->GetFallbackAngleMinValue()));
+  const int stride = this->BlurStride;
+  p.BlurSize[0] = (frame.Size[0] + stride - 1) / stride;
+  p.BlurSize[1] = (frame.Size[1] + stride - 1) / stride;
+  p.BlurRadius = finite(this->BlurRadius, self->GetBlurRadiusMinValue()) * p.PointSize;
+  const double noiseSize = finite(this->NoiseSize, self->GetNoiseSizeMinValue());
+  p.NoiseUnit = p.ObjectNoise ? noiseSize * p.PointSize * p.FocalPixel : noiseSize * p.PointSize;
+  return p;
+}
 
-  vtkTextureObject* colour = gbuffer->GetColorTexture();
-  vtkTextureObject* depth = gbuffer->GetDepthTexture();
-  vtkTextureObject* linear = gbuffer->GetLinearDepthTexture();
-  vtkTextureObject* normal = gbuffer->GetNormalTexture();
-  vtkTextureObject* position = gbuffer->GetPositionTexture();
-  vtkTextureObject* direction = gbuffer->GetDirectionTexture();
-  if (strokes)
+//------------------------------------------------------------------------------
+void vtkSketchPass::UpdateNoise(const Frame& frame)
+{
+  vtkInternals& in = *this->Internals;
+  vtkTextureObject*& noise = this->TextureSlot(NOISE);
+  if (noise && in.NoiseKind == this->Noise && noise->GetContext() == frame.Window)
   {
-    in.EnsureNoise(renWin, this->Noise);
+    return;
   }
-
-  const int maxStride = std::max(1, static_cast<int>(std::lround(maxStrideSetting * pointSize)));
-  const double spacingWorld = neighborSpacing * pointSize * focalPixel;
-  const int blurStride = this->BlurStride;
-  const int blurW = (w + blurStride - 1) / blurStride, blurH = (h + blurStride - 1) / blurStride;
-  const double blurRadius = blurSetting * pointSize;
-  const double noiseUnit =
-    objectNoise ? noiseSize * pointSize * focalPixel : noiseSize * pointSize;
-  const double fallback = vtkMath::RadiansFromDegrees(fallbackAngle);
-
-  auto setCommon = [&](U::Uniforms& u) {
-    u.Texture("stylizeColorTexture", colour)
-      .Texture("stylizeDepthTexture", depth)
-      .Texture("stylizeLinearDepthTexture", linear)
-      .Texture("stylizeNormalTexture", normal)
-      .Texture("stylizePositionTexture", position)
-      .Texture("stylizeDirectionTexture", direction)
-      .Int2("sketchSize", w, h)
-      .Float2("sketchPixelOffset", full.Offset[0], full.Offset[1])
-      .Int("sketchParallel", parallel ? 1 : 0)
-      .Float("sketchPixelWorld", pixelWorld);
-    u.Float4("sketchProjection", p00, p11, p02, p12).Float2("sketchProjOffset", p03, p13);
-    gbuffer->SetDepthMappingUniforms(u.GetProgram());
-  };
-
-  if (!in.Framebuffer)
+  this->FreeTexture(NOISE);
+  vtkNew<vtkFloatArray> values;
+  vtkSketchPass::GenerateNoise(this->Noise, NoiseTextureSize, values);
+  const vtkIdType n = values->GetNumberOfTuples();
+  double sum = 0.0, sum2 = 0.0;
+  for (vtkIdType i = 0; i < n; ++i)
   {
-    in.Framebuffer = vtkOpenGLFramebufferObject::New();
-    in.Framebuffer->SetContext(renWin);
+    const double v = values->GetValue(i);
+    sum += v;
+    sum2 += v * v;
   }
-  vtkOpenGLFramebufferObject* fbo = in.Framebuffer;
-  vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  in.NoiseStats[0] = sum / n;
+  in.NoiseStats[1] = std::sqrt(std::max(0.0, sum2 / n - in.NoiseStats[0] * in.NoiseStats[0]));
+  noise = vtkTextureObject::New();
+  noise->SetContext(frame.Window);
+  noise->SetWrapS(vtkTextureObject::Repeat);
+  noise->SetWrapT(vtkTextureObject::Repeat);
+  noise->SetWrapR(vtkTextureObject::Repeat);
+  const int filter = this->Noise == WHITE ? vtkTextureObject::Nearest : vtkTextureObject::Linear;
+  noise->SetMinificationFilter(filter);
+  noise->SetMagnificationFilter(filter);
+  noise->Create3DFromRaw(NoiseTextureSize, NoiseTextureSize, NoiseTextureSize, 1, VTK_FLOAT,
+    values->GetPointer(0));
+  in.NoiseKind = this->Noise;
+}
 
-  bool ok = true;
-  // Runs one stage into `target` (tw x th).
-  auto stage = [&](U::ScreenQuad& quad, int index, vtkTextureObject* target, int tw, int th,
-                 const std::function<void(U::Uniforms&)>& extra) {
-    fbo->RemoveColorAttachments(1);
-    fbo->AddColorAttachment(0, target);
-    fbo->ActivateDrawBuffers(1);
-    ostate->vtkglViewport(0, 0, tw, th);
-    ostate->vtkglScissor(0, 0, tw, th);
-    vtkShaderProgram* program = quad.Prepare(renWin, in.Declarations[index], "  sketchMain();\n");
-    if (!program)
-    {
-      ok = false;
-      return;
-    }
-    U::Uniforms u(program);
-    setCommon(u);
-    extra(u);
-    quad.Render();
-  };
+//------------------------------------------------------------------------------
+void vtkSketchPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame)
+{
+  vtkMatrix4x4* projection = frame.Camera->GetProjectionTransformMatrix(frame.Renderer);
+  this->BindSceneTextures(u);
+  u.Int2("sketchSize", frame.Size[0], frame.Size[1])
+    .Float2("sketchPixelOffset", frame.FullOffset[0], frame.FullOffset[1])
+    .Int("sketchParallel", frame.Parallel ? 1 : 0)
+    .Float("sketchPixelWorld", frame.PixelWorld)
+    .Float4("sketchProjection", projection->GetElement(0, 0), projection->GetElement(1, 1),
+      projection->GetElement(0, 2), projection->GetElement(1, 2))
+    .Float2("sketchProjOffset", projection->GetElement(0, 3), projection->GetElement(1, 3));
+  this->SetDepthMappingUniforms(u);
+}
 
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-
-  // 1. Raw directions.
-  U::EnsureScreenTexture(in.Field[0], renWin, w, h, GL_RGBA16F);
-  U::EnsureScreenTexture(in.Resolved, renWin, w, h, GL_RGBA32F);
-  stage(in.EstimateQuad, 0, in.Field[0], w, h, [&](U::Uniforms& u) {
-    u.Float("sketchSpacing", spacingWorld)
-      .Int("sketchMaxStride", maxStride)
-      .Float("sketchPlanar", planar)
-      .Float("sketchUmbilic", umbilic);
+//------------------------------------------------------------------------------
+void vtkSketchPass::RenderEstimateStage(const Frame& frame, const Plan& p)
+{
+  const int w = frame.Size[0], h = frame.Size[1];
+  vtkTextureObject* field = this->EnsureTexture(FIELD_0, w, h, GL_RGBA16F);
+  this->RenderStage(ESTIMATE_STAGE, { field }, w, h, [&](vtkStylizeUniforms& u) {
+    this->SetStageUniforms(u, frame);
+    u.Float("sketchSpacing", p.SpacingWorld)
+      .Int("sketchMaxStride", p.MaxStride)
+      .Float("sketchPlanar", p.Planar)
+      .Float("sketchUmbilic", p.Umbilic);
   });
-  int current = 0;
+}
 
-  // 2. Smoothing (all pixels, 3x3), then filling (undefined pixels, distances 1, 2, 4, ...).
+//------------------------------------------------------------------------------
+int vtkSketchPass::RenderSmoothStages(const Frame& frame, const Plan& p)
+{
+  // Smoothing (all pixels, 3x3), then filling (undefined pixels, distances 1, 2, 4, ...).
   std::vector<std::pair<int, int>> iterations; // radius, fill only
   for (int i = 0; i < this->SmoothingIterations; ++i)
   {
     iterations.emplace_back(1, 0);
   }
-  const double fillRadius = fillSetting * pointSize;
-  for (int r = 1; fillSetting > 0.0 && r <= std::max(1.0, fillRadius); r *= 2)
+  for (int r = 1; p.FillRadius > 0.0 && r <= p.FillRadius; r *= 2)
   {
     iterations.emplace_back(r, 1);
   }
+  const int w = frame.Size[0], h = frame.Size[1];
   if (iterations.empty())
   {
-    U::FreeTexture(in.Field[1], renWin);
+    this->FreeTexture(FIELD_1);
+    return FIELD_0;
   }
-  else
-  {
-    U::EnsureScreenTexture(in.Field[1], renWin, w, h, GL_RGBA16F);
-  }
+  this->EnsureTexture(FIELD_1, w, h, GL_RGBA16F);
+  int current = FIELD_0;
   for (const auto& it : iterations)
   {
-    vtkTextureObject* input = in.Field[current];
-    stage(in.SmoothQuad, 1, in.Field[1 - current], w, h, [&](U::Uniforms& u) {
-      u.Texture("sketchInput", input).Int("sketchRadius", it.first).Int("sketchFillOnly", it.second);
+    const int next = current == FIELD_0 ? FIELD_1 : FIELD_0;
+    this->RenderStage(SMOOTH_STAGE, { this->TextureSlot(next) }, w, h, [&](vtkStylizeUniforms& u) {
+      this->SetStageUniforms(u, frame);
+      u.Texture("sketchInput", this->TextureSlot(current))
+        .Int("sketchRadius", it.first)
+        .Int("sketchFillOnly", it.second);
     });
-    current = 1 - current;
+    current = next;
   }
-
-  // 3. Fallbacks and the requested direction.
-  {
-    vtkTextureObject* input = in.Field[current];
-    stage(in.ResolveQuad, 2, in.Resolved, w, h, [&](U::Uniforms& u) {
-      u.Texture("sketchInput", input)
-        .Int("sketchGradientStride", std::max(1, static_cast<int>(std::lround(2.0 * pointSize))))
-        .Float2("sketchScreenDirection", std::cos(fallback), std::sin(fallback));
-    });
-  }
-
-  // 4. The strided blur of the lit luminance.
-  if (contrast)
-  {
-    U::EnsureScreenTexture(in.BlurX, renWin, blurW, blurH, GL_R32F);
-    U::EnsureScreenTexture(in.BlurY, renWin, blurW, blurH, GL_R32F);
-    in.BlurY->SetMinificationFilter(vtkTextureObject::Linear);
-    in.BlurY->SetMagnificationFilter(vtkTextureObject::Linear);
-    const int taps = static_cast<int>(std::ceil(blurRadius / blurStride));
-    auto blurUniforms = [&](U::Uniforms& u) {
-      u.Int("sketchBlurStride", blurStride)
-        .Float("sketchBlurSigma", std::max(0.5, blurRadius / 3.0))
-        .Int("sketchBlurTaps", taps)
-        .Int2("sketchBlurSize", blurW, blurH);
-    };
-    stage(in.BlurXQuad, 3, in.BlurX, blurW, blurH, blurUniforms);
-    stage(in.BlurYQuad, 4, in.BlurY, blurW, blurH, [&](U::Uniforms& u) {
-      blurUniforms(u);
-      u.Texture("sketchInput", in.BlurX);
-    });
-  }
-  else
-  {
-    U::FreeTexture(in.BlurX, renWin);
-    U::FreeTexture(in.BlurY, renWin);
-  }
-  fbo->RemoveColorAttachments(1);
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
-
-  // 5. Strokes and tone into the output framebuffer, with the geometry's depth.
-  ostate->vtkglViewport(ox, oy, w, h);
-  ostate->vtkglScissor(ox, oy, w, h);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
-  ostate->vtkglDepthMask(GL_TRUE);
-  vtkShaderProgram* program = in.FinalQuad.Prepare(renWin, in.Declarations[5], "  sketchMain();\n");
-  if (program)
-  {
-    U::Uniforms u(program);
-    setCommon(u);
-    u.Texture("sketchField", in.Resolved)
-      .Texture("sketchBlur", in.BlurY)
-      .Texture("sketchNoise", in.NoiseTexture)
-      .Float2("sketchNoiseStats", in.NoiseStats[0], in.NoiseStats[1])
-      .Float("sketchNoiseScale", 1.0 / (noiseUnit * NoiseTextureSize))
-      .Float("sketchStepPixels", stepLength * pointSize)
-      .Int("sketchSteps", this->Steps)
-      .Float("sketchStrokeContrast", strokeContrast)
-      .Float("sketchContrast", contrastSetting)
-      .Float2("sketchBright", this->BrightThresholds[0], this->BrightThresholds[1])
-      .Float("sketchCross", crossThreshold)
-      .Float3("sketchPencil", this->PencilColor[0], this->PencilColor[1], this->PencilColor[2])
-      .Float3("sketchPaper", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2])
-      .SceneOutput(gbuffer, ren);
-    in.FinalQuad.Render();
-  }
-  else
-  {
-    ok = false;
-  }
-  if (!ok)
-  {
-    vtkErrorMacro("Could not build a sketch shader.");
-  }
-  vtkOpenGLCheckErrorMacro("failed after vtkSketchPass::Render");
-
-  this->FinishScene(s);
+  return current;
 }
 
 //------------------------------------------------------------------------------
-void vtkSketchPass::ReleaseGraphicsResources(vtkWindow* w)
+void vtkSketchPass::RenderResolveStage(const Frame& frame, const Plan& p, int field)
 {
-  this->Superclass::ReleaseGraphicsResources(w);
-  vtkInternals& in = *this->Internals;
-  for (auto* quad : { &in.EstimateQuad, &in.SmoothQuad, &in.ResolveQuad, &in.BlurXQuad,
-         &in.BlurYQuad, &in.FinalQuad })
-  {
-    quad->Release(w);
-  }
-  in.FreeTextures(w);
-  in.GBuffer->ReleaseGraphicsResources(w);
+  const int w = frame.Size[0], h = frame.Size[1];
+  vtkTextureObject* resolved = this->EnsureTexture(RESOLVED, w, h, GL_RGBA32F);
+  this->RenderStage(RESOLVE_STAGE, { resolved }, w, h, [&](vtkStylizeUniforms& u) {
+    this->SetStageUniforms(u, frame);
+    u.Texture("sketchInput", this->TextureSlot(field))
+      .Int("sketchGradientStride", std::max(1, static_cast<int>(std::lround(2.0 * p.PointSize))))
+      .Float2("sketchScreenDirection", std::cos(p.Fallback), std::sin(p.Fallback));
+  });
+}
+
+//------------------------------------------------------------------------------
+void vtkSketchPass::RenderBlurStages(const Frame& frame, const Plan& p)
+{
+  const int bw = p.BlurSize[0], bh = p.BlurSize[1];
+  vtkTextureObject* blurX = this->EnsureTexture(BLUR_X, bw, bh, GL_R32F);
+  vtkTextureObject* blurY = this->EnsureTexture(BLUR_Y, bw, bh, GL_R32F);
+  blurY->SetMinificationFilter(vtkTextureObject::Linear);
+  blurY->SetMagnificationFilter(vtkTextureObject::Linear);
+  const int taps = static_cast<int>(std::ceil(p.BlurRadius / this->BlurStride));
+  auto uniforms = [&](vtkStylizeUniforms& u) {
+    this->SetStageUniforms(u, frame);
+    u.Int("sketchBlurStride", this->BlurStride)
+      .Float("sketchBlurSigma", std::max(0.5, p.BlurRadius / 3.0))
+      .Int("sketchBlurTaps", taps)
+      .Int2("sketchBlurSize", bw, bh);
+  };
+  this->RenderStage(BLUR_X_STAGE, { blurX }, bw, bh, uniforms);
+  this->RenderStage(BLUR_Y_STAGE, { blurY }, bw, bh, [&](vtkStylizeUniforms& u) {
+    uniforms(u);
+    u.Texture("sketchInput", blurX);
+  });
+}
+
+//------------------------------------------------------------------------------
+void vtkSketchPass::RenderFinalStage(const Frame& frame, const Plan& p)
+{
+  const vtkInternals& in = *this->Internals;
+  this->RenderStageToOutput(frame, FINAL_STAGE, true, [&](vtkStylizeUniforms& u) {
+    this->SetStageUniforms(u, frame);
+    u.Texture("sketchField", this->TextureSlot(RESOLVED))
+      .Texture("sketchBlur", this->TextureSlot(BLUR_Y))
+      .Texture("sketchNoise", this->TextureSlot(NOISE))
+      .Float2("sketchNoiseStats", in.NoiseStats[0], in.NoiseStats[1])
+      .Float("sketchNoiseScale", 1.0 / (p.NoiseUnit * NoiseTextureSize))
+      .Float("sketchStepPixels", p.StepLength * p.PointSize)
+      .Int("sketchSteps", this->Steps)
+      .Float("sketchStrokeContrast", p.StrokeContrast)
+      .Float("sketchContrast", p.ContrastSetting)
+      .Float2("sketchBright", this->BrightThresholds[0], this->BrightThresholds[1])
+      .Float("sketchCross", p.CrossThreshold)
+      .Float3("sketchPencil", this->PencilColor[0], this->PencilColor[1], this->PencilColor[2])
+      .Float3("sketchPaper", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2]);
+    this->SetSceneOutputUniforms(u, frame.Renderer);
+  });
 }

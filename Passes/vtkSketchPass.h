@@ -4,7 +4,7 @@
  *          surface's principal curvature directions, estimated per pixel in real time.
  *
  * The method of "real-time pencil sketch rendering along principal directions"
- * (ALGORITHMS.md section 3) as one render pass: `renderer->SetPass(sketch)`; no delegate.
+ * (docs/algorithms.md section 3) as one render pass: `renderer->SetPass(sketch)`; no delegate.
  *
  * 1. The opaque geometry is rendered once into the shared G-buffer (vtkStylizeGBufferPass)
  *    with a vtkStylizeLightingPass (Standard model by default). Channels: linear depth and
@@ -59,8 +59,6 @@
 #include <string> // for std::string
 
 class vtkFloatArray;
-class vtkStylizeGBufferPass;
-class vtkStylizeLightingPass;
 
 class VTKSTYLIZEPASSES_EXPORT vtkSketchPass : public vtkStylizeStylePass
 {
@@ -114,12 +112,6 @@ public:
     STROKES = 2,    ///< the LIC stroke texture alone (gray, 0.5 on average)
     TONE = 3        ///< the tone before strokes (bright faces and contrast applied)
   };
-
-  /** The lighting pass (Standard model by default); change its model or settings freely. */
-  vtkStylizeLightingPass* GetLightingPass() override;
-
-  /** The G-buffer pass (the sketch pass sets its channels each frame; FULL precision default). */
-  vtkStylizeGBufferPass* GetGBufferPass() override;
 
   ///@{
   /** The layer written to the output: SKETCH (default), DIRECTIONS, STROKES or TONE. */
@@ -352,8 +344,12 @@ public:
    */
   static void GenerateNoise(int kind, int size, vtkFloatArray* out);
 
+  /**
+   * Renders the sketch: the scene into the G-buffer (Standard lighting by default, FULL
+   * precision), the raw directions, smoothing and fill, fallbacks, the tone's blur, then
+   * strokes and tone into the output.
+   */
   void Render(const vtkRenderState* s) override;
-  void ReleaseGraphicsResources(vtkWindow* w) override;
 
 protected:
   vtkSketchPass();
@@ -388,6 +384,24 @@ protected:
   double PaperColor[3] = { 1.0, 1.0, 1.0 };
   bool Tinted = false;
   double ReferenceHeight = 1080.0;
+
+  /** What a frame computes: stages, channels, defines, and the settings' lengths in pixels. */
+  struct Plan;
+  Plan PlanFrame(const Frame& frame) const;
+  /** The noise texture of the current kind, made when the kind changes. */
+  void UpdateNoise(const Frame& frame);
+  /** The uniforms every stage reads. */
+  void SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame);
+  /** 1. Raw principal directions. */
+  void RenderEstimateStage(const Frame& frame, const Plan& plan);
+  /** 2. Smoothing, then filling; returns the texture slot holding the field. */
+  int RenderSmoothStages(const Frame& frame, const Plan& plan);
+  /** 3. Fallbacks and the requested direction. */
+  void RenderResolveStage(const Frame& frame, const Plan& plan, int field);
+  /** 4. The strided blur of the lit luminance (the contrast's reference). */
+  void RenderBlurStages(const Frame& frame, const Plan& plan);
+  /** 5. Strokes and tone into the output framebuffer, with the scene's depth. */
+  void RenderFinalStage(const Frame& frame, const Plan& plan);
 
 private:
   vtkSketchPass(const vtkSketchPass&) = delete;

@@ -140,8 +140,8 @@ class vtkStylizeGBufferPass::vtkInternals
 {
 public:
   vtkNew<vtkStylizeGBufferClearPass> ClearPass;
-  vtkStylizeShaderUtilities::ScreenQuad CompositeQuad;
-  vtkStylizeShaderUtilities::ScreenQuad ReconstructQuad;
+  vtkStylizeScreenQuad CompositeQuad;
+  vtkStylizeScreenQuad ReconstructQuad;
   vtkNew<vtkMatrix4x4> InverseView;
   vtkNew<vtkMatrix4x4> View;
   vtkNew<vtkMatrix4x4> InverseModel;
@@ -629,7 +629,7 @@ void vtkStylizeGBufferPass::RenderSceneImage(
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   const double* t = this->GeometryScreenTransform;
-  Utilities::Uniforms(program)
+  vtkStylizeUniforms(program)
     .Texture("stylizeImageColor", this->ImageColorTexture)
     .Texture("stylizeImageDepth", this->ImageDepthTexture)
     .Float4("stylizeScreenTransform", t[0], t[1], t[2], t[3])

@@ -8,13 +8,13 @@
  *
  * - **Standard**: VTK's own Phong model, term for term, so the image equals VTK's to within
  *   rounding (headlight shortcut, directional, positional and spot lights, attenuation, cone).
- * - **Comic** (ALGORITHMS.md section 2): ambient `La = p1 + I - 2 p1 I` where I is the
+ * - **Comic** (docs/algorithms.md section 2): ambient `La = p1 + I - 2 p1 I` where I is the
  *   property's ambient coefficient and p1 the subject factor; diffuse quantized as
  *   `floor(pd * kd * D) / pmax`, where D is the summed `Ip max(0, N.L)` of the lights, pd varies
  *   linearly from GrayLevelsNear at the near end of the visible depth range to GrayLevelsFar at
  *   the far end and pmax = max(GrayLevelsNear, GrayLevelsFar, 1); Blinn-Phong specular times
  *   SpecularGain.
- * - **PixelArt** (ALGORITHMS.md section 1): `sqrt(s) kd I att max(0, N.L)` diffuse and
+ * - **PixelArt** (docs/algorithms.md section 1): `sqrt(s) kd I att max(0, N.L)` diffuse and
  *   `M ks Ip max(0, N.H)^beta` specular, with att VTK's attenuation `1/(a0 + a1 r + a2 r^2)`
  *   (1/r^2 for attenuation (0,0,1), 1 for directional lights).
  *

@@ -1,7 +1,5 @@
 #include "vtkStylizeShaderUtilities.h"
 
-#include "vtkStylizeGBufferPass.h"
-
 #include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -10,7 +8,6 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkStylizeGBufferPass.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -83,13 +80,13 @@ void vtkStylizeShaderUtilities::FreeTexture(vtkTextureObject*& tex, vtkWindow* w
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeShaderUtilities::ScreenQuad::~ScreenQuad()
+vtkStylizeScreenQuad::~vtkStylizeScreenQuad()
 {
   delete this->Helper;
 }
 
 //------------------------------------------------------------------------------
-vtkShaderProgram* vtkStylizeShaderUtilities::ScreenQuad::Prepare(
+vtkShaderProgram* vtkStylizeScreenQuad::Prepare(
   vtkOpenGLRenderWindow* renWin, const std::string& declarations, const std::string& body)
 {
   // Same inputs as the last build: no string work on the per-frame path.
@@ -118,7 +115,7 @@ vtkShaderProgram* vtkStylizeShaderUtilities::ScreenQuad::Prepare(
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizeShaderUtilities::ScreenQuad::Render()
+void vtkStylizeScreenQuad::Render()
 {
   if (this->Helper)
   {
@@ -127,7 +124,7 @@ void vtkStylizeShaderUtilities::ScreenQuad::Render()
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizeShaderUtilities::ScreenQuad::Release(vtkWindow* w)
+void vtkStylizeScreenQuad::Release(vtkWindow* w)
 {
   if (this->Helper)
   {
@@ -179,7 +176,7 @@ double vtkStylizeShaderUtilities::PixelWorldSize(vtkCamera* cam, int w, int h)
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeShaderUtilities::Uniforms::~Uniforms()
+vtkStylizeUniforms::~vtkStylizeUniforms()
 {
   for (vtkTextureObject* tex : this->Bound)
   {
@@ -191,7 +188,7 @@ vtkStylizeShaderUtilities::Uniforms::~Uniforms()
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Int(
+vtkStylizeUniforms& vtkStylizeUniforms::Int(
   const char* name, int v)
 {
   if (this->Program->IsUniformUsed(name))
@@ -202,7 +199,7 @@ vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Int(
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float(
+vtkStylizeUniforms& vtkStylizeUniforms::Float(
   const char* name, double v)
 {
   if (this->Program->IsUniformUsed(name))
@@ -213,7 +210,7 @@ vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float(
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Int2(
+vtkStylizeUniforms& vtkStylizeUniforms::Int2(
   const char* name, int x, int y)
 {
   if (this->Program->IsUniformUsed(name))
@@ -225,7 +222,7 @@ vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Int2(
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float2(
+vtkStylizeUniforms& vtkStylizeUniforms::Float2(
   const char* name, double x, double y)
 {
   if (this->Program->IsUniformUsed(name))
@@ -237,7 +234,7 @@ vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float2
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float3(
+vtkStylizeUniforms& vtkStylizeUniforms::Float3(
   const char* name, double x, double y, double z)
 {
   if (this->Program->IsUniformUsed(name))
@@ -249,7 +246,7 @@ vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float3
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float4(
+vtkStylizeUniforms& vtkStylizeUniforms::Float4(
   const char* name, double x, double y, double z, double w)
 {
   if (this->Program->IsUniformUsed(name))
@@ -262,17 +259,7 @@ vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Float4
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::SceneOutput(
-  vtkStylizeGBufferPass* gbuffer, vtkRenderer* ren)
-{
-  this->Int("stylizeDiscardBackground", ren->Transparent() ? 1 : 0)
-    .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0);
-  gbuffer->SetDepthMappingUniforms(this->Program);
-  return *this;
-}
-
-//------------------------------------------------------------------------------
-vtkStylizeShaderUtilities::Uniforms& vtkStylizeShaderUtilities::Uniforms::Texture(
+vtkStylizeUniforms& vtkStylizeUniforms::Texture(
   const char* name, vtkTextureObject* tex)
 {
   if (tex && this->Program->IsUniformUsed(name))

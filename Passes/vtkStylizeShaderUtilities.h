@@ -6,9 +6,9 @@
  *   (vtkStylizeFaceNormal.glsl) to a polydata fragment shader, once, whichever pass asks first.
  * - EnsureScreenTexture() / FreeTexture() keep the screen-sized float textures of the G-buffer
  *   and the style passes (nearest filtering, clamped), recreated only when they must be.
- * - vtkStylizeShaderUtilities::ScreenQuad builds a full-screen quad program from one of the
+ * - vtkStylizeScreenQuad builds a full-screen quad program from one of the
  *   project's GLSL files, rebuilds it only when its source changes, and frees it.
- * - vtkStylizeShaderUtilities::Uniforms sets a screen pass's uniforms and textures where the
+ * - vtkStylizeUniforms sets a screen pass's uniforms and textures where the
  *   program uses them, and releases the texture units it took.
  * - GetFullImage() and PixelWorldSize(): where a viewport lies in the full (possibly tiled,
  *   magnified) image, and the world size of its pixels, for resolution-free screen lengths.
@@ -28,7 +28,6 @@ class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
 class vtkShaderProgram;
-class vtkStylizeGBufferPass;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -67,69 +66,63 @@ public:
    * (vtkWindowToImageFilter narrows its angle and height). 1 when undefined.
    */
   static double PixelWorldSize(vtkCamera* camera, int w, int h);
+};
+
+/**
+ * Sets uniforms and binds textures only where the program uses them; the texture units it
+ * takes are released when it goes out of scope (after the quad is drawn).
+ */
+class VTKSTYLIZEPASSES_NO_EXPORT vtkStylizeUniforms
+{
+public:
+  explicit vtkStylizeUniforms(vtkShaderProgram* program)
+    : Program(program)
+  {
+  }
+  ~vtkStylizeUniforms();
+  vtkStylizeUniforms(const vtkStylizeUniforms&) = delete;
+  vtkStylizeUniforms& operator=(const vtkStylizeUniforms&) = delete;
+
+  vtkStylizeUniforms& Int(const char* name, int v);
+  vtkStylizeUniforms& Float(const char* name, double v);
+  vtkStylizeUniforms& Int2(const char* name, int x, int y);
+  vtkStylizeUniforms& Float2(const char* name, double x, double y);
+  vtkStylizeUniforms& Float3(const char* name, double x, double y, double z);
+  vtkStylizeUniforms& Float4(const char* name, double x, double y, double z, double w);
+  /** Binds tex (when not null) to a free unit and sets the sampler. */
+  vtkStylizeUniforms& Texture(const char* name, vtkTextureObject* tex);
+  vtkShaderProgram* GetProgram() const { return this->Program; }
+
+private:
+  vtkShaderProgram* Program;
+  std::vector<vtkTextureObject*> Bound;
+};
+
+/** A full-screen quad whose fragment shader is `declarations` plus `body` in main(). */
+class VTKSTYLIZEPASSES_NO_EXPORT vtkStylizeScreenQuad
+{
+public:
+  vtkStylizeScreenQuad() = default;
+  ~vtkStylizeScreenQuad();
+  vtkStylizeScreenQuad(const vtkStylizeScreenQuad&) = delete;
+  vtkStylizeScreenQuad& operator=(const vtkStylizeScreenQuad&) = delete;
 
   /**
-   * Sets uniforms and binds textures only where the program uses them; the texture units it
-   * takes are released when it goes out of scope (after the quad is drawn).
+   * Makes the program current, building it when the inputs differ from the last build.
+   * Returns nullptr (after reporting the compiler's message) when it does not compile.
    */
-  class Uniforms
-  {
-  public:
-    explicit Uniforms(vtkShaderProgram* program)
-      : Program(program)
-    {
-    }
-    ~Uniforms();
-    Uniforms(const Uniforms&) = delete;
-    Uniforms& operator=(const Uniforms&) = delete;
+  vtkShaderProgram* Prepare(
+    vtkOpenGLRenderWindow* renWin, const std::string& declarations, const std::string& body);
+  /** Draws the quad over the current viewport. */
+  void Render();
+  /** Frees the program and the vertex arrays. */
+  void Release(vtkWindow* w);
 
-    Uniforms& Int(const char* name, int v);
-    Uniforms& Float(const char* name, double v);
-    Uniforms& Int2(const char* name, int x, int y);
-    Uniforms& Float2(const char* name, double x, double y);
-    Uniforms& Float3(const char* name, double x, double y, double z);
-    Uniforms& Float4(const char* name, double x, double y, double z, double w);
-    /** Binds tex (when not null) to a free unit and sets the sampler. */
-    Uniforms& Texture(const char* name, vtkTextureObject* tex);
-    /**
-     * How a style's stage writes the scene's background and depth, from its G-buffer's last
-     * frame: stylizeDiscardBackground (layered renderers), stylizeSceneFromImage (keep an
-     * image's background alpha) and the depth mapping (vtkStylizeDepthFS).
-     */
-    Uniforms& SceneOutput(vtkStylizeGBufferPass* gbuffer, vtkRenderer* ren);
-    vtkShaderProgram* GetProgram() const { return this->Program; }
-
-  private:
-    vtkShaderProgram* Program;
-    std::vector<vtkTextureObject*> Bound;
-  };
-
-  /** A full-screen quad whose fragment shader is `declarations` plus `body` in main(). */
-  class ScreenQuad
-  {
-  public:
-    ScreenQuad() = default;
-    ~ScreenQuad();
-    ScreenQuad(const ScreenQuad&) = delete;
-    ScreenQuad& operator=(const ScreenQuad&) = delete;
-
-    /**
-     * Makes the program current, building it when the inputs differ from the last build.
-     * Returns nullptr (after reporting the compiler's message) when it does not compile.
-     */
-    vtkShaderProgram* Prepare(
-      vtkOpenGLRenderWindow* renWin, const std::string& declarations, const std::string& body);
-    /** Draws the quad over the current viewport. */
-    void Render();
-    /** Frees the program and the vertex arrays. */
-    void Release(vtkWindow* w);
-
-  private:
-    vtkOpenGLQuadHelper* Helper = nullptr;
-    vtkOpenGLRenderWindow* Window = nullptr;
-    std::string Declarations;
-    std::string Body;
-  };
+private:
+  vtkOpenGLQuadHelper* Helper = nullptr;
+  vtkOpenGLRenderWindow* Window = nullptr;
+  std::string Declarations;
+  std::string Body;
 };
 
 #endif

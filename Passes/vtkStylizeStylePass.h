@@ -27,6 +27,27 @@
  * comic->SetDelegatePass(camera);
  * @endcode
  *
+ * For subclasses, the base owns the skeleton every style shares, so that a style class holds
+ * only its settings and its stages:
+ * - the lighting pass (its default model is given by the subclass's constructor) and the
+ *   G-buffer, whose per-frame configuration is one SceneRequest applied whole at every frame
+ *   (nothing a style set for one frame leaks into the next);
+ * - shader assembly: the style's GLSL file after the shared GLSL (common helpers, depth
+ *   mapping, screen helpers), one program per stage, rebuilt only when the defines change;
+ * - running a stage into textures or into the output, with the GL state saved and restored;
+ * - the G-buffer's textures and the scene-output uniforms bound by name;
+ * - the intermediate textures and framebuffer, and the release of all of it.
+ *
+ * A style's Render() reads as its pipeline:
+ * @code
+ * Frame frame;
+ * if (!this->BeginFrame(s, frame) || !this->RenderScene(s, request)) return;
+ * this->SetShaderDefines(defines);
+ * this->RenderFirstStage(frame);  // each stage: RenderStage(stage, targets, w, h, uniforms)
+ * this->RenderFinalStage(frame);  // RenderStageToOutput(stage, writeDepth, uniforms)
+ * this->EndFrame(s);
+ * @endcode
+ *
  * @sa vtkStylizeGBufferPass vtkStylizeLightingPass vtkImageProcessingPass
  */
 
@@ -36,8 +57,20 @@
 #include "vtkImageProcessingPass.h"
 #include "vtkStylizePassesModule.h" // for export macro
 
+#include <functional>       // for std::function
+#include <initializer_list> // for std::initializer_list
+#include <memory>           // for std::unique_ptr
+#include <string>           // for std::string
+#include <vector>           // for std::vector
+
+class vtkCamera;
+class vtkFloatArray;
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
 class vtkStylizeGBufferPass;
 class vtkStylizeLightingPass;
+class vtkStylizeUniforms;
+class vtkTextureObject;
 
 class VTKSTYLIZEPASSES_EXPORT vtkStylizeStylePass : public vtkImageProcessingPass
 {
@@ -45,29 +78,156 @@ public:
   vtkTypeMacro(vtkStylizeStylePass, vtkImageProcessingPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** The lighting pass the style shades with (owned by the style; change its settings freely). */
-  virtual vtkStylizeLightingPass* GetLightingPass() = 0;
+  /**
+   * The lighting pass the style shades with (owned by the style; change its model and settings
+   * freely). Its default model is the style's own (Comic, PixelArt, or Standard for sketch).
+   */
+  vtkStylizeLightingPass* GetLightingPass();
 
-  /** The style's G-buffer (owned by the style). */
-  virtual vtkStylizeGBufferPass* GetGBufferPass() = 0;
+  /**
+   * The style's G-buffer (owned by the style), for reading the last frame back
+   * (vtkStylizeGBufferPass::DownloadChannel()) and for its user settings (Precision,
+   * LogarithmicDepthRatio). The style sets the per-frame configuration (channels, position
+   * space, geometry resolution and screen transform, the scene's source) at every render from
+   * its own settings: changes made to those here do not last.
+   */
+  vtkStylizeGBufferPass* GetGBufferPass();
+
+  /** Frees the G-buffer, the stage programs, the intermediate textures and the framebuffer. */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
 
 protected:
-  vtkStylizeStylePass();
+  /**
+   * `lightingModel`: the style's default lighting model (vtkStylizeLightingPass::Models).
+   * `styleSource`: the style's GLSL (declarations and `mainCall`'s function), assembled after the
+   * shared GLSL. `stageDefines`: one entry per stage, the #define that selects it ("" for
+   * none). `mainCall`: the statement main() runs, e.g. "  comicMain();\n".
+   */
+  vtkStylizeStylePass(int lightingModel, const char* styleSource,
+    std::vector<std::string> stageDefines, const char* mainCall);
   ~vtkStylizeStylePass() override;
+
+  /** The frame being rendered, as the stages see it (filled by BeginFrame()). */
+  struct Frame
+  {
+    vtkRenderer* Renderer = nullptr;
+    vtkOpenGLRenderWindow* Window = nullptr;
+    int Size[2] = { 0, 0 };   ///< the viewport's width and height, pixels
+    int Origin[2] = { 0, 0 }; ///< its lower-left corner in the window
+    /** The full (possibly tiled, magnified) image: the renderer's size in it, pixels. */
+    double FullSize[2] = { 1.0, 1.0 };
+    /** The viewport's lower-left corner in the full image, whole pixels. */
+    double FullOffset[2] = { 0.0, 0.0 };
+    /** The magnification of a tiled screenshot (1 otherwise). */
+    int TileScale[2] = { 1, 1 };
+    vtkCamera* Camera = nullptr;
+    bool Parallel = false;
+    /** World size of a pixel: times the depth in perspective, as is in parallel projection. */
+    double PixelWorld = 1.0;
+  };
+
+  /**
+   * What the G-buffer renders this frame. Applied whole at every frame: a field a style does
+   * not set has its default.
+   */
+  struct SceneRequest
+  {
+    /** vtkStylizeGBufferPass::ChannelBits beyond colour and depth. */
+    int Channels = 0;
+    /** vtkStylizeGBufferPass::PositionSpaces of the POSITION channel. */
+    int PositionSpace = 0;
+    /** Geometry render resolution; 0 x 0: the viewport's. */
+    int Resolution[2] = { 0, 0 };
+    /** Screen transform of the geometry, x' = sx x + tx, y' = sy y + ty (NDC). */
+    double ScreenTransform[4] = { 1.0, 1.0, 0.0, 0.0 };
+    /** Shift of translucent geometry and volumes (NDC). */
+    double AfterShift[2] = { 0.0, 0.0 };
+  };
+
+  /**
+   * Starts a frame: clears GL errors and fills `frame`. Returns false when there is nothing to
+   * stylize (no OpenGL window, or a zero-sized viewport: the rest of the scene is then drawn and
+   * the frame is done).
+   */
+  bool BeginFrame(const vtkRenderState* s, Frame& frame);
 
   /**
    * Renders the scene into the G-buffer (from the geometry, or from the delegate's image when a
-   * delegate is set) with the channels given. Returns false when there is nothing to stylize
-   * (zero-sized viewport); the rest of the scene has then been drawn and the frame is done.
+   * delegate is set) as `request` says. Returns false when there is nothing to stylize; the rest
+   * of the scene has then been drawn and the frame is done.
    */
-  bool RenderScene(const vtkRenderState* s, int channels);
+  bool RenderScene(const vtkRenderState* s, const SceneRequest& request);
 
-  /** Draws what follows the stylized image (translucent geometry, volumes, the overlay). */
-  void FinishScene(const vtkRenderState* s);
+  /** Ends a frame: draws what follows the stylized image (translucent geometry, volumes, the
+   * overlay), then checks GL errors. */
+  void EndFrame(const vtkRenderState* s);
+
+  /** The stages' #defines for this frame; the programs are rebuilt only when they change. */
+  void SetShaderDefines(const std::string& defines);
+
+  /** The uniforms a stage sets (textures, numbers), given the program's binder. */
+  using StageUniforms = std::function<void(vtkStylizeUniforms&)>;
+
+  /**
+   * Runs stage `stage` into `targets` (colour attachments 0, 1, ... of the style's framebuffer),
+   * over w x h pixels, without blending or depth test. Returns false when its program does not
+   * build (reported once per frame by EndFrame()).
+   */
+  bool RenderStage(int stage, std::initializer_list<vtkTextureObject*> targets, int w, int h,
+    const StageUniforms& uniforms);
+
+  /**
+   * Runs stage `stage` into the output framebuffer over the frame's viewport. `writeDepth`:
+   * the stage writes gl_FragDepth (depth test always passes); otherwise the viewport's depth is
+   * cleared to the far plane and not tested.
+   */
+  bool RenderStageToOutput(
+    const Frame& frame, int stage, bool writeDepth, const StageUniforms& uniforms);
+
+  /** Binds the G-buffer's textures of the last frame under their shared sampler names. */
+  void BindSceneTextures(vtkStylizeUniforms& u);
+
+  /**
+   * How a final stage writes the scene's background and depth: stylizeDiscardBackground
+   * (layered renderers), stylizeSceneFromImage (keep an image's background alpha) and the depth
+   * mapping (vtkStylizeDepthFS).
+   */
+  void SetSceneOutputUniforms(vtkStylizeUniforms& u, vtkRenderer* ren);
+
+  /** The depth mapping of the last frame (vtkStylizeDepthFS) alone. */
+  void SetDepthMappingUniforms(vtkStylizeUniforms& u);
+
+  /** A G-buffer texture of the last frame (vtkStylizeGBufferPass::Buffers); nullptr if absent. */
+  vtkTextureObject* GetSceneTexture(int buffer);
+
+  /**
+   * An intermediate texture of the style, by the style's own slot number: made w x h with
+   * nearest filtering and `internalFormat` (see vtkStylizeShaderUtilities::EnsureScreenTexture),
+   * resized or recreated as needed. Freed by FreeTexture() and ReleaseGraphicsResources().
+   */
+  vtkTextureObject* EnsureTexture(int slot, int w, int h, int internalFormat);
+
+  /** The texture in `slot` (nullptr when none), for textures a style makes itself. */
+  vtkTextureObject*& TextureSlot(int slot);
+
+  /** Frees the texture in `slot`. */
+  void FreeTexture(int slot);
+
+  /**
+   * Reads an RGBA float texture of the last frame back (rows bottom to top) through the style's
+   * framebuffer. The window's context must be current. False when there is none.
+   */
+  bool DownloadTexture(vtkTextureObject* tex, vtkFloatArray* out);
+
+  /** Frees everything a style made for its stages (ReleaseGraphicsResources() calls it). */
+  virtual void ReleaseStyleResources(vtkWindow*) {}
 
 private:
   vtkStylizeStylePass(const vtkStylizeStylePass&) = delete;
   void operator=(const vtkStylizeStylePass&) = delete;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
 };
 
 #endif

@@ -1,5 +1,5 @@
 // VTK Stylize comic pass (vtkComicPass): three-phase edges, halftone dots, hatch lines.
-// ALGORITHMS.md section 2. The pass prepends #defines that select what is compiled:
+// docs/algorithms.md section 2. The pass prepends #defines that select what is compiled:
 //   COMIC_STAGE_EDGES   first stage of the colour-edge path: writes f_normal and k1, k2
 //   COMIC_DEPTH_EDGES, COMIC_NORMAL_EDGES, COMIC_COLOR_EDGES   the enabled edge phases
 //   COMIC_DOTS, COMIC_HATCH, COMIC_CROSS                       the enabled patterns

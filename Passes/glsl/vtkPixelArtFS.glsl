@@ -1,4 +1,4 @@
-// VTK Stylize: the pixel-art stages (ALGORITHMS.md section 1), one full-screen pass each.
+// VTK Stylize: the pixel-art stages (docs/algorithms.md section 1), one full-screen pass each.
 // One stage is compiled per program, chosen by a define:
 //   PIXEL_STAGE_REDUCE      (FAITHFUL) average each block of the full-resolution G-buffer
 //   PIXEL_STAGE_GAUSS       gray = mean(R, G, B), the paper's 3x3 Gaussian (sigma = 1)

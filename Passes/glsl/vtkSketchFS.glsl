@@ -1,6 +1,6 @@
 // VTK Stylize sketch pass (vtkSketchPass): per-pixel principal directions by focal surfaces,
 // perspective-correct line integral convolution of solid noise, pencil tone.
-// ALGORITHMS.md section 3. The pass prepends #defines that select what is compiled:
+// docs/algorithms.md section 3. The pass prepends #defines that select what is compiled:
 //   SKETCH_STAGE_ESTIMATE  raw direction e (the principal direction of the smaller |curvature|)
 //                          and its confidence, from the G-buffer (focal surfaces or the mapped
 //                          direction attribute)

@@ -10,13 +10,13 @@ uniform samplerBuffer stylizeLights;
 uniform int stylizeLightCount;      // number of enabled lights, >= 0
 uniform int stylizeHeadlightOnly;   // 1 when VTK would use its single-headlight shortcut
 uniform int stylizeModel;           // 0 Standard, 1 Comic, 2 PixelArt
-// Comic (ALGORITHMS.md section 2)
+// Comic (docs/algorithms.md section 2)
 uniform float stylizeSubjectFactor; // p1 in [0, 1]
 uniform float stylizeLevelsNear;    // gray levels at the near end of the depth range, [0, 100]
 uniform float stylizeLevelsFar;     // gray levels at the far end, [0, 100]
 uniform float stylizeSpecularGain;  // specular multiplier, [0, 100]
 uniform vec2 stylizeDepthRange;     // view depth mapped to 0 and 1 for the level interpolation
-// Pixel art (ALGORITHMS.md section 1)
+// Pixel art (docs/algorithms.md section 1)
 uniform float stylizeScattering;    // s in [0, 1]; diffuse scaled by sqrt(s)
 uniform float stylizeOcclusion;     // M in [0, 1]; specular occlusion factor
 
