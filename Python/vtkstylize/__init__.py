@@ -21,8 +21,6 @@ Filters (module ``vtkstylize.vtkStylizeFilters``):
 
 - ``vtkStylizeDemoScene``: the built-in scene (wavelet isosurface, torus, streamline tubes) as
   a multiblock dataset.
-- ``vtkStylizeImageMetrics``: strict image measurements (maximum difference, PSNR, SSIM, count
-  of non-finite values).
 - ``vtkStylizePrincipalCurvatures``: per-point principal curvatures and directions of a surface.
 
 And a small pure-Python layer:

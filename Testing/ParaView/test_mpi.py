@@ -28,7 +28,7 @@ import shutil
 import subprocess
 import sys
 
-import vtkstylize
+from vtkstylize_testing import vtkStylizeImageMetrics
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 pvbatch, out = sys.argv[1], sys.argv[2]
@@ -65,7 +65,7 @@ two, info2 = run(2)
 if len(info2) < 4 or int(info2[3]) != 2:
     failures.append("the data is not split across the 2 ranks: %s" % " ".join(info2))
 
-M = vtkstylize.vtkStylizeImageMetrics
+M = vtkStylizeImageMetrics
 print("| style | SSIM | max difference | pixels > 16 levels | PSNR dB |")
 print("|---|---:|---:|---:|---:|")
 for name in ["none", "comic", "pixel", "sketch", "comic-subject"]:

@@ -18,6 +18,7 @@ import sys
 import vtkstylize
 import vtkstylize.vtkStylizeFilters
 import vtkstylize.vtkStylizePasses
+from vtkstylize_testing import vtkStylizeImageMetrics
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
@@ -164,7 +165,7 @@ def grab():
     return w2i.GetOutput()
 
 
-metrics = vtkstylize.vtkStylizeImageMetrics
+metrics = vtkStylizeImageMetrics
 plain = grab()
 for style in ("comic", "pixel", "sketch", "comic"):
     applied = vtkstylize.apply_style(renderer, style, ReferenceHeight=120) \

@@ -5,6 +5,7 @@ Run with the build's python folder on PYTHONPATH and a display (the suite does b
 import sys
 
 import vtkstylize
+from vtkstylize_testing import vtkStylizeImageMetrics
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
                                          vtkRenderWindow, vtkWindowToImageFilter)
@@ -68,13 +69,13 @@ for name in ("standard", "comic", "pixelart"):
         lo, hi = scalars.GetRange(0)
         check(hi > lo, "%s%s: the image is flat" % (name, " (G-buffer)" if gbuffer else ""))
         if normals is not None:
-            check(vtkstylize.vtkStylizeImageMetrics.CountNonFinite(normals) == 0,
+            check(vtkStylizeImageMetrics.CountNonFinite(normals) == 0,
                   "%s: non-finite normals" % name)
         if name == "standard" and not gbuffer:
             plain = image
         print("%-9s %-9s ok, range %g..%g" % (name, "gbuffer" if gbuffer else "lighting", lo, hi))
 comic, _ = render(1, False)
-check(vtkstylize.vtkStylizeImageMetrics.MaximumDifference(plain, comic) > 10,
+check(vtkStylizeImageMetrics.MaximumDifference(plain, comic) > 10,
       "comic looks like standard")
 
 

@@ -16,12 +16,12 @@
 #define vtkStylizeImageMetrics_h
 
 #include "vtkObject.h"
-#include "vtkStylizeFiltersModule.h" // for export macro
+#include "vtkStylizeTestingSupportModule.h" // for export macro
 
 class vtkDataArray;
 class vtkImageData;
 
-class VTKSTYLIZEFILTERS_EXPORT vtkStylizeImageMetrics : public vtkObject
+class VTKSTYLIZETESTINGSUPPORT_EXPORT vtkStylizeImageMetrics : public vtkObject
 {
 public:
   static vtkStylizeImageMetrics* New();

@@ -1,0 +1,56 @@
+#!/bin/sh
+# install.fresh_prefix: installs the build into a fresh prefix, moves the prefix elsewhere, then
+# runs what the install offers from there with a clean environment (env -i: PATH, HOME and
+# DISPLAY only, plus PYTHONPATH for Python, as docs/install.md documents):
+#   - bin/vtkstylize renders a comic PNG (the program finds the project's libraries through
+#     its RUNPATH, $ORIGIN/../lib);
+#   - the Python package renders a comic image (check_python.py);
+#   - bin/pvbatch-stylize loads the installed plugin and renders (when the plugin is built).
+# It also fails when anything test-only or build-only is installed.
+#
+#   check_install.sh CMAKE BUILD_DIR SOURCE_DIR WORK_DIR WITH_PYTHON WITH_PLUGIN
+set -eu
+cmake=$1 build=$2 source=$3 work=$4 with_python=$5 with_plugin=$6
+
+fail() {
+  echo "install.fresh_prefix: $*" >&2
+  exit 1
+}
+clean() {
+  env -i PATH=/usr/bin:/bin HOME="$work" DISPLAY="${DISPLAY:-}" "$@"
+}
+
+rm -rf "$work"
+mkdir -p "$work"
+"$cmake" --install "$build" --prefix "$work/first" >"$work/install.log" 2>&1 ||
+  fail "cmake --install failed (see $work/install.log)"
+
+# Nothing test-only (the image metrics) or build-only (static client-server libraries).
+unwanted=$(find "$work/first" \( -name '*TestingSupport*' -o -name 'vtkstylize_testing' \
+  -o -name '*.a' \) -print)
+[ -z "$unwanted" ] || fail "installed but test-only or build-only: $unwanted"
+
+# A prefix that was never the install prefix: nothing may depend on the first location.
+mv "$work/first" "$work/moved"
+prefix="$work/moved"
+
+clean "$prefix/bin/vtkstylize" --style comic --size 96x72 --output "$work/cli.png" ||
+  fail "the installed vtkstylize did not run from $prefix"
+[ -s "$work/cli.png" ] || fail "the installed vtkstylize wrote no image"
+echo "vtkstylize from the moved prefix: $work/cli.png"
+
+if [ "$with_python" = ON ]; then
+  clean PYTHONPATH="$prefix/python" /usr/bin/python3 "$source/Testing/Install/check_python.py" \
+    "$prefix" || fail "the installed Python package did not work from $prefix"
+fi
+
+if [ "$with_plugin" = ON ]; then
+  clean "$prefix/bin/pvbatch-stylize" "$source/Testing/ParaView/check_load.py" \
+    "$work/plugin.png" >"$work/plugin.log" 2>&1 ||
+    fail "the installed pvbatch-stylize did not load the plugin (see $work/plugin.log)"
+  grep -q "plugin loaded from $prefix/" "$work/plugin.log" ||
+    fail "the plugin was not loaded from $prefix: $(cat "$work/plugin.log")"
+  [ -s "$work/plugin.png" ] || fail "pvbatch-stylize wrote no image"
+  echo "plugin from the moved prefix: $work/plugin.png"
+fi
+echo "install.fresh_prefix: passed"
