@@ -137,12 +137,7 @@ vtkComicPass::Plan vtkComicPass::PlanFrame() const
     p.Scene.PositionSpace = vtkStylizeGBufferPass::OBJECT;
   }
 
-  auto define = [&p](bool on, const char* name) {
-    if (on)
-    {
-      p.Defines += std::string("#define ") + name + "\n";
-    }
-  };
+  auto define = [&p](bool on, const std::string& name) { AddDefine(p.Defines, on, name); };
   define(p.DepthEdges, "COMIC_DEPTH_EDGES");
   define(p.NormalEdges, "COMIC_NORMAL_EDGES");
   define(p.ColorEdges, "COMIC_COLOR_EDGES");

@@ -413,12 +413,7 @@ vtkPixelArtPass::Plan vtkPixelArtPass::PlanFrame(const vtkRenderState* s, const 
     p.AnchorUnit = 1.0;
   }
 
-  auto define = [&p](bool on, const char* name) {
-    if (on)
-    {
-      p.Defines += std::string("#define ") + name + "\n";
-    }
-  };
+  auto define = [&p](bool on, const std::string& name) { AddDefine(p.Defines, on, name); };
   define(p.Fast, "PIXEL_FAST");
   define(p.Canny, "PIXEL_CANNY");
   define(p.Sobel, "PIXEL_SOBEL");

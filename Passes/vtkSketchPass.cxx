@@ -452,12 +452,7 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
     p.Scene.Channels |= vtkStylizeGBufferPass::DIRECTION;
   }
 
-  auto define = [&p](bool on, const std::string& name) {
-    if (on)
-    {
-      p.Defines += "#define " + name + "\n";
-    }
-  };
+  auto define = [&p](bool on, const std::string& name) { AddDefine(p.Defines, on, name); };
   define(true, "SKETCH_NEIGHBORS " + std::to_string(this->Neighbors));
   define(p.Model, "SKETCH_MODEL");
   define(true, "SKETCH_DIRECTION " + std::to_string(this->Direction));

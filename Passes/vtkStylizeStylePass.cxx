@@ -207,6 +207,15 @@ void vtkStylizeStylePass::SetShaderDefines(const std::string& defines)
 }
 
 //------------------------------------------------------------------------------
+void vtkStylizeStylePass::AddDefine(std::string& defines, bool on, const std::string& name)
+{
+  if (on)
+  {
+    defines += "#define " + name + "\n";
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkStylizeStylePass::RenderStage(int stage,
   std::initializer_list<vtkTextureObject*> targets, int w, int h, const StageUniforms& uniforms)
 {

@@ -165,6 +165,9 @@ protected:
   /** The stages' #defines for this frame; the programs are rebuilt only when they change. */
   void SetShaderDefines(const std::string& defines);
 
+  /** Appends "#define name" to `defines` when `on`. */
+  static void AddDefine(std::string& defines, bool on, const std::string& name);
+
   /** The uniforms a stage sets (textures, numbers), given the program's binder. */
   using StageUniforms = std::function<void(vtkStylizeUniforms&)>;
 

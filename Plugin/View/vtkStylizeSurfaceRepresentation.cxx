@@ -1,6 +1,5 @@
 #include "vtkStylizeSurfaceRepresentation.h"
 
-#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODActor.h"
 #include "vtkPVView.h"
@@ -10,17 +9,37 @@ vtkStandardNewMacro(vtkStylizeSurfaceRepresentation);
 
 //------------------------------------------------------------------------------
 vtkStylizeSurfaceRepresentation::vtkStylizeSurfaceRepresentation()
+  : Settings(vtkStylizeLightingPass::New())
 {
-  // Start from the lighting pass's own defaults.
-  vtkNew<vtkStylizeLightingPass> defaults;
-  this->SubjectFactor = defaults->GetSubjectFactor();
-  this->GrayLevelsNear = defaults->GetGrayLevelsNear();
-  this->GrayLevelsFar = defaults->GetGrayLevelsFar();
-  this->SpecularGain = defaults->GetSpecularGain();
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeSurfaceRepresentation::~vtkStylizeSurfaceRepresentation() = default;
+vtkStylizeSurfaceRepresentation::~vtkStylizeSurfaceRepresentation()
+{
+  this->Settings->Delete();
+}
+
+// Each setting is the lighting pass's: it clamps, and the representation is modified when the
+// value changes.
+#define STYLIZE_FORWARD_SETTING(name)                                                          \
+  void vtkStylizeSurfaceRepresentation::Set##name(double value)                               \
+  {                                                                                            \
+    const vtkMTimeType before = this->Settings->GetMTime();                                    \
+    this->Settings->Set##name(value);                                                          \
+    if (this->Settings->GetMTime() != before)                                                  \
+    {                                                                                          \
+      this->Modified();                                                                        \
+    }                                                                                          \
+  }                                                                                            \
+  double vtkStylizeSurfaceRepresentation::Get##name()                                         \
+  {                                                                                            \
+    return this->Settings->Get##name();                                                        \
+  }
+STYLIZE_FORWARD_SETTING(SubjectFactor)
+STYLIZE_FORWARD_SETTING(GrayLevelsNear)
+STYLIZE_FORWARD_SETTING(GrayLevelsFar)
+STYLIZE_FORWARD_SETTING(SpecularGain)
+#undef STYLIZE_FORWARD_SETTING
 
 //------------------------------------------------------------------------------
 void vtkStylizeSurfaceRepresentation::ApplyLightingSettings()
@@ -34,9 +53,11 @@ void vtkStylizeSurfaceRepresentation::ApplyLightingSettings()
     }
     if (this->OverrideLighting)
     {
-      vtkStylizeLightingPass::SetActorSubjectFactor(actor, this->SubjectFactor);
-      vtkStylizeLightingPass::SetActorGrayLevels(actor, this->GrayLevelsNear, this->GrayLevelsFar);
-      vtkStylizeLightingPass::SetActorSpecularGain(actor, this->SpecularGain);
+      vtkStylizeLightingPass* s = this->Settings;
+      vtkStylizeLightingPass::SetActorSubjectFactor(actor, s->GetSubjectFactor());
+      vtkStylizeLightingPass::SetActorGrayLevels(
+        actor, s->GetGrayLevelsNear(), s->GetGrayLevelsFar());
+      vtkStylizeLightingPass::SetActorSpecularGain(actor, s->GetSpecularGain());
     }
     else
     {
@@ -61,8 +82,8 @@ void vtkStylizeSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "OverrideLighting: " << this->OverrideLighting << "\n";
-  os << indent << "SubjectFactor: " << this->SubjectFactor << "\n";
-  os << indent << "GrayLevelsNear: " << this->GrayLevelsNear << "\n";
-  os << indent << "GrayLevelsFar: " << this->GrayLevelsFar << "\n";
-  os << indent << "SpecularGain: " << this->SpecularGain << "\n";
+  os << indent << "SubjectFactor: " << this->Settings->GetSubjectFactor() << "\n";
+  os << indent << "GrayLevelsNear: " << this->Settings->GetGrayLevelsNear() << "\n";
+  os << indent << "GrayLevelsFar: " << this->Settings->GetGrayLevelsFar() << "\n";
+  os << indent << "SpecularGain: " << this->Settings->GetSpecularGain() << "\n";
 }

@@ -17,6 +17,8 @@
 #include "vtkGeometryRepresentationWithFaces.h"
 #include "vtkStylizeParaViewViewModule.h" // for export macro
 
+class vtkStylizeLightingPass;
+
 class VTKSTYLIZEPARAVIEWVIEW_EXPORT vtkStylizeSurfaceRepresentation
   : public vtkGeometryRepresentationWithFaces
 {
@@ -33,25 +35,19 @@ public:
 
   ///@{
   /**
-   * The comic subject factor p1 of this representation (ambient La = p1 + I - 2 p1 I):
-   * dimensionless, range [0, 1], default 0 (the lighting pass's default).
+   * This representation's per-actor lighting settings, with the meaning, unit, range and
+   * default of the lighting pass's settings of the same name (vtkStylizeLightingPass: they are
+   * held and clamped by one, so nothing is restated here): the comic subject factor p1, the
+   * gray levels at the near and far ends of the depth range, the specular gain.
    */
-  vtkSetClampMacro(SubjectFactor, double, 0.0, 1.0);
-  vtkGetMacro(SubjectFactor, double);
-  ///@}
-
-  ///@{
-  /** Comic gray levels at the near and far ends of the depth range: range [0, 100], defaults 4 and 2. */
-  vtkSetClampMacro(GrayLevelsNear, double, 0.0, 100.0);
-  vtkGetMacro(GrayLevelsNear, double);
-  vtkSetClampMacro(GrayLevelsFar, double, 0.0, 100.0);
-  vtkGetMacro(GrayLevelsFar, double);
-  ///@}
-
-  ///@{
-  /** Comic specular gain: dimensionless, range [0, 100], default 1.5. */
-  vtkSetClampMacro(SpecularGain, double, 0.0, 100.0);
-  vtkGetMacro(SpecularGain, double);
+  void SetSubjectFactor(double p1);
+  double GetSubjectFactor();
+  void SetGrayLevelsNear(double levels);
+  double GetGrayLevelsNear();
+  void SetGrayLevelsFar(double levels);
+  double GetGrayLevelsFar();
+  void SetSpecularGain(double gain);
+  double GetSpecularGain();
   ///@}
 
   int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
@@ -65,10 +61,8 @@ protected:
   void ApplyLightingSettings();
 
   bool OverrideLighting = false;
-  double SubjectFactor = 0.0;
-  double GrayLevelsNear = 4.0;
-  double GrayLevelsFar = 2.0;
-  double SpecularGain = 1.5;
+  /** Holds the per-actor settings (their ranges and defaults are the lighting pass's). */
+  vtkStylizeLightingPass* Settings;
 
 private:
   vtkStylizeSurfaceRepresentation(const vtkStylizeSurfaceRepresentation&) = delete;
