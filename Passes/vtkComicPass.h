@@ -65,7 +65,11 @@ public:
   };
 
   ///@{
-  /** The layer written to the output: COMIC (default), EDGES or PATTERN. */
+  /**
+   * The layer written to the output: COMIC (default), EDGES or PATTERN. Values: COMIC, the pattern
+   * times the edges (the comic image); EDGES, the edge factor e alone (white = no edge, black =
+   * full edge), gray; PATTERN, the dots and hatching alone, without edges.
+   */
   vtkSetClampMacro(Layer, int, COMIC, PATTERN);
   vtkGetMacro(Layer, int);
   ///@}
@@ -222,7 +226,11 @@ public:
   ///@}
 
   ///@{
-  /** Pattern anchoring: SCREEN (default) or OBJECT. */
+  /**
+   * Pattern anchoring: SCREEN (default) or OBJECT. Values: SCREEN, to the image: the classic look;
+   * the pattern stays while the scene moves; OBJECT, to the surface (object-space position): moves
+   * with the data.
+   */
   vtkSetClampMacro(Anchor, int, SCREEN, OBJECT);
   vtkGetMacro(Anchor, int);
   void SetAnchorToScreen() { this->SetAnchor(SCREEN); }

@@ -109,7 +109,11 @@ public:
   };
 
   ///@{
-  /** FAST or FAITHFUL (default) pixelation. */
+  /**
+   * FAST or FAITHFUL (default) pixelation. Values: FAST, render the scene at the art-pixel
+   * resolution (one sample per art pixel); FAITHFUL, render at full resolution and average each
+   * block.
+   */
   vtkSetClampMacro(Mode, int, FAST, FAITHFUL);
   vtkGetMacro(Mode, int);
   void SetModeToFast() { this->SetMode(FAST); }
@@ -137,7 +141,11 @@ public:
   ///@}
 
   ///@{
-  /** The edge detector: NO_EDGES, SOBEL or CANNY (default). */
+  /**
+   * The edge detector: NO_EDGES, SOBEL or CANNY (default). Values: NO_EDGES, no image edges (depth
+   * and normal edges may still be on); SOBEL, Gaussian, Sobel, magnitude above HighThreshold;
+   * CANNY, Gaussian, Sobel, non-maximum suppression, double threshold, hysteresis.
+   */
   vtkSetClampMacro(EdgeDetector, int, NO_EDGES, CANNY);
   vtkGetMacro(EdgeDetector, int);
   ///@}
@@ -208,7 +216,12 @@ public:
   ///@}
 
   ///@{
-  /** The palette: LEVELS (default), GRAYS, PALETTE16, CUSTOM or COLORMAP. */
+  /**
+   * The palette: LEVELS (default), GRAYS, PALETTE16, CUSTOM or COLORMAP. Values: LEVELS, Levels
+   * values per channel (Levels^3 colours); GRAYS, Levels grays (Levels = 2: 1-bit black and white);
+   * PALETTE16, the 16-colour DawnBringer palette; CUSTOM, the user's list (AddPaletteColor); empty
+   * list: LEVELS; COLORMAP, the data's colormap at ColormapColors values x ColormapShades shades.
+   */
   vtkSetClampMacro(Palette, int, LEVELS, COLORMAP);
   vtkGetMacro(Palette, int);
   /** GRAYS with 2 levels: black and white. */
@@ -282,7 +295,11 @@ public:
   ///@}
 
   ///@{
-  /** SCREEN, GRID (default) or SURFACE. */
+  /**
+   * SCREEN, GRID (default) or SURFACE. Values: SCREEN, the window's art-pixel grid; GRID, the
+   * art-pixel grid aligned to the world origin (moves with a pan); SURFACE, the surface: the art
+   * pixel's object-space position (triplanar).
+   */
   vtkSetClampMacro(DitherAnchor, int, SCREEN, SURFACE);
   vtkGetMacro(DitherAnchor, int);
   ///@}
@@ -318,13 +335,19 @@ public:
    * (drawn afterwards and depth-tested against the pixel art); otherwise the depth buffer is
    * cleared, which saves a full-resolution depth write (about 4 ms per frame at 1920x1080 on
    * llvmpipe). DEPTH_ALWAYS writes it every frame.
+   * Values: DEPTH_AUTO, when translucent geometry or volumes follow; otherwise cleared to far;
+   * DEPTH_ALWAYS, always (for readers of the depth buffer: vtkRenderer::GetZ, z-buffer capture).
    */
   vtkSetClampMacro(DepthOutput, int, DEPTH_AUTO, DEPTH_ALWAYS);
   vtkGetMacro(DepthOutput, int);
   ///@}
 
   ///@{
-  /** The layer written to the output: PIXEL_ART (default), PIXELATED or EDGES. */
+  /**
+   * The layer written to the output: PIXEL_ART (default), PIXELATED or EDGES. Values: PIXEL_ART,
+   * the final image; PIXELATED, the art-pixel colours before edges and dither; EDGES, black edge
+   * art pixels on white.
+   */
   vtkSetClampMacro(Layer, int, PIXEL_ART, EDGES);
   vtkGetMacro(Layer, int);
   ///@}

@@ -114,13 +114,22 @@ public:
   };
 
   ///@{
-  /** The layer written to the output: SKETCH (default), DIRECTIONS, STROKES or TONE. */
+  /**
+   * The layer written to the output: SKETCH (default), DIRECTIONS, STROKES or TONE. Values: SKETCH,
+   * the pencil sketch; DIRECTIONS, the stroke direction's screen angle (mod 180 degrees) as a hue;
+   * STROKES, the LIC stroke texture alone (gray, 0.5 on average); TONE, the tone before strokes
+   * (bright faces and contrast applied).
+   */
   vtkSetClampMacro(Layer, int, SKETCH, TONE);
   vtkGetMacro(Layer, int);
   ///@}
 
   ///@{
-  /** Where directions come from: SCREEN (default, the per-pixel estimate) or MODEL. */
+  /**
+   * Where directions come from: SCREEN (default, the per-pixel estimate) or MODEL. Values: SCREEN,
+   * estimated per pixel from the G-buffer (focal surfaces); MODEL, a point-data direction array of
+   * the data (exact at render time).
+   */
   vtkSetClampMacro(DirectionSource, int, SCREEN, MODEL);
   vtkGetMacro(DirectionSource, int);
   ///@}
@@ -138,7 +147,12 @@ public:
   ///@}
 
   ///@{
-  /** The direction drawn: MINIMUM, MAXIMUM (default) or BISECTOR. */
+  /**
+   * The direction drawn: MINIMUM, MAXIMUM (default) or BISECTOR. Values: MINIMUM, the principal
+   * direction of the smaller |curvature| (along a cylinder); MAXIMUM, the principal direction of
+   * the larger |curvature| (around a cylinder); BISECTOR, halfway between the two (fewer visible
+   * turns).
+   */
   vtkSetClampMacro(Direction, int, MINIMUM, BISECTOR);
   vtkGetMacro(Direction, int);
   ///@}
@@ -212,7 +226,11 @@ public:
   ///@}
 
   ///@{
-  /** Stroke tracing: PERSPECTIVE (default) or SCREEN_2D (baseline). */
+  /**
+   * Stroke tracing: PERSPECTIVE (default) or SCREEN_2D (baseline). Values: PERSPECTIVE, steps in
+   * world space, reprojected each step (the paper's method); SCREEN_2D, the classic screen-space
+   * LIC (baseline for the accuracy study).
+   */
   vtkSetClampMacro(LicMode, int, PERSPECTIVE, SCREEN_2D);
   vtkGetMacro(LicMode, int);
   ///@}
@@ -230,13 +248,20 @@ public:
   ///@}
 
   ///@{
-  /** The noise: WHITE (default), PERLIN or WORLEY. */
+  /**
+   * The noise: WHITE (default), PERLIN or WORLEY. Values: WHITE, hard pencil; PERLIN, medium;
+   * WORLEY, soft.
+   */
   vtkSetClampMacro(Noise, int, WHITE, WORLEY);
   vtkGetMacro(Noise, int);
   ///@}
 
   ///@{
-  /** Where the noise is fixed: OBJECT (default) or SCREEN_SPACE. */
+  /**
+   * Where the noise is fixed: OBJECT (default) or SCREEN_SPACE. Values: OBJECT, the object-space
+   * position: strokes stick to the surface; SCREEN_SPACE, the image: strokes swim when the camera
+   * moves.
+   */
   vtkSetClampMacro(NoiseSpace, int, OBJECT, SCREEN_SPACE);
   vtkGetMacro(NoiseSpace, int);
   ///@}

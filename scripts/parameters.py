@@ -1,33 +1,38 @@
 #!/usr/bin/python3
-"""Parameter reference of the VTK Stylize passes, generated from the headers and the code.
+"""Parameter reference of the VTK Stylize passes, generated from the wrapped classes.
 
-    /usr/bin/python3 scripts/parameters.py           # writes docs/PARAMETERS.md, README tables
+    /usr/bin/python3 scripts/parameters.py           # writes docs/PARAMETERS.md, the tables
+                                                     # between markers in README.md and docs/,
                                                      # and the ParaView XML in Plugin/View/
     /usr/bin/python3 scripts/parameters.py --check   # verifies them, prints a diff, exit 1 on drift
 
-Sources, so that nothing can drift:
+The one source is the classes, read through VTK's Python wrapping (the build's vtkstylize
+package); no header is parsed:
 
-- the parameters and their meaning: the public section of each header in Passes/ (every
-  Set<Name> setter: vtkSet*Macro, or a method with a matching Get<Name>), the meaning being the
-  doxygen comment above the setter (or above its ///@{ group);
-- defaults: Get<Name>() of a new instance, through the Python wrapping (vtkstylize); setters
-  without a getter: the member's initializer in the header;
-- ranges: Get<Name>MinValue()/Get<Name>MaxValue() (vtkSetClampMacro); otherwise the range the
-  comment states, confirmed by setting out-of-range values and reading them back; enum values
-  from the header's enums.
+- the parameters: every Set<Name>/Get<Name> pair of the class and its bases below VTK's
+  render-pass plumbing, in declaration order (the wrapping keeps the header's order);
+- their meaning: the setter's docstring, which VTK's wrapping makes from the header comment (in a
+  ///@{ group only the first method gets it: the others share it);
+- defaults: Get<Name>() of a new instance;
+- ranges: Get<Name>MinValue()/Get<Name>MaxValue() (vtkSetClampMacro); for other setters, found by
+  setting out-of-range values and reading them back, else the range the comment states;
+- enumerations: the class's enum named after the setting in the plural (Anchor -> Anchors, the
+  project's convention; Channels -> ChannelBits is a bit mask), its constants the values;
+- the per-actor settings: the static SetActor*() helpers, probed on an actor's property keys.
 
 The comments' own statements of ranges and defaults are compared with the code: a contradiction is
 an error, like a parameter without a comment. A missing unit, range or default in a comment is a
-warning. The README's parameter tables are generated copies between marker comments
-(<!-- parameters:CLASS begin --> ... <!-- parameters:CLASS end -->); --check also fails on a
-hand-written parameter table outside them.
+warning. Parameter tables in Markdown are generated copies between marker comments
+(<!-- parameters:CLASS begin --> ... <!-- parameters:CLASS end -->) in README.md and docs/*.md;
+--check also fails on a hand-written parameter table outside them.
 
 The ParaView plugin's server-manager XML is generated from the same description:
 Plugin/View/StylizePasses.xml (a proxy per pass, a property per parameter: kind, default, range
-domain, documentation) and the blocks of Plugin/View/StylizeView.xml between its
-<!-- generated:exposed:PROXY begin/end --> markers (the view's <ExposedProperties>
-groups of those subproxies). Object-valued and list-valued parameters are not exposed, nor those
-in XML_SKIP (set by the view).
+domain, documentation), the blocks of Plugin/View/StylizeView.xml between its
+<!-- generated:exposed:PROXY begin/end --> markers (the view's <ExposedProperties>), and between
+<!-- generated:representation begin/end --> the Stylized Surface representation's per-actor
+lighting properties (those of vtkStylizeLightingPass that a SetActor*() helper overrides).
+Object-valued parameters are not exposed, nor those in XML_SKIP (set by the view).
 
 Needs the build's python folder on PYTHONPATH (build/python and build/lib are tried when the
 import fails). Only instantiates the classes: no display, no OpenGL context.
@@ -47,21 +52,9 @@ OUTPUT = os.path.join("docs", "PARAMETERS.md")
 README = "README.md"
 DIFF_LINES = 200  # --check shows at most this many lines of each stale file's diff
 
-# The classes documented, in order: (class, header relative to the repository root).
-CLASSES = [
-    ("vtkStylizeLightingPass", "Passes/vtkStylizeLightingPass.h"),
-    ("vtkStylizeGBufferPass", "Passes/vtkStylizeGBufferPass.h"),
-    ("vtkComicPass", "Passes/vtkComicPass.h"),
-    ("vtkPixelArtPass", "Passes/vtkPixelArtPass.h"),
-    ("vtkSketchPass", "Passes/vtkSketchPass.h"),
-]
-
-# Where the headers of the classes' base classes are looked for: the project, then VTK.
-PROJECT_HEADER_DIRS = ["Passes", "Filters"]
-VTK_HEADER_GLOB = "/usr/include/vtk-9*"
-# Base classes whose public state is VTK's render-loop plumbing (e.g. vtkOpenGLRenderPass's
-# ActiveDrawBuffers), not a user setting: inherited parameters are collected below them only.
-FRAMEWORK_BASES = {"vtkOpenGLRenderPass", "vtkRenderPass", "vtkObject", "vtkObjectBase", "object"}
+# The classes documented, in order.
+CLASSES = ["vtkStylizeLightingPass", "vtkStylizeGBufferPass", "vtkComicPass", "vtkPixelArtPass",
+           "vtkSketchPass"]
 
 # Units recognized in a comment, first match wins (the phrase must say it is the unit).
 UNIT_PATTERNS = [
@@ -89,201 +82,7 @@ INT_PROBE = 2 ** 31 - 1
 
 
 # ------------------------------------------------------------------------------------------------
-# Header parsing
-
-
-class Comment:
-    """A doxygen comment: blocks of ('p', text) paragraphs and ('li', text) list items."""
-
-    def __init__(self, raw):
-        self.blocks = []
-        current = None
-        for line in raw.split("\n"):
-            line = re.sub(r"^\s*\*(?!/) ?", "", line.rstrip())
-            stripped = line.strip()
-            indent = len(line) - len(line.lstrip())
-            if not stripped:
-                current = None
-                continue
-            if stripped.startswith("- "):
-                current = ["li", stripped[2:], indent]
-                self.blocks.append(current)
-                continue
-            if current is not None and current[0] == "li" and indent <= current[2]:
-                current = None  # a paragraph right after a list
-            if current is None:
-                current = ["p", stripped, indent]
-                self.blocks.append(current)
-            else:
-                current[1] += " " + stripped
-        self.blocks = [b[:2] for b in self.blocks]
-        for block in self.blocks:
-            block[1] = re.sub(r"@p\s+", "", re.sub(r"\s+", " ", block[1])).strip()
-
-    def text(self):
-        return " ".join(b[1] for b in self.blocks)
-
-    def around_item(self, setter):
-        """(paragraphs before the list holding setter's item, paragraphs after it)."""
-        index = next((i for i, (kind, text) in enumerate(self.blocks) if kind == "li"
-                      and re.match(r"`?%s\s*\(" % re.escape(setter), text)), None)
-        if index is None:
-            return "", ""
-        start = index
-        while start > 0 and self.blocks[start - 1][0] == "li":
-            start -= 1
-        end = index
-        while end + 1 < len(self.blocks) and self.blocks[end + 1][0] == "li":
-            end += 1
-        before = " ".join(t for k, t in self.blocks[:start] if k == "p")
-        after = " ".join(t for k, t in self.blocks[end + 1:] if k == "p")
-        return before, after
-
-    def list_naming(self, setter):
-        """The items of the list that has an item naming setter() (e.g. in a class description)."""
-        lists, current = [], []
-        for kind, text in self.blocks:
-            if kind == "li":
-                current.append(text)
-            elif current:
-                lists.append(current)
-                current = []
-        if current:
-            lists.append(current)
-        for items in lists:
-            if any(re.search(r"\b%s\s*\(" % re.escape(setter), t) for t in items):
-                return items
-        return None
-
-    def item_for(self, setter):
-        """The list item that documents setter (starts with 'SetName('), or None."""
-        for kind, text in self.blocks:
-            if kind == "li" and re.match(r"`?%s\s*\(" % re.escape(setter), text):
-                return text
-        return None
-
-
-class Statement:
-    def __init__(self, text, comment, line):
-        self.text = re.sub(r"\s+", " ", text).strip()
-        self.comment = comment
-        self.line = line
-
-
-def class_body(source, cls):
-    m = re.search(r"\bclass\s+(?:\w+\s+)?%s\b[^;{]*\{" % cls, source)
-    if not m:
-        raise SystemExit("error: class %s not found in its header" % cls)
-    depth, i = 1, m.end()
-    while depth and i < len(source):
-        depth += {"{": 1, "}": -1}.get(source[i], 0)
-        i += 1
-    return source[m.end():i - 1], source.count("\n", 0, m.end()) + 1
-
-
-def public_sections(body, first_line):
-    """(text, line of its start) of each public: region of the class body."""
-    parts = re.split(r"^\s*(public|protected|private)\s*:", body, flags=re.M)
-    out = []
-    pos = len(parts[0])
-    for i in range(1, len(parts), 2):
-        access = parts[i]
-        text = parts[i + 1]
-        start = body.find(text, pos)
-        pos = start + len(text)
-        if access == "public":
-            out.append((text, first_line + body.count("\n", 0, start)))
-    return out
-
-
-def statements(text, first_line):
-    """Splits a public region into statements, each with the doxygen comment that applies."""
-    result = []
-    in_group = False
-    group_comment = None
-    group_started = False
-    pending = None
-    buf, buf_line = [], None
-    depth = 0
-    i, n = 0, len(text)
-
-    def line_at(pos):
-        return first_line + text.count("\n", 0, pos)
-
-    def finish():
-        nonlocal buf, buf_line, pending, group_started
-        stmt = "".join(buf).strip()
-        if stmt:
-            comment = pending or (group_comment if in_group else None)
-            result.append(Statement(stmt, comment, buf_line))
-            pending = None
-            group_started = True
-        buf, buf_line = [], None
-
-    while i < n:
-        if text.startswith("///@{", i):
-            in_group, group_comment, group_started, pending = True, None, False, None
-            i += 5
-            continue
-        if text.startswith("///@}", i):
-            in_group, group_comment, pending = False, None, None
-            i += 5
-            continue
-        if text.startswith("/**", i) and not text.startswith("/**/", i):
-            end = text.find("*/", i + 3)
-            comment = Comment(text[i + 3:end])
-            if depth == 0:
-                if in_group and group_comment is None and not group_started:
-                    group_comment = comment
-                else:
-                    pending = comment
-            i = end + 2
-            continue
-        if text.startswith("///<", i) or text.startswith("//", i):
-            if text.startswith("///", i) and not text.startswith("///<", i) and depth == 0:
-                end = text.find("\n", i)
-                end = n if end < 0 else end
-                lines = [text[i + 3:end]]
-                j = end + 1
-                while True:
-                    m = re.match(r"[ \t]*///(?![<@])([^\n]*)\n?", text[j:])
-                    if not m:
-                        break
-                    lines.append(m.group(1))
-                    j += m.end()
-                comment = Comment("\n".join(lines))
-                if in_group and group_comment is None and not group_started:
-                    group_comment = comment
-                else:
-                    pending = comment
-                i = j
-                continue
-            end = text.find("\n", i)
-            i = n if end < 0 else end
-            continue
-        if text.startswith("/*", i):
-            i = text.find("*/", i + 2) + 2
-            continue
-        c = text[i]
-        if buf_line is None and not c.isspace():
-            buf_line = line_at(i)
-        buf.append(c)
-        if c in "{(":
-            depth += 1
-        elif c in "})":
-            depth -= 1
-            if c == "}" and depth == 0:
-                m = re.match(r"\s*;", text[i + 1:])
-                if m:
-                    buf.append(";")
-                    i += 1 + m.end()
-                    finish()
-                    continue
-                finish()
-        elif c == ";" and depth == 0:
-            finish()
-        i += 1
-    return result
+# Reading the classes through VTK's Python wrapping
 
 
 def split_args(text):
@@ -303,88 +102,75 @@ def split_args(text):
     return args
 
 
-def parse_enums(body):
-    enums = []
-    for m in re.finditer(r"\benum\s+(\w+)\s*\{(.*?)\}\s*;", body, re.S):
-        entries, value = [], -1
-        for line in m.group(2).split("\n"):
-            e = re.match(r"\s*(\w+)\s*(?:=\s*([^,/]+?))?\s*,?\s*(?:///<\s*(.*))?$", line)
-            if not e or not e.group(1):
-                continue
-            value = int(e.group(2), 0) if e.group(2) else value + 1
-            entries.append((e.group(1), value, (e.group(3) or "").strip()))
-        enums.append((m.group(1), entries))
-    return enums
+def import_vtkstylize(build):
+    try:
+        import vtkstylize
+    except ImportError:
+        for sub in ("lib", "python"):
+            sys.path.insert(0, os.path.join(build, sub))
+        try:
+            import vtkstylize
+        except ImportError as e:
+            raise SystemExit("error: cannot import vtkstylize (%s); put the build's python folder "
+                             "on PYTHONPATH or pass --build" % e)
+    return vtkstylize
 
 
-def parse_args(arglist):
-    """[(type, name, array size)] of a C++ argument list."""
+def docstring_parts(method):
+    """(signatures, text) of a wrapped method's docstring: the Python and C++ signatures, and the
+    header comment (VTK's wrapping makes the comment above a declaration its docstring)."""
+    doc = getattr(method, "__doc__", None) or ""
+    blocks = doc.split("\n\n", 1)
+    signatures = blocks[0]
+    text = blocks[1] if len(blocks) > 1 else ""
+    return signatures, re.sub(r"\s+", " ", text).strip()
+
+
+def cxx_arguments(method):
+    """[(type, name)] of the first C++ signature in a wrapped method's docstring."""
+    signatures, _ = docstring_parts(method)
+    m = re.search(r"C\+\+: [^(]*\(([^)]*)\)", signatures.replace("\n", " "))
+    if not m or not m.group(1).strip():
+        return []
     out = []
-    for arg in split_args(arglist):
-        arg = re.sub(r"=.*$", "", arg).strip()
-        if not arg or arg == "void":
-            continue
-        m = re.match(r"(.*?)(\w+)\s*(?:\[\s*(\d*)\s*\])?$", arg)
-        typ = re.sub(r"\bconst\b", "", m.group(1)).strip()
-        out.append((re.sub(r"\s+", " ", typ), m.group(2), m.group(3)))
+    for arg in split_args(m.group(1)):
+        arg = re.sub(r"\s+", " ", arg.split("=")[0]).strip()
+        am = re.match(r"(.*?)\s*(\w+)(\[\d*\])?$", arg)
+        out.append((am.group(1).replace("const ", "").strip() + (am.group(3) or ""), am.group(2)))
     return out
 
 
-METHOD = re.compile(
-    r"^(?P<quals>(?:(?:virtual|static|inline)\s+)*)(?P<ret>[\w:<>]+(?:\s*\*)*)\s*(?P<name>\w+)\s*"
-    r"\((?P<args>[^()]*)\)\s*(?:const\s*)?(?:override\s*)?(?:VTK_\w+\([^)]*\)\s*)?(?:=\s*0\s*)?"
-    r"(?P<body>\{.*\})?\s*;?$")
+def cxx_return(method):
+    signatures, _ = docstring_parts(method)
+    m = re.search(r"C\+\+: (?:(?:virtual|static|const) )*([\w:<>]+(?:\s*\*)?)\s*\w+\(", signatures)
+    return m.group(1).replace(" ", "") if m else None
 
 
-class Header:
-    """What one header declares: setters, getters, enums, keys and member initializers."""
-
-    def __init__(self, cls, path):
-        self.cls, self.path = cls, path
-        with open(os.path.join(ROOT, path)) as f:
-            source = f.read()
-        body, body_line = class_body(source, cls)
-        brief = re.search(r"@brief\s+(.*?)(?:\n\s*\*\s*\n|\*/)", source, re.S)
-        self.brief = re.sub(r"\s*\n\s*\*?\s*", " ", brief.group(1)).strip() if brief else ""
-        described = re.search(r"/\*\*((?:(?!\*/).)*?@class\s+%s\b.*?)\*/" % cls, source, re.S)
-        self.description = Comment(described.group(1)) if described else None
-        self.enums = parse_enums(body)
-        self.initializers = {}
-        for m in re.finditer(r"^\s*[\w:<>]+[\s\*]+(\w+)\s*(?:\[\s*\d+\s*\])?\s*=\s*([^;]+);",
-                             body, re.M):
-            self.initializers[m.group(1)] = m.group(2).strip()
-        self.stmts = []
-        for text, line in public_sections(body, body_line):
-            self.stmts.extend(statements(text, line))
-
-    def enum_of(self, identifiers):
-        for name, entries in self.enums:
-            names = {e[0] for e in entries}
-            if identifiers and all(i in names for i in identifiers):
-                return name, entries
-        return None
+def framework_settings():
+    """Settings of VTK's render-pass and object plumbing (ActiveDrawBuffers, Debug, ...)."""
+    from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLRenderPass
+    return {m[3:] for m in dir(vtkOpenGLRenderPass) if m.startswith("Set")}
 
 
-# ------------------------------------------------------------------------------------------------
-# The parameter model
+class ClassDoc:
+    pass
 
 
 class Param:
-    def __init__(self, name, kind, comment, line):
+    def __init__(self, name):
         self.name = name
-        self.kind = kind  # scalar, bool, enum, bitmask, string, object, vector, list, writeonly
-        self.comment = comment
-        self.line = line
+        self.kind = None  # scalar, bool, enum, bitmask, string, object, vector
+        self.setter = "Set" + name
+        self.setter_args = []  # [(C++ type, name)]
         self.type = None
         self.size = 1
-        self.clamp = None  # (lo expression, hi expression) of vtkSetClampMacro
-        self.custom = False  # a hand-written setter (no macro)
-        self.enum = None  # (name, entries)
-        self.conveniences = []  # (method, own comment or None)
-        self.setter = "Set" + name
-        self.setter_args = []
+        self.clamp = False  # Get<Name>MinValue/MaxValue exist (vtkSetClampMacro)
+        self.doc = ""  # the setter's comment (or its group's)
+        self.enum = None  # (enum type name, [(symbol, value, note)])
+        self.enum_entries = []
+        self.conveniences = []  # [(method, own comment)]
         self.object_type = None
-        self.default = None  # Python value
+        self.default = None
         self.default_text = ""
         self.range_text = ""
         self.unit = "—"
@@ -392,165 +178,418 @@ class Param:
         self.meaning_short = ""
         self.shared_with = None
         self.per_actor = []
-        self.range_numbers = None  # (lo, hi) when known (vectors: of each component)
-        self.allowed_values = None  # the only values a snapping setter keeps, when it snaps
-        self.header_path = None
-        self.inherited = None  # (base class, in the project?, header) when inherited
-
-    @property
-    def doc(self):
-        """The part of the comment about this parameter (its list item when it has one)."""
-        if self.comment is None:
-            return ""
-        item = self.comment.item_for(self.setter)
-        return item if item else self.comment.text()
+        self.range_numbers = None
+        self.allowed_values = None
+        self.inherited = None  # the VTK or project base class that declares it
 
 
-def find_params(header, errors):
-    params, order = {}, []
-    getters = {}
-    conveniences = []
-    adders, removers = {}, set()
-    actor_setters, actor_removers, keys = [], [], []
-    nested = []
-    class_names = {c for c, _ in CLASSES}
+def enum_symbol(p, value):
+    for name, v, _ in p.enum[1]:
+        if v == value:
+            return name
+    return str(value)
 
-    def add(name, kind, stmt):
-        if name in params:
-            return params[name]
-        p = Param(name, kind, stmt.comment, stmt.line)
-        p.header_path = header.path
-        params[name] = p
-        order.append(name)
-        return p
 
-    for st in header.stmts:
-        s = st.text
-        m = re.match(r"^(vtk\w+Macro)\s*\((.*)\)\s*;?$", s)
-        if m:
-            macro, args = m.group(1), split_args(m.group(2))
-            if macro == "vtkSetClampMacro":
-                p = add(args[0], "scalar", st)
-                p.type, p.clamp = args[1], (args[2], args[3])
-            elif macro == "vtkSetMacro":
-                p = add(args[0], "bool" if args[1] == "bool" else "scalar", st)
-                p.type = args[1]
-            elif macro == "vtkSetStringMacro":
-                add(args[0], "string", st).type = "char*"
-            elif macro in ("vtkSetObjectMacro", "vtkSetSmartPointerMacro"):
-                p = add(args[0], "object", st)
-                p.object_type = args[1]
-            elif macro == "vtkSetEnumMacro":
-                p = add(args[0], "enum", st)
-                p.enum = next(((n, e) for n, e in header.enums if n == args[1]), None)
-            elif re.match(r"vtkSetVector(\d)Macro$", macro):
-                p = add(args[0], "vector", st)
-                p.size, p.type = int(macro[12]), args[1]
-            elif macro == "vtkSetVectorMacro":
-                p = add(args[0], "vector", st)
-                p.type, p.size = args[1], int(args[2])
-            elif macro.startswith("vtkGet"):
-                getters[args[0]] = macro
+def class_settings(klass, skip):
+    """[(name, owner class)] of the Set<Name>/Get<Name> pairs, in declaration order (the wrapping
+    keeps the header's order), the class's own first, then those of its bases."""
+    out, seen = [], set()
+    for base in klass.__mro__:
+        for attr in base.__dict__:
+            name = attr[3:]
+            if not attr.startswith("Set") or name in seen or name in skip or "To" in name and \
+                    hasattr(klass, "Set" + name.split("To")[0]) and \
+                    hasattr(klass, "Get" + name.split("To")[0]):
+                continue
+            if not hasattr(klass, "Get" + name):
+                continue
+            seen.add(name)
+            out.append((name, base))
+    return out
+
+
+def enum_of(klass, name):
+    """(type name, [(symbol, value, '')]) of the enumeration a setting takes: the class's enum
+    named after the setting in the plural (Anchor -> Anchors), as every enum of the project is."""
+    for type_name in (name + "s", name + "es", re.sub(r"s$", "", name) + "Bits"):
+        t = getattr(klass, type_name, None)
+        if isinstance(t, type) and issubclass(t, int):
+            entries = sorted(((s, int(getattr(klass, s)), "") for s in dir(klass)
+                              if type(getattr(klass, s)) is t), key=lambda e: e[1])
+            return type_name, entries
+    return None
+
+
+def probe_scalar(cls, p):
+    """Range of a setter without a clamp macro: set extremes and read them back."""
+    is_int = p.type in ("int", "long", "vtkIdType")
+    results = []
+    for v in ((-INT_PROBE, INT_PROBE) if is_int else (-PROBE, PROBE)):
+        o = cls()
+        getattr(o, "Set" + p.name)(v)
+        results.append(getattr(o, "Get" + p.name)())
+    lo, hi = results
+    if abs(lo) >= (INT_PROBE if is_int else PROBE) or abs(hi) >= (INT_PROBE if is_int else PROBE):
+        return None, None
+    values = None
+    if is_int and hi - lo <= 64:
+        seen = set()
+        for v in range(int(lo), int(hi) + 1):
+            o = cls()
+            getattr(o, "Set" + p.name)(v)
+            seen.add(getattr(o, "Get" + p.name)())
+        if len(seen) < hi - lo + 1:
+            values = sorted(seen)
+    return (lo, hi), values
+
+
+def probe_vector(cls, p):
+    out = []
+    for v in (-PROBE, PROBE):
+        o = cls()
+        getattr(o, "Set" + p.name)(*([v] * p.size))
+        out.append(tuple(getattr(o, "Get" + p.name)()))
+    lows, highs = out
+    if any(abs(x) >= PROBE for x in lows + highs):
+        return None
+    if len(set(lows)) == 1 and len(set(highs)) == 1:
+        return (lows[0], highs[0])
+    return None
+
+
+def as_python_default(p, value):
+    if p.kind == "bool":
+        return bool(value)
+    if isinstance(value, int) and not isinstance(value, bool) and p.kind == "enum":
+        return int(value)
+    return value
+
+
+def read_param(klass, instance, name, owner, project):
+    """A Param from the wrapped class alone: kind, type, default, clamp range, comment."""
+    p = Param(name)
+    setter = getattr(klass, p.setter)
+    p.setter_args = cxx_arguments(setter)
+    p.doc = docstring_parts(setter)[1] or docstring_parts(getattr(klass, "Get" + name))[1]
+    if owner.__name__ not in project:
+        p.inherited = owner.__name__
+    value = getattr(instance, "Get" + name)()
+    p.enum = enum_of(klass, name)
+    types = [t for t, _ in p.setter_args]
+    p.type = types[0] if types else None
+    p.clamp = hasattr(klass, "Get%sMinValue" % name) and hasattr(klass, "Get%sMaxValue" % name)
+    if p.enum and p.enum[0].endswith("Bits"):
+        p.kind = "bitmask"
+    elif p.enum:
+        p.kind = "enum"
+    elif p.type == "bool":
+        p.kind = "bool"
+    elif p.type in ("char*", "char *", "std::string"):
+        p.kind = "string"
+    elif p.type and p.type.endswith("*") and p.type.startswith("vtk"):
+        p.kind = "object"
+        p.object_type = p.type.rstrip("*").strip()
+    elif isinstance(value, tuple) or len(types) > 1 or (p.type and "[" in p.type):
+        p.kind = "vector"
+        p.size = len(value) if isinstance(value, tuple) else len(types)
+        p.type = p.type.split("[")[0] if p.type else None
+    else:
+        p.kind = "scalar"
+    p.default = as_python_default(p, value)
+    # SetXToY() conveniences of an enumeration, On()/Off() of a boolean
+    for attr in owner.__dict__:
+        if attr.startswith(p.setter + "To"):
+            p.conveniences.append((attr, docstring_parts(getattr(klass, attr))[1]))
+    return p
+
+
+def list_params(klass, instance):
+    """List-valued settings: Add<Name>(...) with RemoveAll<Name>s() and GetNumberOf<Name>s()."""
+    out = []
+    for attr in klass.__dict__:
+        name = attr[3:]
+        if not attr.startswith("Add") or not hasattr(klass, "RemoveAll%ss" % name) or \
+                not hasattr(klass, "GetNumberOf%ss" % name):
             continue
-        m = METHOD.match(s)
-        if not m:
+        p = Param(name)
+        p.kind, p.setter = "list", attr
+        p.setter_args = cxx_arguments(getattr(klass, attr))
+        p.size = len(p.setter_args)
+        p.type = p.setter_args[0][0] if p.setter_args else None
+        p.doc = docstring_parts(getattr(klass, attr))[1]
+        p.default = getattr(instance, "GetNumberOf%ss" % name)()
+        out.append(p)
+    return out
+
+
+def probe_list_size(cls, p):
+    o = cls()
+    count = getattr(o, "GetNumberOf%ss" % p.name)
+    for _ in range(1000):
+        getattr(o, p.setter)(*([0.5] * p.size))
+    n = count()
+    return n if n < 1000 else None
+
+
+def per_actor_settings(klass, params, errors, warnings):
+    """The static Set<Actor...>(prop, ...) helpers: which keys they write, and their ranges."""
+    from vtkmodules.vtkRenderingCore import vtkActor
+    keys = [k for k in klass.__dict__ if re.fullmatch(r"[A-Z][A-Z0-9_]+", k)
+            and callable(getattr(klass, k)) and cxx_return(getattr(klass, k)) and
+            "Information" in (cxx_return(getattr(klass, k)) or "")]
+    setters = [m for m in klass.__dict__ if m.startswith("SetActor")]
+    removers = [m for m in klass.__dict__ if m.startswith("RemoveActor")]
+    by_name = {p.name: p for p in params}
+    actor = []
+    for method in setters:
+        args = cxx_arguments(getattr(klass, method))
+        results = {}
+        for v in (-PROBE, PROBE):
+            a = vtkActor()
+            getattr(klass, method)(a, *([v] * (len(args) - 1)))
+            info = a.GetPropertyKeys()
+            for k in keys:
+                key = getattr(klass, k)()
+                if info is not None and info.Has(key):
+                    results.setdefault(k, []).append(info.Get(key))
+        rows = []
+        for kname, (lo, hi) in results.items():
+            prop = "".join(w.capitalize() for w in kname.lower().split("_"))
+            target = by_name.get(prop)
+            rng = "[%s, %s]" % (fmt_num(lo), fmt_num(hi))
+            if target is not None and target.range_numbers and not (
+                    same(target.range_numbers[0], lo) and same(target.range_numbers[1], hi)):
+                errors.append("%s::%s clamps %s to %s, the pass's %s to %s" % (
+                    klass.__name__, method, kname, rng, prop, target.range_text))
+            if target is not None:
+                target.per_actor.append("`%s()`" % kname)
+            rows.append((kname, prop if target is not None else None, rng))
+        comment = docstring_parts(getattr(klass, method))[1]
+        if not rows:
+            warnings.append("%s::%s sets none of the keys %s" % (klass.__name__, method,
+                                                                ", ".join(keys)))
+        signature = "%s(prop, %s)" % (method, ", ".join(n for _, n in args[1:]))
+        actor.append((signature, rows, comment))
+    return (actor, [("%s(prop)" % m, docstring_parts(getattr(klass, m))[1]) for m in removers],
+            [(k, docstring_parts(getattr(klass, k))[1]) for k in keys])
+
+
+def nested_passes(klass, project):
+    """[(getter, class name, comment)] of the passes a class owns (Get<Name>Pass() returning a
+    project class, with no setter)."""
+    out = []
+    for m in dir(klass):
+        if not m.startswith("Get") or hasattr(klass, "Set" + m[3:]):
             continue
-        name, ret = m.group("name"), m.group("ret").replace(" ", "")
-        static = "static" in m.group("quals")
-        args = parse_args(m.group("args"))
-        if static and ret.startswith("vtkInformation") and ret.endswith("Key*") and not args:
-            keys.append((name, st.comment))
+        ret = (cxx_return(getattr(klass, m)) or "").rstrip("*")
+        if ret in project and not cxx_arguments(getattr(klass, m)):
+            out.append((m, ret, docstring_parts(getattr(klass, m))[1]))
+    return out
+
+
+def describe_class(mod, cls, errors, warnings):
+    klass = getattr(mod, cls)
+    instance = klass()
+    project = {c for c in CLASSES} | {"vtkStylizeStylePass"}
+    settings = class_settings(klass, framework_settings())
+    params = [read_param(klass, instance, name, owner, project) for name, owner in settings]
+    params += list_params(klass, instance)
+    doc = ClassDoc()
+    doc.cls, doc.params, doc.klass = cls, params, klass
+    doc.path = "Passes/%s.h" % cls
+    brief = (klass.__doc__ or "").split("\n\n", 1)[0]
+    doc.brief = re.sub(r"\s+", " ", brief.split(" - ", 1)[-1]).strip()
+    where = "%s::" % cls
+    previous = None
+    for p in params:
+        loc = "%s%s" % (where, p.name)
+        text = p.doc
+        if not text and previous is not None and previous.doc:
+            # a ///@{ group: the wrapping gives the comment to the group's first method only
+            p.shared_with = previous.shared_with or previous.name
+            text = p.doc = previous.doc
+        elif not text:
+            errors.append("%s: no doc comment" % loc)
+        previous = p
+        p.meaning_full = text or "(no doc comment)"
+        p.meaning_short = first_sentence(text) if text else "(no doc comment)"
+        if p.inherited:
+            p.meaning_full = "Inherited from `%s` (VTK): %s" % (p.inherited, p.meaning_full)
+            p.meaning_short = "Inherited from `%s` (VTK): %s" % (p.inherited, p.meaning_short)
+        check_param(klass, instance, p, params, loc, errors, warnings)
+    doc.actor, doc.actor_removers, doc.keys = per_actor_settings(klass, params, errors, warnings)
+    doc.nested = nested_passes(klass, project)
+    return doc
+
+
+def check_param(klass, instance, p, params, loc, errors, warnings):
+    """Default text, unit, range; the comment's own range and default against the code."""
+    text = p.doc
+    if p.kind == "enum":
+        p.default_text = "`%s`" % enum_symbol(p, p.default)
+    elif p.kind == "bitmask":
+        bits = [n for n, v, _ in p.enum[1] if v and (p.default & v) == v]
+        p.default_text = " \\| ".join("`%s`" % b for b in bits) if bits else "0 (none)"
+    elif p.kind == "bool":
+        p.default_text = "on" if p.default else "off"
+    elif p.kind == "string":
+        p.default_text = "none" if p.default is None else '`"%s"`' % p.default
+    elif p.kind == "object":
+        p.default_text = "none" if p.default is None else "`%s`" % p.default.GetClassName()
+    elif p.kind == "vector":
+        p.default_text = fmt_tuple(p.default)
+    elif p.kind == "list":
+        p.default_text = "empty" if not p.default else "%d entries" % p.default
+    else:
+        p.default_text = fmt_num(p.default)
+    if p.kind in ("scalar", "vector", "list"):
+        unit = stated_unit(text, UNIT_PATTERNS if p.kind == "scalar" else VECTOR_UNIT_PATTERNS)
+        if unit:
+            p.unit = unit
+        else:
+            warnings.append("%s: the comment states no unit" % loc)
+    group = [q for q in params if q.doc == p.doc]
+    ranges = stated_ranges(text)
+    stated = None
+    if len(ranges) == 1:
+        stated = ranges[0]
+    elif ranges and len(ranges) == len(group):
+        stated = ranges[group.index(p)]
+    if p.kind == "scalar" and p.clamp:
+        lo = getattr(instance, "Get%sMinValue" % p.name)()
+        hi = getattr(instance, "Get%sMaxValue" % p.name)()
+        p.range_numbers = (lo, hi)
+        p.range_text = "[%s, %s]" % (fmt_num(lo), fmt_num(hi))
+        if stated and not (same(stated[0], lo) and same(stated[1], hi)):
+            errors.append("%s: the comment states the range [%s, %s], the code clamps to [%s, %s]"
+                          % (loc, fmt_num(stated[0]), fmt_num(stated[1]), fmt_num(lo),
+                             fmt_num(hi)))
+        if not ranges:
+            warnings.append("%s: the comment states no range (code: %s)" % (loc, p.range_text))
+    elif p.kind in ("enum", "bitmask"):
+        lo = getattr(instance, "Get%sMinValue" % p.name, lambda: None)()
+        hi = getattr(instance, "Get%sMaxValue" % p.name, lambda: None)()
+        entries = [e for e in p.enum[1] if p.kind == "bitmask" or lo is None or lo <= e[1] <= hi]
+        p.range_text = ", ".join("`%s`=%d" % (n, v) for n, v, _ in entries)
+        if p.kind == "bitmask":
+            p.range_text = "any OR of " + p.range_text
+            if hi is not None:
+                p.range_text += " ([%s, %s])" % (fmt_num(lo), fmt_num(hi))
+        p.enum_entries = entries
+    elif p.kind == "bool":
+        p.range_text = "on/off"
+    elif p.kind == "string":
+        p.range_text = "text"
+    elif p.kind == "object":
+        p.range_text = "`%s` or none" % p.object_type
+    elif p.kind == "scalar":  # a hand-written setter
+        probed, values = probe_scalar(klass, p)
+        if values:
+            p.range_text = ", ".join(fmt_num(v) for v in values) + " (others are snapped)"
+            p.range_numbers = (values[0], values[-1])
+            p.allowed_values = values
+        elif probed and probed[0] is not None:
+            p.range_numbers = probed
+            p.range_text = "[%s, %s]" % (fmt_num(probed[0]), fmt_num(probed[1]))
+            if stated and not (same(stated[0], probed[0]) and same(stated[1], probed[1])):
+                errors.append("%s: the comment states the range [%s, %s], the setter clamps to "
+                              "%s" % (loc, fmt_num(stated[0]), fmt_num(stated[1]), p.range_text))
+        elif stated:
+            p.range_text = "[%s, %s]" % (fmt_num(stated[0]), fmt_num(stated[1]))
+            p.range_numbers = stated
+        else:
+            p.range_text = "—"
+            warnings.append("%s: the comment states no range" % loc)
+    elif p.kind == "list":
+        p.range_text = "each [%s, %s]" % (fmt_num(stated[0]), fmt_num(stated[1])) if stated \
+            else "—"
+        p.range_numbers = stated
+        most = probe_list_size(klass, p)
+        m = re.search(r"\bat most (\d+)", text)
+        if most is not None:
+            p.range_text += ", at most %d entries" % most
+            if m and int(m.group(1)) != most:
+                errors.append("%s: the comment says at most %s, the code keeps %d"
+                              % (loc, m.group(1), most))
+    elif p.kind == "vector":
+        probed = probe_vector(klass, p)
+        if stated:
+            p.range_text = "each [%s, %s]" % (fmt_num(stated[0]), fmt_num(stated[1]))
+            p.range_numbers = stated
+            if probed and not (same(stated[0], probed[0]) and same(stated[1], probed[1])):
+                errors.append("%s: the comment states %s, the setter clamps each component to "
+                              "[%s, %s]" % (loc, p.range_text, fmt_num(probed[0]),
+                                            fmt_num(probed[1])))
+        elif probed:
+            p.range_text = "each [%s, %s]" % (fmt_num(probed[0]), fmt_num(probed[1]))
+            p.range_numbers = probed
+        else:
+            p.range_text = "—"
+            warnings.append("%s: the comment states no range" % loc)
+    # the comment's own default must agree with the code
+    defaults = stated_defaults(text)
+    mine = None
+    if len(group) > 1 and len(defaults) == len(group):
+        mine = defaults[group.index(p)]
+    elif len(defaults) == 1 or (defaults and len(group) == 1):
+        mine = defaults[0]
+    if not defaults:
+        warnings.append("%s: the comment states no default (code: %s)" % (loc, p.default_text))
+    elif mine is not None:
+        value, each = mine
+        code = p.default
+        if isinstance(value, str) and p.enum:
+            value = next((v for n, v, _ in p.enum[1] if n == value), value)
+        if each and isinstance(code, tuple):
+            value = tuple([value] * len(code))
+        if p.kind == "object" and code is not None:
+            code = "set"
+        if not same(value, code):
+            shown = value if not isinstance(value, tuple) else fmt_tuple(value)
+            if isinstance(shown, float):
+                shown = fmt_num(shown)
+            errors.append("%s: the comment states the default %s, the code has %s" % (
+                loc, shown, p.default_text))
+
+
+def nested_differences(doc, docs_by_class):
+    """How the passes a class owns differ from standalone instances of their class."""
+    out = []
+    instance = doc.klass()
+    for method, base, _ in doc.nested:
+        child = getattr(instance, method)()
+        ref = docs_by_class.get(base)
+        if child is None or ref is None:
             continue
-        if static and args and args[0][0] == "vtkProp*":
-            if name.startswith("Set"):
-                actor_setters.append((name, args[1:], st))
-            elif name.startswith("Remove"):
-                actor_removers.append((name, st))
-            continue
-        if static:
-            continue
-        if name.startswith("Get") and not args:
-            getters.setdefault(name[3:], "method")
-            base = ret.rstrip("*")
-            if base in class_names and ret.endswith("*"):
-                nested.append((name, base, st))
-            continue
-        if name.startswith("Get"):
-            getters.setdefault(name[3:], "method")
-            continue
-        if ret != "void":
-            continue
-        if name.startswith("Add") and args:
-            adders.setdefault(name[3:], (args, st))
-            continue
-        if name.startswith("RemoveAll"):
-            removers.add(name[9:])
-            continue
-        if not name.startswith("Set"):
-            continue
-        prop = name[3:]
-        if not args:
-            conveniences.append((prop, name, st))
-            continue
-        if len(args) == 1 and args[0][2]:
-            continue  # the array overload of a vector setter
-        if prop in params:
-            continue
-        types = [a[0] for a in args]
-        if len(args) == 1 and types[0].endswith("*") and types[0] not in ("char*",):
-            p = add(prop, "object", st)
-            p.object_type, p.custom = types[0].rstrip("*"), True
-        elif len(args) == 1 and types[0] == "char*":
-            p = add(prop, "string", st)
-            p.custom = True
-        elif all(t in SCALAR_TYPES for t in types):
-            p = add(prop, "scalar" if len(args) == 1 else "vector", st)
-            p.type, p.size, p.custom = types[0], len(args), True
-            p.setter_args = args
-        # other setters (e.g. of shader uniforms) are not parameters
-    for prop, (args, st) in adders.items():
-        if prop + "s" in removers or prop + "es" in removers:
-            p = add(prop, "list", st)
-            p.setter = "Add" + prop
-            p.setter_args, p.size, p.type = args, len(args), args[0][0]
-            p.custom = True
-    # getters decide what a setter is: no getter, write-only; vector getter sizes the vector
-    for name in list(order):
-        p = params[name]
-        g = getters.get(name)
-        if p.kind == "list":
-            continue
-        if g is None:
-            if p.kind in ("scalar", "vector") and p.custom:
-                p.kind = "writeonly"
-            elif p.kind in ("object", "string") and p.custom:
-                del params[name]
-                order.remove(name)
-            continue
-        gv = re.match(r"vtkGetVector(\d)Macro", g)
-        if gv and p.kind == "scalar" and p.custom:
-            p.kind = "vector"
-        if gv:
-            p.size = int(gv.group(1))
-    for prop, method, st in conveniences:
-        for name in order:
-            if prop.startswith(name + "To"):
-                params[name].conveniences.append((method, st.comment))
-                break
-    for name in order:
-        p = params[name]
-        if p.kind == "scalar" and p.clamp:
-            lo, hi = p.clamp
-            idents = [t for t in re.findall(r"[A-Za-z_]\w*", lo + " " + hi)
-                      if not re.match(r"^(?:[0-9]|VTK_)", t)]
-            found = header.enum_of(idents) if idents else None
-            if found:
-                p.enum = found
-                p.kind = "bitmask" if "|" in hi else "enum"
-        if p.comment is None:
-            errors.append("%s:%d: %s::%s has no doc comment" % (header.path, p.line,
-                                                                header.cls, name))
-    return ([params[n] for n in order], actor_setters, actor_removers, keys, nested)
+        diffs = []
+        for p in ref.params:
+            value = as_python_default(p, getattr(child, "Get" + p.name)())
+            if p.kind == "object":
+                if (value is None) != (p.default is None):
+                    owner = None
+                    for m2, _, _ in doc.nested:
+                        other = getattr(instance, m2)()
+                        if value is not None and other is not None and \
+                                value.GetAddressAsString("vtkObject") == \
+                                other.GetAddressAsString("vtkObject"):
+                            owner = m2
+                    shown = "this pass's `%s()`" % owner if owner else (
+                        "none" if value is None else "a `%s`" % value.GetClassName())
+                    diffs.append("`%s` = %s" % (p.name, shown))
+                continue
+            if same(value, p.default):
+                continue
+            if p.kind == "enum":
+                shown = "`%s`" % enum_symbol(p, value)
+            elif p.kind == "bool":
+                shown = "on" if value else "off"
+            elif isinstance(value, tuple):
+                shown = fmt_tuple(value)
+            else:
+                shown = fmt_num(value)
+            diffs.append("`%s` = %s (standalone: %s)" % (p.name, shown, p.default_text))
+        out.append((method, base, diffs))
+    return out
 
 
 # ------------------------------------------------------------------------------------------------
@@ -719,438 +758,6 @@ def md_cell(text):
 
 
 # ------------------------------------------------------------------------------------------------
-# Reading the code through the wrapping
-
-
-def import_vtkstylize(build):
-    try:
-        import vtkstylize
-    except ImportError:
-        for sub in ("lib", "python"):
-            sys.path.insert(0, os.path.join(build, sub))
-        try:
-            import vtkstylize
-        except ImportError as e:
-            raise SystemExit("error: cannot import vtkstylize (%s); put the build's python folder "
-                             "on PYTHONPATH or pass --build" % e)
-    return vtkstylize
-
-
-def as_python_default(p, value):
-    if p.kind == "bool":
-        return bool(value)
-    if p.type in ("int", "vtkIdType", "long") and isinstance(value, float) and value.is_integer():
-        return int(value)
-    return value
-
-
-def probe_scalar(cls, p):
-    """Range of a hand-written scalar setter: set extremes and read them back."""
-    is_int = p.type in ("int", "long", "vtkIdType")
-    results = []
-    for v in ((-INT_PROBE, INT_PROBE) if is_int else (-PROBE, PROBE)):
-        o = cls()
-        getattr(o, "Set" + p.name)(v)
-        results.append(getattr(o, "Get" + p.name)())
-    lo, hi = results
-    if abs(lo) >= (INT_PROBE if is_int else PROBE) or abs(hi) >= (INT_PROBE if is_int else PROBE):
-        return None, None
-    values = None
-    if is_int and hi - lo <= 64:
-        seen = set()
-        for v in range(int(lo), int(hi) + 1):
-            o = cls()
-            getattr(o, "Set" + p.name)(v)
-            seen.add(getattr(o, "Get" + p.name)())
-        if len(seen) < hi - lo + 1:
-            values = sorted(seen)
-    return (lo, hi), values
-
-
-def probe_vector(cls, p):
-    out = []
-    for v in (-PROBE, PROBE):
-        o = cls()
-        getattr(o, "Set" + p.name)(*([v] * p.size))
-        out.append(tuple(getattr(o, "Get" + p.name)()))
-    lows, highs = out
-    if any(abs(x) >= PROBE for x in lows + highs):
-        return None
-    if len(set(lows)) == 1 and len(set(highs)) == 1:
-        return (lows[0], highs[0])
-    return None
-
-
-def probe_list_size(cls, p):
-    o = cls()
-    count = getattr(o, "GetNumberOf%ss" % p.name, None)
-    if count is None:
-        return None
-    for _ in range(1000):
-        getattr(o, p.setter)(*([0.5] * p.size))
-    n = count()
-    return n if n < 1000 else None
-
-
-# ------------------------------------------------------------------------------------------------
-# Building the descriptions
-
-
-class ClassDoc:
-    pass
-
-
-def enum_symbol(p, value):
-    for name, v, _ in p.enum[1]:
-        if v == value:
-            return name
-    return str(value)
-
-
-def find_header(name):
-    """(path relative to ROOT or absolute, project?) of a class's header, or (None, False)."""
-    for folder in PROJECT_HEADER_DIRS:
-        path = os.path.join(folder, name + ".h")
-        if os.path.exists(os.path.join(ROOT, path)):
-            return path, True
-    for folder in sorted(glob.glob(VTK_HEADER_GLOB), reverse=True):
-        path = os.path.join(folder, name + ".h")
-        if os.path.exists(path):
-            return path, False
-    return None, False
-
-
-def describe_class(mod, cls, path, errors, warnings):
-    klass = getattr(mod, cls)
-    instance = klass()
-    header = Header(cls, path)
-    params, actor_setters, actor_removers, keys, nested = find_params(header, errors)
-    # parameters inherited from base classes (project and VTK), up to vtkObject
-    project_bases = []
-    for base in klass.__mro__[1:]:
-        name = base.__name__
-        if name in FRAMEWORK_BASES:
-            break
-        base_path, project = find_header(name)
-        if base_path is None:
-            warnings.append("%s: header of the base class %s not found: its parameters are not "
-                            "listed" % (path, name))
-            continue
-        if project:
-            project_bases.append(name)
-        base_header = Header(name, base_path)
-        found = find_params(base_header, errors if project else warnings)
-        known = {q.name for q in params}
-        for q in found[0]:
-            if q.name not in known:
-                q.inherited = (name, project, base_path)
-                params.append(q)
-        known_nested = {m for m, _, _ in nested}
-        nested.extend(n for n in found[4] if n[0] not in known_nested)
-    doc = ClassDoc()
-    doc.cls, doc.header, doc.params, doc.brief = cls, header, params, header.brief
-    doc.project_bases = project_bases
-    where = "%s::" % cls
-    seen_comments = {}
-    for p in list(params):
-        if p.kind in ("writeonly",):
-            continue
-        needed = ["GetNumberOf%ss" % p.name] if p.kind == "list" else ["Get" + p.name]
-        if p.clamp:
-            needed += ["Get%sMinValue" % p.name, "Get%sMaxValue" % p.name]
-        missing = [m for m in needed + [p.setter] if not hasattr(klass, m)]
-        if missing:
-            errors.append("%s:%d: %s%s: the built class has no %s (is the build older than "
-                          "the header? rebuild)" % (p.header_path, p.line, where, p.name,
-                                                    ", ".join(missing)))
-            params.remove(p)
-    for p in params:
-        loc = "%s:%d: %s%s" % (p.header_path, p.line, where, p.name)
-        text = p.doc
-        # meaning
-        if p.comment is not None and p.comment.item_for(p.setter) is None:
-            key = id(p.comment)
-            if key in seen_comments:
-                p.shared_with = seen_comments[key]
-            else:
-                seen_comments[key] = p.name
-        p.meaning_full = text or "(no doc comment)"
-        if p.comment is not None and p.comment.item_for(p.setter) is not None:
-            before, after = p.comment.around_item(p.setter)
-            p.meaning_full = " ".join(t for t in (before, text, after) if t)
-        p.meaning_short = first_sentence(text) if text else "(no doc comment)"
-        if p.inherited:
-            base, project, _ = p.inherited
-            origin = "Inherited from `%s`%s" % (base, "" if project else " (VTK)")
-            # prefer what the project says about it: a list naming the setter in the class
-            # description of this class or of a project base class
-            described = None
-            for owner, owner_header in [(cls, header)] + [(b, Header(b, find_header(b)[0]))
-                                                           for b in project_bases if b != base]:
-                items = (owner_header.description.list_naming(p.setter)
-                         if owner_header.description else None)
-                if items:
-                    described = (owner, items)
-                    break
-            if described:
-                owner, items = described
-                p.meaning_full = "%s; the class description of `%s`:<br>- %s" % (
-                    origin, owner, "<br>- ".join(items))
-                p.meaning_short = "%s; `%s`: %s" % (
-                    origin, owner, " ".join(first_sentence(t) for t in items))
-            else:
-                p.meaning_full = "%s: %s" % (origin, p.meaning_full)
-                p.meaning_short = "%s: %s" % (origin, p.meaning_short)
-        # enum values must agree with the wrapping
-        if p.enum:
-            for name, value, _ in p.enum[1]:
-                wrapped = getattr(klass, name, None)
-                if isinstance(wrapped, int) and wrapped != value:
-                    errors.append("%s: enum %s = %d in the header parse, %d in the wrapping"
-                                  % (loc, name, value, wrapped))
-        # default
-        if p.kind == "writeonly":
-            init = header.initializers.get(p.name)
-            p.default = parse_value(init) if init is not None else BAD
-            if p.default is BAD:
-                p.default = None
-                warnings.append("%s: no getter and no member initializer: default unknown" % loc)
-        elif p.kind == "list":
-            count = getattr(instance, "GetNumberOf%ss" % p.name, None)
-            p.default = count() if count else None
-        else:
-            p.default = as_python_default(p, getattr(instance, "Get" + p.name)())
-        # default text
-        if p.kind in ("enum",):
-            p.default_text = "`%s`" % enum_symbol(p, p.default)
-        elif p.kind == "bitmask":
-            bits = [n for n, v, _ in p.enum[1] if v and (p.default & v) == v]
-            p.default_text = " \\| ".join("`%s`" % b for b in bits) if bits else "0 (none)"
-        elif p.kind == "bool":
-            p.default_text = "on" if p.default else "off"
-        elif p.kind == "string":
-            p.default_text = "none" if p.default is None else '`"%s"`' % p.default
-        elif p.kind == "object":
-            p.default_text = "none" if p.default is None else "`%s`" % p.default.GetClassName()
-        elif p.kind == "list":
-            p.default_text = "empty" if not p.default else "%d entries" % p.default
-        elif p.kind in ("vector", "writeonly") and isinstance(p.default, tuple):
-            p.default_text = fmt_tuple(p.default)
-        elif p.default is None:
-            p.default_text = "—"
-        else:
-            p.default_text = fmt_num(p.default)
-        # unit
-        if p.kind in ("scalar", "vector", "writeonly", "list"):
-            patterns = VECTOR_UNIT_PATTERNS if p.kind in ("vector", "list") else UNIT_PATTERNS
-            unit = stated_unit(text, patterns)
-            if unit:
-                p.unit = unit
-            else:
-                warnings.append("%s: the comment states no unit" % loc)
-        # range
-        ranges = stated_ranges(text)
-        group = [q for q in params if q.comment is p.comment and p.comment is not None
-                 and q.comment.item_for(q.setter) is None] if p.comment is not None else [p]
-        if p.comment is not None and p.comment.item_for(p.setter) is not None:
-            group = [p]
-        stated = None
-        if len(ranges) == 1:
-            stated = ranges[0]
-        elif ranges and len(ranges) == len(group) and p in group:
-            stated = ranges[group.index(p)]
-        if p.kind == "scalar" and p.clamp:
-            lo = getattr(instance, "Get%sMinValue" % p.name)()
-            hi = getattr(instance, "Get%sMaxValue" % p.name)()
-            p.range_numbers = (lo, hi)
-            p.range_text = "[%s, %s]" % (fmt_num(lo), fmt_num(hi))
-            if stated and not (same(stated[0], lo) and same(stated[1], hi)):
-                errors.append("%s: the comment states the range [%s, %s], the code clamps to "
-                              "[%s, %s]" % (loc, fmt_num(stated[0]), fmt_num(stated[1]),
-                                            fmt_num(lo), fmt_num(hi)))
-            if not ranges:
-                warnings.append("%s: the comment states no range (code: %s)" % (loc,
-                                                                               p.range_text))
-        elif p.kind in ("enum", "bitmask"):
-            lo = getattr(instance, "Get%sMinValue" % p.name, lambda: None)()
-            hi = getattr(instance, "Get%sMaxValue" % p.name, lambda: None)()
-            entries = [e for e in p.enum[1] if p.kind == "bitmask" or lo is None
-                       or lo <= e[1] <= hi]
-            p.range_text = ", ".join("`%s`=%d" % (n, v) for n, v, _ in entries)
-            if p.kind == "bitmask":
-                p.range_text = "any OR of " + p.range_text
-                if hi is not None:
-                    p.range_text += " ([%s, %s])" % (fmt_num(lo), fmt_num(hi))
-            p.enum_entries = entries
-        elif p.kind == "bool":
-            p.range_text = "on/off"
-        elif p.kind == "string":
-            p.range_text = "text"
-        elif p.kind == "object":
-            p.range_text = "`%s` or none" % p.object_type
-        elif p.kind == "scalar":  # hand-written setter or vtkSetMacro without clamping
-            probed, values = probe_scalar(klass, p) if p.custom else ((None, None), None)
-            if values:
-                p.range_text = ", ".join(fmt_num(v) for v in values) + " (others are snapped)"
-                p.range_numbers = (values[0], values[-1])
-                p.allowed_values = values
-                stated_values = [float(x) for x in re.findall(NUM, text)]
-                if not all(any(same(v, s) for s in stated_values) for v in values):
-                    warnings.append("%s: the comment does not list the values %s" % (
-                        loc, p.range_text))
-            elif probed and probed[0] is not None:
-                p.range_numbers = probed
-                p.range_text = "[%s, %s]" % (fmt_num(probed[0]), fmt_num(probed[1]))
-                if stated and not (same(stated[0], probed[0]) and same(stated[1], probed[1])):
-                    errors.append("%s: the comment states the range [%s, %s], the setter "
-                                  "clamps to %s" % (loc, fmt_num(stated[0]), fmt_num(stated[1]),
-                                                    p.range_text))
-            elif stated:
-                p.range_text = "[%s, %s]" % (fmt_num(stated[0]), fmt_num(stated[1]))
-                p.range_numbers = stated
-            else:
-                p.range_text = "—"
-                warnings.append("%s: the comment states no range" % loc)
-        elif p.kind in ("vector", "list", "writeonly"):
-            each = "each " if p.size > 1 else ""
-            if stated:
-                p.range_text = "%s[%s, %s]" % (each, fmt_num(stated[0]), fmt_num(stated[1]))
-                p.range_numbers = stated
-            else:
-                p.range_text = "—"
-                warnings.append("%s: the comment states no range" % loc)
-            if p.kind == "vector":
-                probed = probe_vector(klass, p)
-                if stated and probed and not (same(stated[0], probed[0])
-                                              and same(stated[1], probed[1])):
-                    errors.append("%s: the comment states %s, the setter clamps each component "
-                                  "to [%s, %s]" % (loc, p.range_text, fmt_num(probed[0]),
-                                                   fmt_num(probed[1])))
-                if not stated and probed:
-                    p.range_text = "each [%s, %s]" % (fmt_num(probed[0]), fmt_num(probed[1]))
-                    p.range_numbers = probed
-            if p.kind == "list":
-                most = probe_list_size(klass, p)
-                m = re.search(r"\bat most (\d+)", text)
-                if most is not None:
-                    p.range_text += ", at most %d entries" % most
-                    if m and int(m.group(1)) != most:
-                        errors.append("%s: the comment says at most %s, the code keeps %d"
-                                      % (loc, m.group(1), most))
-        # the comment's own default must agree with the code
-        defaults = stated_defaults(text)
-        mine = None
-        if len(group) > 1 and len(defaults) == len(group):
-            mine = defaults[group.index(p)]
-        elif len(defaults) == 1 or (defaults and len(group) == 1):
-            mine = defaults[0]
-        if not defaults:
-            warnings.append("%s: the comment states no default (code: %s)" % (loc,
-                                                                            p.default_text))
-        elif mine is None:
-            warnings.append("%s: cannot tell which of the comment's defaults is this one's" % loc)
-        else:
-            value, each = mine
-            code = p.default
-            if isinstance(value, str) and p.enum:
-                value = next((v for n, v, _ in p.enum[1] if n == value), value)
-            if each and isinstance(code, tuple):
-                value = tuple([value] * len(code))
-            if p.kind == "object" and code is not None:
-                code = "set"
-            if not same(value, code):
-                shown = value if not isinstance(value, tuple) else fmt_tuple(value)
-                if isinstance(shown, float):
-                    shown = fmt_num(shown)
-                errors.append("%s: the comment states the default %s, the code has %s" % (
-                    loc, shown, p.default_text))
-    # per-actor settings (static setters taking a vtkProp)
-    doc.actor = []
-    if actor_setters:
-        from vtkmodules.vtkRenderingCore import vtkActor
-        key_objects = [(k, getattr(klass, k)()) for k, _ in keys]
-        by_name = {p.name: p for p in params}
-        for method, args, st in actor_setters:
-            results = {}
-            for v in (-PROBE, PROBE):
-                actor = vtkActor()
-                getattr(klass, method)(actor, *([v] * len(args)))
-                info = actor.GetPropertyKeys()
-                for kname, key in key_objects:
-                    if info is not None and info.Has(key):
-                        results.setdefault(kname, []).append(info.Get(key))
-            rows = []
-            for kname, (lo, hi) in results.items():
-                prop = "".join(w.capitalize() for w in kname.lower().split("_"))
-                target = by_name.get(prop)
-                rng = "[%s, %s]" % (fmt_num(lo), fmt_num(hi))
-                if target is not None and target.range_numbers and not (
-                        same(target.range_numbers[0], lo) and same(target.range_numbers[1], hi)):
-                    errors.append("%s:%d: %s clamps %s to %s, the pass's %s to %s" % (
-                        path, st.line, method, kname, rng, prop, target.range_text))
-                if target is not None:
-                    target.per_actor.append("`%s()`" % kname)
-                rows.append((kname, prop if target is not None else None, rng))
-            if not rows:
-                warnings.append("%s:%d: %s%s sets none of the keys %s" % (
-                    path, st.line, where, method, ", ".join(k for k, _ in keys)))
-            if st.comment is None:
-                errors.append("%s:%d: %s%s has no doc comment" % (path, st.line, where, method))
-            signature = "%s(prop, %s)" % (method, ", ".join(a[1] for a in args))
-            doc.actor.append((signature, rows, st.comment.text() if st.comment else ""))
-        doc.actor_removers = [("%s(prop)" % m, st.comment.text() if st.comment else "")
-                              for m, st in actor_removers]
-        doc.keys = [(k, c.text() if c else "") for k, c in keys]
-    # nested passes of a style, and where their defaults differ from a standalone instance
-    doc.nested = []
-    for method, base, st in nested:
-        doc.nested.append((method, base, st.comment.text() if st.comment else ""))
-    doc.klass = klass
-    return doc
-
-
-def nested_differences(doc, docs_by_class):
-    out = []
-    instance = doc.klass()
-    for method, base, comment in doc.nested:
-        child = getattr(instance, method)()
-        ref = docs_by_class.get(base)
-        if child is None or ref is None:
-            continue
-        diffs = []
-        for p in ref.params:
-            if p.kind in ("writeonly", "list"):
-                continue
-            value = as_python_default(p, getattr(child, "Get" + p.name)())
-            if p.kind == "object":
-                if (value is None) != (p.default is None):
-                    owner = None
-                    for m2, _, _ in doc.nested:
-                        other = getattr(instance, m2)()
-                        if value is not None and other is not None and \
-                                value.GetAddressAsString("vtkObject") == \
-                                other.GetAddressAsString("vtkObject"):
-                            owner = m2
-                    shown = "this pass's `%s()`" % owner if owner else (
-                        "none" if value is None else "a `%s`" % value.GetClassName())
-                    diffs.append("`%s` = %s" % (p.name, shown))
-                continue
-            if same(value, p.default):
-                continue
-            if p.kind == "enum":
-                shown = "`%s`" % enum_symbol(p, value)
-            elif p.kind == "bool":
-                shown = "on" if value else "off"
-            elif isinstance(value, tuple):
-                shown = fmt_tuple(value)
-            else:
-                shown = fmt_num(value)
-            diffs.append("`%s` = %s (standalone: %s)" % (p.name, shown, p.default_text))
-        out.append((method, base, diffs))
-    return out
-
-
-# ------------------------------------------------------------------------------------------------
 # Output
 
 
@@ -1163,42 +770,38 @@ def render_parameters(docs):
     L = []
     L.append("# Parameters")
     L.append("")
-    L.append("<!-- Generated by scripts/parameters.py from the headers in Passes/ and the built "
-             "classes. Do not edit: run `/usr/bin/python3 scripts/parameters.py`. -->")
+    L.append("<!-- Generated by scripts/parameters.py from the built classes (VTK's Python "
+             "wrapping). Do not edit: run `/usr/bin/python3 scripts/parameters.py`. -->")
     L.append("")
     L.append("Every user-settable parameter of the passes, generated by `scripts/parameters.py` "
              "so that it cannot drift from the code; `ctest -R docs.parameters` fails when this "
-             "file or the README's parameter tables are out of date, when a parameter has no "
+             "file or the parameter tables in the README and docs/ are out of date, when a parameter has no "
              "doc comment, or when a comment states a range or default the code does not have.")
     L.append("")
     L.append("- **parameter**: the VTK property, set with `Set<Name>()` and read with "
              "`Get<Name>()` (booleans also `<Name>On()`/`<Name>Off()`).")
-    L.append("- **meaning**: the doc comment above the setter in the header.")
+    L.append("- **meaning**: the setter's docstring (VTK's wrapping makes it from the header "
+             "comment).")
     L.append("- **unit**: as the comment states it (— where it states none; points are pixels "
              "of an image `ReferenceHeight` pixels tall).")
     L.append("- **range**: for clamped settings `Get<Name>MinValue()`/`Get<Name>MaxValue()`; for "
              "enumerations the symbolic values (class constants, e.g. "
              "`vtkComicPass.OBJECT`); for other setters the range the comment states, checked "
-             "by setting out-of-range values and reading them back. Setters clamp: out-of-range "
+             "by setting out-of-range values and reading them back (else as the comment states it). Setters clamp: out-of-range "
              "values take the nearest bound.")
-    L.append("- **default**: `Get<Name>()` of a new instance (setters without a getter: the "
-             "member's initializer in the header).")
+    L.append("- **default**: `Get<Name>()` of a new instance.")
     L.append("")
     L.append("Classes: " + ", ".join("[`%s`](#%s)" % (d.cls, anchor(d.cls)) for d in docs) + ".")
     for d in docs:
         L.append("")
         L.append("## %s" % d.cls)
         L.append("")
-        L.append("%s (`%s`)" % (d.brief, d.header.path))
+        L.append("%s (`%s`)" % (d.brief, d.path))
         L.append("")
         L.append("| parameter | unit | range | default | meaning |")
         L.append("|---|---|---|---|---|")
         for p in d.params:
-            name = "`%s`" % p.name
-            if p.kind == "list":
-                name = "`%s()`" % p.setter
-            elif p.kind == "writeonly":
-                name = "`%s(%s)` (no getter)" % (p.setter, ", ".join(a[1] for a in p.setter_args))
+            name = "`%s()`" % p.setter if p.kind == "list" else "`%s`" % p.name
             if p.shared_with:
                 meaning = "See `%s`." % p.shared_with
             else:
@@ -1207,8 +810,7 @@ def render_parameters(docs):
             if p.enum and p.kind in ("enum", "bitmask"):
                 extra.extend("`%s` (%d): %s" % (n, v, doc) if doc else "`%s` (%d)" % (n, v)
                              for n, v, doc in getattr(p, "enum_entries", p.enum[1]))
-            for method, comment in p.conveniences:
-                own = comment.text() if comment is not None and comment is not p.comment else ""
+            for method, own in p.conveniences:
                 extra.append("`%s()`%s" % (method, ": " + own if own else ""))
             if p.per_actor:
                 extra.append("Per actor: %s" % ", ".join(p.per_actor))
@@ -1263,10 +865,11 @@ def render_parameters(docs):
     return "\n".join(L)
 
 
-def render_readme_block(d):
+def render_readme_block(d, path):
+    link = os.path.relpath(OUTPUT, os.path.dirname(path) or ".")
     L = []
-    L.append("Generated by `scripts/parameters.py` from the header and the code (full comments, "
-             "per-value notes: [docs/PARAMETERS.md](docs/PARAMETERS.md#%s)):" % anchor(d.cls))
+    L.append("Generated by `scripts/parameters.py` from the class (full comments: "
+             "[%s](%s#%s)):" % (OUTPUT, link, anchor(d.cls)))
     L.append("")
     per_actor = any(p.per_actor for p in d.params)
     head = "| setting | meaning | unit | range | default |"
@@ -1295,15 +898,15 @@ def render_readme_block(d):
 BLOCK = re.compile(r"(<!-- parameters:(\w+) begin -->\n)(.*?)(<!-- parameters:\2 end -->)", re.S)
 
 
-def render_readme(text, docs, errors):
+def render_readme(path, text, docs, errors):
     by_class = {d.cls: d for d in docs}
 
     def replace(m):
         d = by_class.get(m.group(2))
         if d is None:
-            errors.append("%s: parameters block for unknown class %s" % (README, m.group(2)))
+            errors.append("%s: parameters block for unknown class %s" % (path, m.group(2)))
             return m.group(0)
-        return m.group(1) + render_readme_block(d) + "\n" + m.group(4)
+        return m.group(1) + render_readme_block(d, path) + "\n" + m.group(4)
 
     out = BLOCK.sub(replace, text)
     # a hand-written parameter table outside the generated blocks could drift: refuse it
@@ -1319,7 +922,7 @@ def render_readme(text, docs, errors):
         hits = [t for t in re.findall(r"`(\w+)`", first) if t in names]
         if hits:
             errors.append("%s:%d: hand-written parameter table row (%s) outside the generated "
-                          "<!-- parameters:CLASS --> blocks" % (README, number, ", ".join(hits)))
+                          "<!-- parameters:CLASS --> blocks" % (path, number, ", ".join(hits)))
     return out
 
 
@@ -1493,7 +1096,7 @@ def xml_advanced(p):
 
 def xml_property(d, p, errors):
     """The lines of one property element, or None with the reason it is not exposed."""
-    loc = "%s:%d: %s::%s" % (p.header_path, p.line, d.cls, p.name)
+    loc = "%s::%s" % (d.cls, p.name)
     kind = xml_kind(p)
     size = p.size if p.kind in ("vector", "writeonly") else 1
     element = {"bool": "IntVectorProperty", "enum": "IntVectorProperty",
@@ -1564,7 +1167,7 @@ def xml_exposed(docs_by_class, errors):
 
 def render_xml_passes(docs_by_class, exposed, skipped):
     L = ["<!--",
-         "  Generated by scripts/parameters.py from the headers in Passes/ and the built classes;",
+         "  Generated by scripts/parameters.py from the built classes (VTK's Python wrapping);",
          "  do not edit by hand: run /usr/bin/python3 scripts/parameters.py (ctest -R",
          "  docs.parameters fails when this file is out of date).",
          "",
@@ -1632,6 +1235,24 @@ def render_xml_view(view_xml, exposed, errors):
     return out
 
 
+XML_REPRESENTATION_BLOCK = re.compile(
+    r"([ \t]*<!-- generated:representation begin -->\n)(.*?)"
+    r"([ \t]*<!-- generated:representation end -->)", re.S)
+
+
+def render_xml_representation(view_xml, lighting, errors):
+    """The Stylized Surface representation's per-actor lighting properties: the lighting pass's
+    settings that a SetActor*() helper overrides, with the pass's default, range and comment
+    (vtkStylizeSurfaceRepresentation forwards them to a vtkStylizeLightingPass)."""
+    m = XML_REPRESENTATION_BLOCK.search(view_xml)
+    if not m:
+        errors.append("%s: no <!-- generated:representation begin/end --> markers" % XML_VIEW)
+        return view_xml
+    body = "".join(line + "\n" for p in lighting.params if p.per_actor
+                   for line in xml_property(lighting, p, errors))
+    return view_xml[:m.start(2)] + body + view_xml[m.end(2):]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--check", action="store_true",
@@ -1647,25 +1268,32 @@ def main():
     from vtkmodules.vtkCommonCore import vtkObject
     vtkObject.GlobalWarningDisplayOff()  # probing out-of-range values makes setters warn
     errors, warnings = [], []
-    docs = [describe_class(mod, cls, path, errors, warnings) for cls, path in CLASSES]
+    docs = [describe_class(mod, cls, errors, warnings) for cls in CLASSES]
     generated = render_parameters(docs)
-    readme_path = os.path.join(ROOT, README)
-    with open(readme_path) as f:
-        readme = f.read()
-    new_readme = render_readme(readme, docs, errors)
-    if not BLOCK.search(readme):
-        warnings.append("%s: no <!-- parameters:CLASS begin --> blocks" % README)
+    outputs = [(OUTPUT, generated)]
+    blocks = 0
+    for path in [README] + sorted(os.path.relpath(f, ROOT) for f in
+                                  glob.glob(os.path.join(ROOT, "docs", "*.md"))):
+        if path == OUTPUT:
+            continue
+        with open(os.path.join(ROOT, path)) as f:
+            text = f.read()
+        blocks += len(BLOCK.findall(text))
+        outputs.append((path, render_readme(path, text, docs, errors)))
+    if not blocks:
+        warnings.append("no <!-- parameters:CLASS begin --> blocks in %s or docs/" % README)
 
-    exposed, skipped = xml_exposed({d.cls: d for d in docs}, errors)
-    xml_passes = render_xml_passes({d.cls: d for d in docs}, exposed, skipped)
+    by_class = {d.cls: d for d in docs}
+    exposed, skipped = xml_exposed(by_class, errors)
+    xml_passes = render_xml_passes(by_class, exposed, skipped)
     with open(os.path.join(ROOT, XML_VIEW)) as f:
         xml_view = render_xml_view(f.read(), exposed, errors)
+    xml_view = render_xml_representation(xml_view, by_class["vtkStylizeLightingPass"], errors)
 
     if not args.quiet:
         for w in warnings:
             print("warning: " + w)
-    outputs = [(OUTPUT, generated), (README, new_readme), (XML_PASSES, xml_passes),
-               (XML_VIEW, xml_view)]
+    outputs += [(XML_PASSES, xml_passes), (XML_VIEW, xml_view)]
     stale = []
     for path, new in outputs:
         full = os.path.join(ROOT, path)
