@@ -10,9 +10,10 @@ STYLIZE_JOBS="${STYLIZE_JOBS:-$(nproc)}"
 # paraview and paraview-dev are for the ParaView plugin (its python3-paraview conflicts with
 # python3-vtk9, so the build unpacks it into the build tree instead of installing it), and
 # mpi-default-bin gives mpiexec for the 1-rank against 2-rank test; libqt5svg5 draws the
-# GUI's toolbar icons (Debian's paraview does not pull it in).
+# GUI's toolbar icons (Debian's paraview does not pull it in); libcli11-dev parses vtkstylize's
+# command line.
 STYLIZE_PACKAGES=(cmake make g++ libvtk9-dev python3-vtk9 python3-dev libglm-dev xvfb xauth x11-utils
-  libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5)
+  libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5 libcli11-dev)
 
 stylize_install_dependencies() {
   local missing=()

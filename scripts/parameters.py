@@ -1235,6 +1235,152 @@ def render_xml_view(view_xml, exposed, errors):
     return out
 
 
+# ------------------------------------------------------------------------------------------------
+# The command line's option table (vtkstylize)
+
+CLI_TABLE = "Examples/vtkstylize/vtkstylizeSettings.inc"
+# How vtkstylize spells each setting it offers: (class, setting) -> (option, metavar, keyword
+# spellings of an enumeration). The spelling is the command line's presentation (kept stable for
+# scripts); what a setting is, its type, range, default, values and meaning come from the class.
+CLI_COMIC = [
+    ("EdgeWidth", "--edge-width", "PT"), ("DepthThreshold", "--depth-threshold", "T"),
+    ("NormalThreshold", "--normal-threshold", "T"), ("ColorThreshold", "--color-threshold", "T"),
+    ("DotSpacing", "--dot-spacing", "PT"), ("DotAngle", "--dot-angle", "DEG"),
+    ("HatchSpacing", "--hatch-spacing", "PT"), ("HatchWidth", "--hatch-width", "PT"),
+    ("HatchAngle", "--hatch-angle", "DEG"), ("BrightThreshold", "--bright", "T"),
+    ("DarkThreshold", "--dark", "T"), ("CrossThreshold", "--cross-threshold", "T"),
+    ("ReferenceHeight", "--reference-height", "PX"), ("HatchDirections", "--hatch-directions", "N"),
+    ("EdgeWeights", "--edge-weights", "D,N,C"),
+    ("Anchor", "--anchor", "screen|object", {"screen": "SCREEN", "object": "OBJECT"}),
+    ("Edges", "--no-edges", None), ("Dots", "--no-dots", None), ("Hatching", "--no-hatching", None),
+    ("CrossHatching", "--no-cross", None), ("Tinted", "--tinted", None),
+]
+CLI_PIXEL = [
+    ("LowThreshold", "--low-threshold", "T"), ("HighThreshold", "--high-threshold", "T"),
+    ("DitherStrength", "--dither-strength", "S"), ("PixelSize", "--pixel-size", "PX"),
+    ("ArtPixelsAcross", "--art-pixels", "N"), ("HysteresisIterations", "--hysteresis", "N"),
+    ("Levels", "--levels", "K"), ("DitherSize", "--dither-size", "N"),
+    ("ColormapColors", "--colormap-colors", "N"), ("ColormapShades", "--colormap-shades", "N"),
+    ("DepthThreshold", "--depth-threshold", "T"), ("NormalThreshold", "--normal-threshold", "T"),
+    ("Mode", "--mode", "fast|faithful", {"fast": "FAST", "faithful": "FAITHFUL"}),
+    ("EdgeDetector", "--edge-detector", "none|sobel|canny",
+     {"none": "NO_EDGES", "sobel": "SOBEL", "canny": "CANNY"}),
+    ("DitherAnchor", "--dither-anchor", "screen|grid|surface",
+     {"screen": "SCREEN", "grid": "GRID", "surface": "SURFACE"}),
+    ("Layer", "--pixel-layer", "art|pixelated|edges",
+     {"art": "PIXEL_ART", "pixelated": "PIXELATED", "edges": "EDGES"}),
+    ("OutlineColor", "--outline", "COLOR"),
+    ("DepthEdges", "--no-depth-edges", None), ("NormalEdges", "--normal-edges", None),
+    ("SnapToGrid", "--no-snap", None), ("StylizeBackground", "--stylize-background", None),
+]
+CLI_SKETCH = [
+    ("Neighbors", "--neighbors", "2|4|8", {"2": "2", "4": "4", "8": "8"}),
+    ("NeighborSpacing", "--neighbor-spacing", "PT"), ("MaxStride", "--max-stride", "PT"),
+    ("PlanarTolerance", "--planar-tolerance", "T"),
+    ("UmbilicTolerance", "--umbilic-tolerance", "T"), ("FillRadius", "--fill-radius", "PT"),
+    ("FallbackAngle", "--fallback-angle", "DEG"), ("StepLength", "--step-length", "PT"),
+    ("NoiseSize", "--noise-size", "PT"), ("StrokeContrast", "--stroke-contrast", "C"),
+    ("Contrast", "--contrast", "C"), ("BlurRadius", "--blur-radius", "PT"),
+    ("SmoothingIterations", "--smoothing", "N"), ("Steps", "--steps", "N"),
+    ("BlurStride", "--blur-stride", "K"),
+    ("DirectionSource", "--direction-source", "screen|model",
+     {"screen": "SCREEN", "model": "MODEL"}),
+    ("Direction", "--direction", "minimum|maximum|bisector",
+     {"minimum": "MINIMUM", "maximum": "MAXIMUM", "bisector": "BISECTOR"}),
+    ("Noise", "--noise", "white|perlin|worley",
+     {"white": "WHITE", "perlin": "PERLIN", "worley": "WORLEY"}),
+    ("NoiseSpace", "--noise-space", "object|screen", {"object": "OBJECT", "screen": "SCREEN_SPACE"}),
+    ("LicMode", "--lic", "perspective|screen2d",
+     {"perspective": "PERSPECTIVE", "screen2d": "SCREEN_2D"}),
+    ("Layer", "--sketch-layer", "sketch|directions|strokes|tone",
+     {"sketch": "SKETCH", "directions": "DIRECTIONS", "strokes": "STROKES", "tone": "TONE"}),
+    ("BrightThresholds", "--bright-thresholds", "T1,T2"), ("CrossThreshold", "--cross-threshold", "T"),
+    ("PencilColor", "--pencil", "COLOR"), ("PaperColor", "--paper", "COLOR"),
+    ("CrossHatching", "--no-cross", None), ("Tinted", "--tinted", None),
+]
+CLI_LIGHTING = [
+    ("SubjectFactor", "--subject", "P1"), ("GrayLevelsNear", "--levels-near", "N"),
+    ("GrayLevelsFar", "--levels-far", "N"), ("SpecularGain", "--specular-gain", "G"),
+    ("Scattering", "--scattering", "S"), ("SpecularOcclusion", "--occlusion", "M"),
+]
+CLI_OPTIONS = [("vtkComicPass", "comic", CLI_COMIC), ("vtkPixelArtPass", "pixel", CLI_PIXEL),
+               ("vtkSketchPass", "sketch", CLI_SKETCH),
+               ("vtkStylizeLightingPass", "lighting", CLI_LIGHTING)]
+# Settings the command line offers by hand (vtkstylize's Options.cxx), and why.
+CLI_BY_HAND = [
+    "vtkStylizeLightingPass Model: --lighting takes the model's name (GetModelFromName)",
+    "vtkPixelArtPass Palette: --palette also offers 1bit and 4grays (palette and levels at once)",
+    "vtkPixelArtPass AddPaletteColor: --colors takes a list and selects the CUSTOM palette",
+    "vtkSketchPass ReferenceHeight: --reference-height 0 means window pixels for the sketch "
+    "(the pass itself needs at least 1)",
+    "vtkSketchPass DirectionSource model: the program also computes the principal directions",
+]
+
+
+def c_string(text):
+    return '"%s"' % text.replace("\\", "\\\\").replace('"', '\\"')
+
+
+def render_cli_table(by_class, errors):
+    L = ["// Generated by scripts/parameters.py from the wrapped classes. Do not edit: run",
+         "// /usr/bin/python3 scripts/parameters.py (ctest -R docs.parameters fails when this file",
+         "// is out of date). vtkstylize's option table: one line per pass setting it offers.",
+         "//   STYLIZE_NUMBER(Class, Setting, Type, option, metavar, help): range and default are",
+         "//     read from the class at run time (Get<Setting>MinValue/MaxValue, a new instance)",
+         "//   STYLIZE_FLAG(Class, Setting, Value, option, help): sets Setting to Value",
+         "//   STYLIZE_KEYWORDS(Class, Setting, option, metavar, help, {keyword, value}...)",
+         "//   STYLIZE_VECTOR(Class, Setting, Type, Count, Min, Max, option, metavar, help)",
+         "//   STYLIZE_COLOR(Class, Setting, option, metavar, help): R,G,B in [0, 1] or #rrggbb",
+         "// Offered by hand instead:"]
+    L.extend("//   %s" % why for why in CLI_BY_HAND)
+    for cls, prefix, entries in CLI_OPTIONS:
+        params = {p.name: p for p in by_class[cls].params}
+        for entry in entries:
+            setting, option, metavar = entry[:3]
+            p = params.get(setting)
+            if p is None:
+                errors.append("%s: %s has no setting %s (offered as %s)" % (CLI_TABLE, cls,
+                                                                           setting, option))
+                continue
+            meaning = plain(first_sentence(p.doc)).rstrip(".")
+            if len(meaning) > 1 and meaning[1].islower():
+                meaning = meaning[0].lower() + meaning[1:]
+            help_text = c_string("%s: %s" % (prefix, meaning))
+            if p.kind == "bool":
+                value = "false" if option.startswith("--no-") else "true"
+                L.append("STYLIZE_FLAG(%s, %s, %s, %s, %s)" % (cls, setting, value,
+                                                               c_string(option), help_text))
+            elif p.kind == "enum" or len(entry) > 3:
+                words = entry[3]
+                known = {n for n, _, _ in p.enum[1]} if p.enum else set()
+                values = []
+                for word, symbol in words.items():
+                    if p.enum and symbol not in known:
+                        errors.append("%s: %s has no value %s" % (CLI_TABLE, cls, symbol))
+                    values.append("{ %s, %s }" % (c_string(word), "%s::%s" % (cls, symbol)
+                                                  if p.enum else symbol))
+                L.append("STYLIZE_KEYWORDS(%s, %s, %s, %s, %s, %s)" % (
+                    cls, setting, c_string(option), c_string(metavar), help_text,
+                    ", ".join(values)))
+            elif p.kind == "vector" and metavar == "COLOR":
+                L.append("STYLIZE_COLOR(%s, %s, %s, %s, %s)" % (cls, setting, c_string(option),
+                                                                c_string(metavar), help_text))
+            elif p.kind == "vector":
+                lo, hi = p.range_numbers
+                L.append("STYLIZE_VECTOR(%s, %s, double, %d, %s, %s, %s, %s, %s)" % (
+                    cls, setting, p.size, repr(float(lo)), repr(float(hi)), c_string(option),
+                    c_string(metavar), help_text))
+            elif p.kind == "scalar" and p.clamp:
+                ctype = "int" if p.type == "int" else "double"
+                L.append("STYLIZE_NUMBER(%s, %s, %s, %s, %s, %s)" % (
+                    cls, setting, ctype, c_string(option), c_string(metavar), help_text))
+            else:
+                errors.append("%s: %s::%s (%s) cannot be an option" % (CLI_TABLE, cls, setting,
+                                                                     p.kind))
+    L.append("")
+    return "\n".join(L)
+
+
 XML_REPRESENTATION_BLOCK = re.compile(
     r"([ \t]*<!-- generated:representation begin -->\n)(.*?)"
     r"([ \t]*<!-- generated:representation end -->)", re.S)
@@ -1293,7 +1439,8 @@ def main():
     if not args.quiet:
         for w in warnings:
             print("warning: " + w)
-    outputs += [(XML_PASSES, xml_passes), (XML_VIEW, xml_view)]
+    outputs += [(XML_PASSES, xml_passes), (XML_VIEW, xml_view),
+                (CLI_TABLE, render_cli_table(by_class, errors))]
     stale = []
     for path, new in outputs:
         full = os.path.join(ROOT, path)

@@ -1,0 +1,203 @@
+// vtkstylize: rendering the window (tiled when magnified) and writing the PNG atomically.
+#include "Render.h"
+
+#include "vtkstylizeCommon.h"
+
+#include "vtkErrorCode.h"
+#include "vtkImageData.h"
+#include "vtkPNGWriter.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkWindowToImageFilter.h"
+
+#ifdef VTKSTYLIZE_HAVE_X11
+#include <X11/Xlib.h>
+#endif
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace vtkstylize
+{
+char TemporaryPath[4096] = { 0 };
+
+namespace
+{
+/** Removes the temporary file on scope exit unless released. */
+class TemporaryFileGuard
+{
+public:
+  TemporaryFileGuard() = default;
+  ~TemporaryFileGuard() { this->Remove(); }
+  TemporaryFileGuard(const TemporaryFileGuard&) = delete;
+  TemporaryFileGuard& operator=(const TemporaryFileGuard&) = delete;
+
+  void Set(const std::string& path)
+  {
+    this->Path = path;
+    std::snprintf(TemporaryPath, sizeof(TemporaryPath), "%s", path.c_str());
+  }
+  void Release()
+  {
+    this->Path.clear();
+    TemporaryPath[0] = 0;
+  }
+  void Remove()
+  {
+    if (!this->Path.empty())
+    {
+      ::unlink(this->Path.c_str());
+    }
+    this->Release();
+  }
+  const std::string& Get() const { return this->Path; }
+
+private:
+  std::string Path;
+};
+
+}
+
+std::string Directory(const std::string& path)
+{
+  const auto slash = path.find_last_of('/');
+  if (slash == std::string::npos)
+  {
+    return ".";
+  }
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+std::string BaseName(const std::string& path)
+{
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+/** Fails unless OUTPUT names a file (not a directory) in an existing, writable directory. */
+void CheckOutputPath(const std::string& path)
+{
+  const std::string what = "cannot write " + Quote(path);
+  if (BaseName(path).size() <= 4)
+  {
+    Fail(what + ": the file name is empty");
+  }
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+  {
+    Fail(what + ": is a directory");
+  }
+  const std::string dir = Directory(path);
+  if (::stat(dir.c_str(), &st) != 0)
+  {
+    Fail(what + ": directory " + Quote(dir) + ": " + std::strerror(errno));
+  }
+  if (!S_ISDIR(st.st_mode))
+  {
+    Fail(what + ": " + Quote(dir) + " is not a directory");
+  }
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+  {
+    Fail(what + ": directory " + Quote(dir) + ": " + std::strerror(errno));
+  }
+}
+
+#ifdef VTKSTYLIZE_HAVE_X11
+/** VTK aborts when it cannot open the X display; check it first. */
+void CheckDisplay(vtkRenderWindow* window)
+{
+  if (!window->IsA("vtkXOpenGLRenderWindow"))
+  {
+    return;
+  }
+  Display* display = XOpenDisplay(nullptr);
+  if (!display)
+  {
+    const char* name = std::getenv("DISPLAY");
+    Fail(std::string("cannot render: cannot open the X display ") +
+      (name && *name ? Quote(name) : std::string("(DISPLAY is not set)")) +
+      "; an X server is needed even for offscreen rendering");
+  }
+  XCloseDisplay(display);
+}
+#else
+void CheckDisplay(vtkRenderWindow*) {}
+#endif
+
+/** The offscreen window of the requested size, holding the renderer. */
+vtkSmartPointer<vtkRenderWindow> MakeWindow(vtkRenderer* ren, const Options& opt)
+{
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(opt.MultiSamples);
+  window->SetSize(opt.Width, opt.Height);
+  window->AddRenderer(ren);
+  CheckDisplay(window);
+  return window;
+}
+
+/** Renders the window into an image of the requested size and writes it to opt.Output. */
+void RenderAndWrite(vtkRenderWindow* window, const Options& opt)
+{
+  ClearVTKErrors();
+  window->Render();
+  CheckVTKErrors("rendering failed");
+
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->SetScale(opt.Magnify);
+  grab->Update();
+  CheckVTKErrors("reading the rendered image failed");
+  int dims[3];
+  grab->GetOutput()->GetDimensions(dims);
+  if (dims[0] != opt.Width * opt.Magnify || dims[1] != opt.Height * opt.Magnify)
+  {
+    Fail("rendering failed: got a " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) +
+      " image instead of " + std::to_string(opt.Width * opt.Magnify) + "x" +
+      std::to_string(opt.Height * opt.Magnify));
+  }
+
+  // Write to a temporary file beside the output, then rename: never a partial output file.
+  const std::string what = "cannot write " + Quote(opt.Output);
+  std::string pattern = Directory(opt.Output) + "/." + BaseName(opt.Output) + ".XXXXXX";
+  std::vector<char> buffer(pattern.begin(), pattern.end());
+  buffer.push_back(0);
+  TemporaryFileGuard temporary;
+  const int fd = ::mkstemp(buffer.data());
+  if (fd < 0)
+  {
+    Fail(what + ": " + std::strerror(errno));
+  }
+  temporary.Set(buffer.data());
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
+  ::close(fd);
+
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->SetFileName(temporary.Get().c_str());
+  writer->Write();
+  CheckVTKErrors(what);
+  if (writer->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    const char* code = vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode());
+    Fail(what + ": " + (code ? code : "write error"));
+  }
+  if (std::rename(temporary.Get().c_str(), opt.Output.c_str()) != 0)
+  {
+    Fail(what + ": " + std::strerror(errno));
+  }
+  temporary.Release();
+}
+}

@@ -1,0 +1,36 @@
+/**
+ * vtkstylize: the render window, and rendering it into the output PNG. The PNG is written to a
+ * temporary file beside the output and renamed, so a failure never leaves a partial file.
+ */
+#ifndef vtkstylizeRender_h
+#define vtkstylizeRender_h
+
+#include "Options.h"
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+class vtkRenderWindow;
+class vtkRenderer;
+
+namespace vtkstylize
+{
+/** The temporary PNG being written, for the crash handler (fixed buffer: signal-safe). */
+extern char TemporaryPath[4096];
+
+/** The folder of a path ("." when it has none) and its last component. */
+std::string Directory(const std::string& path);
+std::string BaseName(const std::string& path);
+
+/** Fails unless OUTPUT names a file (not a directory) in an existing, writable directory. */
+void CheckOutputPath(const std::string& path);
+
+/** An offscreen window of the requested size and multisampling, holding the renderer. */
+vtkSmartPointer<vtkRenderWindow> MakeWindow(vtkRenderer* ren, const Options& opt);
+
+/** Renders the window into an image of the requested size and writes it to opt.Output. */
+void RenderAndWrite(vtkRenderWindow* window, const Options& opt);
+}
+
+#endif

@@ -1,0 +1,372 @@
+// vtkstylize: the scene: actors and their colouring, the title and scalar bar, lights, camera.
+#include "Scene.h"
+
+#include "vtkstylizeCommon.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCoordinate.h"
+#include "vtkDataArray.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkScalarBarActor.h"
+#include "vtkSmartPointer.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vtkstylize
+{
+namespace
+{
+constexpr double SolidColor[3] = { 0.80, 0.80, 0.78 };
+
+/** Diverging cool-to-warm colour map (Moreland) over [lo, hi]. */
+vtkSmartPointer<vtkColorTransferFunction> CoolWarm(double lo, double hi)
+{
+  vtkNew<vtkColorTransferFunction> ctf;
+  ctf->SetColorSpaceToDiverging();
+  ctf->AddRGBPoint(lo, 0.230, 0.299, 0.754);
+  ctf->AddRGBPoint(hi, 0.706, 0.016, 0.150);
+  return ctf;
+}
+
+/** Viridis-like sequential colour map over [lo, hi]. */
+vtkSmartPointer<vtkColorTransferFunction> Viridis(double lo, double hi)
+{
+  static const double nodes[5][3] = { { 0.267, 0.005, 0.329 }, { 0.229, 0.322, 0.546 },
+    { 0.128, 0.567, 0.551 }, { 0.369, 0.789, 0.383 }, { 0.993, 0.906, 0.144 } };
+  vtkNew<vtkColorTransferFunction> ctf;
+  ctf->SetColorSpaceToLab();
+  for (int i = 0; i < 5; ++i)
+  {
+    ctf->AddRGBPoint(lo + (hi - lo) * i / 4.0, nodes[i][0], nodes[i][1], nodes[i][2]);
+  }
+  return ctf;
+}
+
+/** How a part is coloured. */
+struct Coloring
+{
+  std::string Array; // empty: solid
+  int Association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  bool Direct = false; // unsigned char RGB(A): the values are the colours
+};
+
+vtkDataArray* FindArray(vtkPolyData* pd, const std::string& name, int& association)
+{
+  if (vtkDataArray* a = pd->GetPointData()->GetArray(name.c_str()))
+  {
+    association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    return a;
+  }
+  if (vtkDataArray* a = pd->GetCellData()->GetArray(name.c_str()))
+  {
+    association = vtkDataObject::FIELD_ASSOCIATION_CELLS;
+    return a;
+  }
+  return nullptr;
+}
+
+Coloring ChooseColoring(const Part& part, const Options& opt, bool builtIn)
+{
+  Coloring c;
+  if (opt.NoScalars)
+  {
+    return c;
+  }
+  vtkPolyData* pd = part.Surface;
+  std::string name = opt.ColorBy;
+  if (name.empty())
+  {
+    if (builtIn)
+    {
+      name = part.Name == "parametric" ? "Height" : part.Name == "streamlines" ? "Speed" : "";
+    }
+    else if (vtkDataArray* s = pd->GetPointData()->GetScalars())
+    {
+      name = s->GetName() ? s->GetName() : "";
+      if (name.empty())
+      {
+        s->SetName("Scalars");
+        name = "Scalars";
+      }
+    }
+    else if (vtkDataArray* cs = pd->GetCellData()->GetScalars())
+    {
+      name = cs->GetName() ? cs->GetName() : "";
+      if (name.empty())
+      {
+        cs->SetName("CellScalars");
+        name = "CellScalars";
+      }
+    }
+  }
+  if (name.empty())
+  {
+    return c;
+  }
+  int association = 0;
+  vtkDataArray* array = FindArray(pd, name, association);
+  if (!array)
+  {
+    return c;
+  }
+  c.Array = name;
+  c.Association = association;
+  c.Direct = vtkUnsignedCharArray::SafeDownCast(array) &&
+    (array->GetNumberOfComponents() == 3 || array->GetNumberOfComponents() == 4) &&
+    opt.ColorBy.empty();
+  return c;
+}
+
+
+void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations& info,
+  const std::map<std::string, vtkSmartPointer<vtkColorTransferFunction>>& maps)
+{
+  if (opt.NoAnnotations)
+  {
+    return;
+  }
+  const double luminance =
+    0.299 * opt.Background[0] + 0.587 * opt.Background[1] + 0.114 * opt.Background[2];
+  const double ink = luminance > 0.5 ? 0.1 : 0.95;
+  const int fontSize = std::max(8, std::min(opt.Width, opt.Height) / 28);
+
+  vtkNew<vtkTextActor> title;
+  title->SetInput(info.Title.c_str());
+  title->GetTextProperty()->SetFontSize(fontSize);
+  title->GetTextProperty()->SetColor(ink, ink, ink);
+  title->GetTextProperty()->SetJustificationToLeft();
+  title->GetTextProperty()->SetVerticalJustificationToTop();
+  title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  title->GetPositionCoordinate()->SetValue(0.02, 0.97);
+  ren->AddActor2D(title);
+
+  const auto it = maps.find(info.ScalarBarArray);
+  if (!info.ScalarBarArray.empty() && it != maps.end())
+  {
+    vtkNew<vtkScalarBarActor> bar;
+    bar->SetLookupTable(it->second);
+    bar->SetTitle(info.ScalarBarArray.c_str());
+    bar->SetNumberOfLabels(4);
+    bar->SetOrientationToVertical();
+    bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    bar->GetPositionCoordinate()->SetValue(0.88, 0.1);
+    bar->SetWidth(0.1);
+    bar->SetHeight(0.8);
+    for (vtkTextProperty* tp : { bar->GetTitleTextProperty(), bar->GetLabelTextProperty() })
+    {
+      tp->SetColor(ink, ink, ink);
+      tp->ShadowOff();
+      tp->ItalicOff();
+    }
+    bar->SetVerticalTitleSeparation(std::max(2, fontSize / 3));
+    bar->SetMaximumWidthInPixels(std::max(40, opt.Width / 8));
+    ren->AddActor2D(bar);
+  }
+}
+}
+
+/** Adds one actor per part, coloured as ChooseColoring() says. */
+void AddParts(vtkRenderer* ren, const std::vector<Part>& parts, const Options& opt, bool builtIn,
+  SceneAnnotations& info, const std::string& what)
+{
+  // Colour maps: one per array name, over the range of that array across all parts.
+  std::vector<Coloring> colorings;
+  std::map<std::string, std::array<double, 2>> ranges;
+  bool anyColored = false;
+  for (const Part& p : parts)
+  {
+    Coloring c = ChooseColoring(p, opt, builtIn);
+    colorings.push_back(c);
+    if (c.Array.empty() || c.Direct)
+    {
+      anyColored = anyColored || c.Direct;
+      continue;
+    }
+    anyColored = true;
+    int association = 0;
+    vtkDataArray* array = FindArray(p.Surface, c.Array, association);
+    double r[2];
+    array->GetRange(r, array->GetNumberOfComponents() > 1 ? -1 : 0);
+    auto found = ranges.find(c.Array);
+    if (found == ranges.end())
+    {
+      ranges[c.Array][0] = r[0];
+      ranges[c.Array][1] = r[1];
+    }
+    else
+    {
+      found->second[0] = std::min(found->second[0], r[0]);
+      found->second[1] = std::max(found->second[1], r[1]);
+    }
+  }
+  if (!opt.ColorBy.empty() && !anyColored)
+  {
+    Fail(what + ": no point or cell array named " + Quote(opt.ColorBy) + " (see --color-by)");
+  }
+  std::map<std::string, vtkSmartPointer<vtkColorTransferFunction>> maps;
+  for (auto& r : ranges)
+  {
+    double lo = r.second[0], hi = r.second[1];
+    // A constant array (up to float rounding): centre it in a unit range.
+    if (!(hi - lo > 1e-6 * std::max({ 1.0, std::abs(lo), std::abs(hi) })))
+    {
+      lo -= 0.5;
+      hi += 0.5;
+    }
+    maps[r.first] = (builtIn && r.first == "Speed") ? Viridis(lo, hi) : CoolWarm(lo, hi);
+    if (info.ScalarBarArray.empty() || (builtIn && r.first == "Speed"))
+    {
+      info.ScalarBarArray = r.first;
+    }
+  }
+
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    const Coloring& c = colorings[i];
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(parts[i].Surface);
+    if (c.Array.empty())
+    {
+      mapper->ScalarVisibilityOff();
+    }
+    else
+    {
+      mapper->ScalarVisibilityOn();
+      mapper->SetScalarMode(c.Association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+          ? VTK_SCALAR_MODE_USE_CELL_FIELD_DATA
+          : VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
+      mapper->SelectColorArray(c.Array.c_str());
+      if (c.Direct)
+      {
+        mapper->SetColorModeToDirectScalars();
+      }
+      else
+      {
+        vtkColorTransferFunction* ctf = maps[c.Array];
+        int association = 0;
+        vtkDataArray* array = FindArray(parts[i].Surface, c.Array, association);
+        if (array->GetNumberOfComponents() > 1)
+        {
+          ctf->SetVectorModeToMagnitude();
+        }
+        mapper->SetColorModeToMapScalars();
+        mapper->SetLookupTable(ctf);
+        mapper->UseLookupTableScalarRangeOn();
+        mapper->InterpolateScalarsBeforeMappingOn();
+      }
+    }
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    vtkProperty* prop = actor->GetProperty();
+    prop->SetColor(SolidColor[0], SolidColor[1], SolidColor[2]);
+    // At most 0.1 + 0.75 + 0.15 = 1: a face seen head-on under the headlight is not saturated.
+    prop->SetAmbient(0.1);
+    prop->SetDiffuse(0.75);
+    prop->SetSpecular(0.15);
+    prop->SetSpecularPower(30.0);
+    ren->AddActor(actor);
+  }
+  AddAnnotations(ren, opt, info, maps);
+}
+
+/**
+ * Lights: 0 none; 1 the headlight; N > 1 white scene lights on a Fibonacci sphere around the
+ * scene, alternately directional and positional (point lights), each of intensity min(1, 3/N)
+ * so that the summed diffuse light (about N/4 lights face a point) stays below 1.
+ */
+void AddLights(vtkRenderer* ren, int count, const double bounds[6])
+{
+  ren->AutomaticLightCreationOff();
+  ren->RemoveAllLights();
+  if (count == 0)
+  {
+    return;
+  }
+  if (count == 1)
+  {
+    vtkNew<vtkLight> headlight;
+    headlight->SetLightTypeToHeadlight();
+    ren->AddLight(headlight);
+    return;
+  }
+  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  const double radius = 1.5 * std::max(diagonal, 1e-6);
+  const double intensity = std::min(1.0, 3.0 / count);
+  const double golden = vtkMath::Pi() * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < count; ++i)
+  {
+    const double y = 1.0 - 2.0 * (i + 0.5) / count;
+    const double r = std::sqrt(std::max(0.0, 1.0 - y * y));
+    const double phi = golden * i;
+    const double dir[3] = { r * std::cos(phi), y, r * std::sin(phi) };
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetColor(1.0, 1.0, 1.0);
+    light->SetIntensity(intensity);
+    light->SetFocalPoint(center[0], center[1], center[2]);
+    light->SetPosition(
+      center[0] + radius * dir[0], center[1] + radius * dir[1], center[2] + radius * dir[2]);
+    if (i % 2 == 1)
+    {
+      light->PositionalOn();
+      light->SetConeAngle(90.0); // >= 90: a point light, not a spot
+      light->SetAttenuationValues(1.0, 0.0, 0.0);
+    }
+    else
+    {
+      light->PositionalOff();
+    }
+    ren->AddLight(light);
+  }
+}
+
+void SetUpCamera(vtkRenderer* ren, const Options& opt, bool builtIn)
+{
+  vtkCamera* camera = ren->GetActiveCamera();
+  camera->SetPosition(0, 0, 1);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetParallelProjection(opt.Parallel);
+  ren->ResetCamera();
+  const double azimuth = opt.Azimuth ? *opt.Azimuth : (builtIn ? SceneAzimuth : 0.0);
+  const double elevation = opt.Elevation ? *opt.Elevation : (builtIn ? SceneElevation : 0.0);
+  camera->Azimuth(azimuth);
+  double before[3];
+  camera->GetDirectionOfProjection(before);
+  camera->Elevation(elevation);
+  // Looking straight up or down: the old view-up is parallel to the view; use the old forward
+  // direction instead so that the view transform stays well defined.
+  double dop[3], up[3];
+  camera->GetDirectionOfProjection(dop);
+  camera->GetViewUp(up);
+  if (std::abs(vtkMath::Dot(dop, up)) > 0.999)
+  {
+    const double sign = vtkMath::Dot(dop, up) > 0 ? -1.0 : 1.0;
+    camera->SetViewUp(sign * before[0], sign * before[1], sign * before[2]);
+  }
+  camera->OrthogonalizeViewUp();
+  camera->Zoom(opt.Zoom);
+  ren->ResetCameraClippingRange();
+}
+}

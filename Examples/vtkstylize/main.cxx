@@ -1,0 +1,256 @@
+/**
+ * vtkstylize: renders a data file (or the built-in scene) offscreen through the VTK Stylize
+ * render passes and writes a PNG image.
+ *
+ *   vtkstylize [options] [INPUT]
+ *
+ * Error contract: on any failure the program writes exactly one line starting with
+ * "vtkstylize: " to stderr, exits with 2 (usage error) or 1 (input, render or output error) and
+ * leaves no output file behind. VTK's own messages are captured by an output window and only the
+ * first error is folded into that line; anything else that libraries write directly to stderr is
+ * discarded (set VTKSTYLIZE_VERBOSE=1 to see it all).
+ *
+ * The program's parts, one file each:
+ *   main.cxx         error output, crash handling, the run from options to image
+ *   Options.cxx      the command line (CLI11), the styles, --help
+ *   vtkstylizeInput.cxx  readers and surfaces (vtkstylizeFileChecks.cxx: structural file checks)
+ *   Scene.cxx        actors, colouring, annotations, lights, camera
+ *   Render.cxx       the window, rendering and writing the PNG atomically
+ *   vtkstylizeCommon.cxx  the error type and the capture of VTK's messages
+ */
+
+#include "Options.h"
+#include "Render.h"
+#include "Scene.h"
+#include "vtkstylizeCommon.h"
+#include "vtkstylizeInput.h"
+
+#include "vtkLogger.h"
+#include "vtkMath.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkStylizeDemoScene.h"
+#include "vtkStylizeGBufferPass.h"
+#include "vtkStylizeLightingPass.h"
+#include "vtkVersion.h"
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#ifndef VTKSTYLIZE_VERSION
+#define VTKSTYLIZE_VERSION "unknown"
+#endif
+
+namespace
+{
+using namespace vtkstylize;
+
+// Error output and crash handling
+
+// Descriptor of the real stderr (fd 2 itself is redirected to /dev/null while VTK works).
+int ErrorDescriptor = 2;
+
+void WriteError(const std::string& message)
+{
+  const std::string line = "vtkstylize: " + OneLine(message, 1000) + "\n";
+  ssize_t ignored = ::write(ErrorDescriptor, line.data(), line.size());
+  (void)ignored;
+}
+
+/**
+ * Handler of fatal and terminating signals: removes the temporary PNG, prints one line, then
+ * dies of the same signal (so that a crash stays a crash for the caller).
+ */
+extern "C" void CrashHandler(int sig)
+{
+  if (TemporaryPath[0])
+  {
+    ::unlink(TemporaryPath);
+  }
+  const char* text = "vtkstylize: internal error: terminated by a signal\n";
+  switch (sig)
+  {
+    case SIGSEGV:
+      text = "vtkstylize: internal error: segmentation fault\n";
+      break;
+    case SIGBUS:
+      text = "vtkstylize: internal error: bus error\n";
+      break;
+    case SIGFPE:
+      text = "vtkstylize: internal error: floating point exception\n";
+      break;
+    case SIGABRT:
+      text = "vtkstylize: internal error: aborted\n";
+      break;
+    case SIGINT:
+    case SIGTERM:
+    case SIGHUP:
+      text = "vtkstylize: interrupted\n";
+      break;
+    default:
+      break;
+  }
+  ssize_t ignored = ::write(ErrorDescriptor, text, std::strlen(text));
+  (void)ignored;
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+int Run(int argc, char* argv[])
+{
+  Options opt = ParseCommandLine(argc, argv);
+  if (opt.Help)
+  {
+    std::cout << HelpText() << std::flush;
+    return 0;
+  }
+  if (opt.Version)
+  {
+    std::cout << "vtkstylize " << VTKSTYLIZE_VERSION << " (VTK " << vtkVersion::GetVTKVersion()
+              << ")\n"
+              << std::flush;
+    return 0;
+  }
+  const bool builtIn = opt.Input.empty();
+  if (!builtIn && !IsSupportedInput(opt.Input))
+  {
+    UsageError("unsupported file type " + Quote(opt.Input) + " (supported: " +
+      SupportedExtensions() + ")");
+  }
+  CheckOutputPath(opt.Output);
+
+  // Input -> parts.
+  std::vector<Part> parts;
+  SceneAnnotations info;
+  const std::string what = builtIn ? "built-in scene" : Quote(opt.Input);
+  if (builtIn)
+  {
+    vtkNew<vtkStylizeDemoScene> scene;
+    ClearVTKErrors();
+    scene->Update();
+    CheckVTKErrors("cannot build the built-in scene");
+    CollectParts(scene->GetOutput(), opt.IsoValue, what, parts);
+    info.Title = "VTK Stylize: built-in scene";
+  }
+  else
+  {
+    vtkSmartPointer<vtkDataObject> data = ReadInput(opt.Input);
+    CollectParts(data, opt.IsoValue, what, parts);
+    info.Title = BaseName(opt.Input);
+  }
+  FinishParts(parts, what);
+  if (opt.ModelDirections && opt.Style == "sketch")
+  {
+    AddPrincipalDirections(parts, what);
+  }
+
+  // Scene.
+  vtkNew<vtkRenderer> ren;
+  ren->SetBackground(opt.Background);
+  AddParts(ren, parts, opt, builtIn, info, what);
+  double bounds[6];
+  ren->ComputeVisiblePropBounds(bounds);
+  if (!vtkMath::AreBoundsInitialized(bounds))
+  {
+    Fail(what + ": nothing visible to render");
+  }
+  AddLights(ren, opt.Lights, bounds);
+  vtkSmartPointer<vtkRenderWindow> window = MakeWindow(ren, opt); // before the camera: aspect
+  SetUpCamera(ren, opt, builtIn);
+
+  // Passes.
+  const StyleSpec* style = FindStyle(opt.Style);
+  vtkNew<vtkStylizeLightingPass> lighting;
+  if (opt.LightingModel >= 0)
+  {
+    lighting->SetModel(opt.LightingModel);
+  }
+  else if (style->DefaultModel >= 0)
+  {
+    lighting->SetModel(style->DefaultModel);
+  }
+  opt.Passes.ApplyTo(lighting.Get());
+  vtkSmartPointer<vtkStylizeGBufferPass> gbuffer;
+  if (opt.GBuffer)
+  {
+    gbuffer = vtkSmartPointer<vtkStylizeGBufferPass>::New();
+    gbuffer->SetLightingPass(lighting);
+  }
+  ren->SetPass(style->MakePass(lighting, gbuffer, opt));
+
+  RenderAndWrite(window, opt);
+  if (!opt.Quiet)
+  {
+    std::cout << opt.Output << "\n" << std::flush;
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const bool verbose = std::getenv("VTKSTYLIZE_VERBOSE") && *std::getenv("VTKSTYLIZE_VERBOSE") &&
+    std::string(std::getenv("VTKSTYLIZE_VERBOSE")) != "0";
+
+  // Keep the real stderr for our one line; send everything else written to fd 2 to /dev/null.
+  if (!verbose)
+  {
+    const int saved = ::dup(2);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (saved >= 0 && null >= 0)
+    {
+      ErrorDescriptor = saved;
+      ::fcntl(saved, F_SETFD, FD_CLOEXEC);
+      ::dup2(null, 2);
+    }
+    if (null >= 0)
+    {
+      ::close(null);
+    }
+  }
+  for (int sig : { SIGSEGV, SIGBUS, SIGFPE, SIGABRT, SIGINT, SIGTERM, SIGHUP })
+  {
+    std::signal(sig, CrashHandler);
+  }
+
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  vtkObject::GlobalWarningDisplayOn();
+  InstallMessageCapture(verbose ? 2 : -1);
+
+  int code = 0;
+  try
+  {
+    code = Run(argc, argv);
+  }
+  catch (const CliError& e)
+  {
+    WriteError(e.Message);
+    code = e.Code;
+  }
+  catch (const std::bad_alloc&)
+  {
+    WriteError("out of memory");
+    code = ExitFailure;
+  }
+  catch (const std::exception& e)
+  {
+    WriteError(std::string("internal error: ") + e.what());
+    code = ExitFailure;
+  }
+  std::cout.flush();
+  RemoveMessageCapture();
+  return code;
+}
