@@ -803,6 +803,20 @@ struct CommandLine
 };
 }
 
+namespace
+{
+/** A style pass with the lighting pass's model and the settings given for its classes. */
+template <class Pass>
+vtkSmartPointer<Pass> MakeStyle(vtkStylizeLightingPass* lighting, const Options& opt)
+{
+  auto pass = vtkSmartPointer<Pass>::New();
+  pass->GetLightingPass()->SetModel(lighting->GetModel());
+  opt.Passes.ApplyTo(pass->GetLightingPass());
+  opt.Passes.template ApplyTo<Pass>(pass);
+  return pass;
+}
+}
+
 //------------------------------------------------------------------------------
 const std::vector<StyleSpec>& Styles()
 {
@@ -821,22 +835,14 @@ const std::vector<StyleSpec>& Styles()
       vtkStylizeLightingPass::COMIC,
       [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
         const Options& opt) -> vtkSmartPointer<vtkRenderPass> {
-        auto comic = vtkSmartPointer<vtkComicPass>::New();
-        comic->GetLightingPass()->SetModel(lighting->GetModel());
-        opt.Passes.ApplyTo(comic->GetLightingPass());
-        opt.Passes.ApplyTo<vtkComicPass>(comic);
-        return comic;
+        return MakeStyle<vtkComicPass>(lighting, opt);
       } },
     { "pixel",
       "pixel art: pixelation, Canny outlines, 8x8 ordered dither to a palette (vtkPixelArtPass)",
       vtkStylizeLightingPass::PIXEL_ART,
       [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
         const Options& opt) -> vtkSmartPointer<vtkRenderPass> {
-        auto pixel = vtkSmartPointer<vtkPixelArtPass>::New();
-        pixel->GetLightingPass()->SetModel(lighting->GetModel());
-        opt.Passes.ApplyTo(pixel->GetLightingPass());
-        opt.Passes.ApplyTo<vtkPixelArtPass>(pixel);
-        return pixel;
+        return MakeStyle<vtkPixelArtPass>(lighting, opt);
       } },
     { "sketch",
       "pencil sketch: principal-direction strokes (line integral convolution of solid noise), "
@@ -844,10 +850,7 @@ const std::vector<StyleSpec>& Styles()
       vtkStylizeLightingPass::STANDARD,
       [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
         const Options& opt) -> vtkSmartPointer<vtkRenderPass> {
-        auto sketch = vtkSmartPointer<vtkSketchPass>::New();
-        sketch->GetLightingPass()->SetModel(lighting->GetModel());
-        opt.Passes.ApplyTo(sketch->GetLightingPass());
-        opt.Passes.ApplyTo<vtkSketchPass>(sketch);
+        auto sketch = MakeStyle<vtkSketchPass>(lighting, opt);
         if (opt.Passes.SketchWindowPoints && opt.Height > 0)
         {
           sketch->SetReferenceHeight(opt.Height);
