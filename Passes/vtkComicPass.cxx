@@ -93,6 +93,8 @@ void vtkComicPass::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 void vtkComicPass::Render(const vtkRenderState* s)
 {
+  // Black and white: the tone is the light alone; tinted: the lit colour keeps the data's hue.
+  this->GetLightingPass()->SetMonochrome(!this->Tinted);
   const Plan plan = this->PlanFrame();
   Frame frame;
   if (!this->BeginFrame(s, frame) || !this->RenderScene(s, plan.Scene))

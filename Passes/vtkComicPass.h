@@ -180,8 +180,9 @@ public:
   ///@{
   /**
    * Eq. 12: the hatch direction follows the screen-space normal, quantized to this many steps
-   * over 180 degrees so each face keeps straight lines. 0: every line at HatchAngle.
-   * Range [0, 16], default 4.
+   * over 180 degrees so each face keeps straight lines. 0: every line at HatchAngle, one
+   * coherent direction over the whole image (on scanned meshes the normal-dependent variant
+   * changes direction from facet to facet). Range [0, 16], default 0.
    */
   vtkSetClampMacro(HatchDirections, int, 0, 16);
   vtkGetMacro(HatchDirections, int);
@@ -271,7 +272,7 @@ protected:
   double HatchSpacing = 8.0;
   double HatchWidth = 2.0;
   double HatchAngle = 135.0;
-  int HatchDirections = 4;
+  int HatchDirections = 0;
   bool CrossHatching = true;
   double CrossThreshold = 0.12;
   double BrightThreshold = 0.5;

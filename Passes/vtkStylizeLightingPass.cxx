@@ -102,6 +102,7 @@ void vtkStylizeLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GrayLevelsNear: " << this->GrayLevelsNear << "\n";
   os << indent << "GrayLevelsFar: " << this->GrayLevelsFar << "\n";
   os << indent << "SpecularGain: " << this->SpecularGain << "\n";
+  os << indent << "Monochrome: " << this->Monochrome << "\n";
   os << indent << "Scattering: " << this->Scattering << "\n";
   os << indent << "SpecularOcclusion: " << this->SpecularOcclusion << "\n";
   os << indent << "NumberOfLights: " << this->NumberOfLights << "\n";
@@ -503,6 +504,7 @@ bool vtkStylizeLightingPass::SetShaderParameters(
     static_cast<float>(ActorValue(prop, GRAY_LEVELS_NEAR(), this->GrayLevelsNear, 0.0, 100.0)));
   program->SetUniformf("stylizeLevelsFar",
     static_cast<float>(ActorValue(prop, GRAY_LEVELS_FAR(), this->GrayLevelsFar, 0.0, 100.0)));
+  program->SetUniformi("stylizeMonochrome", this->Monochrome ? 1 : 0);
   program->SetUniformf("stylizeSpecularGain",
     static_cast<float>(ActorValue(prop, SPECULAR_GAIN(), this->SpecularGain, 0.0, 100.0)));
   const float range[2] = { static_cast<float>(this->DepthRange[0]),

@@ -111,7 +111,9 @@ public:
   /**
    * Comic: subject factor p1 of the ambient term `La = p1 + I - 2 p1 I`, dimensionless, in
    * [0, 1]. 0 gives La = I (ordinary ambient), 1 gives La = 1 - I (the subject responds inversely
-   * to ambient light). Default 0. Per actor: SUBJECT_FACTOR().
+   * to ambient light). Default 0.4: with the default gray levels, the lit half of a real mesh
+   * reaches white (paper in the comic style) and its shadows stay dark. Per actor:
+   * SUBJECT_FACTOR().
    */
   vtkSetClampMacro(SubjectFactor, double, 0.0, 1.0);
   vtkGetMacro(SubjectFactor, double);
@@ -121,7 +123,8 @@ public:
   /**
    * Comic: number of gray levels pd of the quantized diffuse term at the near end (GrayLevelsNear)
    * and the far end (GrayLevelsFar) of the visible depth range, in [0, 100]; pd varies linearly
-   * in between. 0 gives black diffuse. Defaults 4 and 2. Per actor: GRAY_LEVELS_NEAR(),
+   * in between. 0 gives black diffuse. Defaults 6 and 6: equal, so that a flat face is one tone
+   * whatever its depth (the paper's depth-dependent levels split it). Per actor: GRAY_LEVELS_NEAR(),
    * GRAY_LEVELS_FAR().
    */
   vtkSetClampMacro(GrayLevelsNear, double, 0.0, 100.0);
@@ -137,6 +140,18 @@ public:
    */
   vtkSetClampMacro(SpecularGain, double, 0.0, 100.0);
   vtkGetMacro(SpecularGain, double);
+  ///@}
+
+  ///@{
+  /**
+   * Comic: compute the tone from the light alone: the ambient and diffuse colours are taken as
+   * white (the property's ambient and diffuse coefficients still apply), so a black-and-white
+   * style draws the shading, not the data's colours as grays. vtkComicPass turns it on for its
+   * black-and-white output and off when tinted. Default off.
+   */
+  vtkSetMacro(Monochrome, bool);
+  vtkGetMacro(Monochrome, bool);
+  vtkBooleanMacro(Monochrome, bool);
   ///@}
 
   ///@{
@@ -221,10 +236,11 @@ protected:
 
   vtkRenderPass* DelegatePass = nullptr;
   int Model = STANDARD;
-  double SubjectFactor = 0.0;
-  double GrayLevelsNear = 4.0;
-  double GrayLevelsFar = 2.0;
+  double SubjectFactor = 0.4;
+  double GrayLevelsNear = 6.0;
+  double GrayLevelsFar = 6.0;
   double SpecularGain = 1.5;
+  bool Monochrome = false;
   double Scattering = 1.0;
   double SpecularOcclusion = 1.0;
 

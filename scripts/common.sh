@@ -11,9 +11,10 @@ STYLIZE_JOBS="${STYLIZE_JOBS:-$(nproc)}"
 # python3-vtk9, so the build unpacks it into the build tree instead of installing it), and
 # mpi-default-bin gives mpiexec for the 1-rank against 2-rank test; libqt5svg5 draws the
 # GUI's toolbar icons (Debian's paraview does not pull it in); libcli11-dev parses vtkstylize's
-# command line.
+# command line; libcgal-demo ships the public test meshes of the real-data test set
+# (Testing/RealData).
 STYLIZE_PACKAGES=(cmake make g++ libvtk9-dev python3-vtk9 python3-dev libglm-dev xvfb xauth x11-utils
-  libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5 libcli11-dev)
+  libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5 libcli11-dev libcgal-demo)
 
 stylize_install_dependencies() {
   local missing=()

@@ -589,17 +589,21 @@ void AddProgramOptions(OptionTable& t)
      general, [](Options& opt, const std::string& v) { opt.Lights = std::atoi(v.c_str()); })
     ->check(NumberIn(0, MaxLights, true));
   t.Value("--azimuth", "DEG",
-     "camera azimuth in degrees (default: 0; " + FormatNumber(SceneAzimuth) +
-       " for the built-in scene)",
+     "camera azimuth in degrees, about the view-up axis (default: " + FormatNumber(SceneAzimuth) +
+       ", a three-quarter view)",
      general, [](Options& opt, const std::string& v) { opt.Azimuth = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(-MaxAngle, MaxAngle, false));
   t.Value("--elevation", "DEG",
-     "camera elevation in degrees (default: 0; " + FormatNumber(SceneElevation) +
-       " for the built-in scene)",
+     "camera elevation in degrees (default: " + FormatNumber(SceneElevation) +
+       ", a three-quarter view)",
      general,
      [](Options& opt, const std::string& v) { opt.Elevation = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(-MaxAngle, MaxAngle, false));
-  t.Value("--zoom", "F", "camera zoom factor (default: " + FormatNumber(o.Zoom) + ")", general,
+  t.Value("--zoom", "F",
+     "camera zoom factor, after a file's data is fitted to fill " +
+       FormatNumber(100 * FrameFill) + "% of the image's width or height (default: " +
+       FormatNumber(o.Zoom) + ")",
+     general,
      [](Options& opt, const std::string& v) { opt.Zoom = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(MinZoom, MaxZoom, false));
   t.Flag("--parallel", "parallel projection (default: perspective)", general,

@@ -38,6 +38,8 @@ constexpr double MaxZoom = 100.0;
 // Camera defaults for the built-in scene (files use 0 / 0: looking down -z).
 constexpr double SceneAzimuth = 30.0;
 constexpr double SceneElevation = 20.0;
+/** Files: the share of the image's width or height the data fills before --zoom. */
+constexpr double FrameFill = 0.85;
 
 /** The settings given for each pass class, applied in command-line order to the passes built. */
 struct PassSettings

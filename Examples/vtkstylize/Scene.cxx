@@ -6,7 +6,10 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
+#include "vtkActorCollection.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPoints.h"
 #include "vtkCoordinate.h"
 #include "vtkDataArray.h"
 #include "vtkLight.h"
@@ -341,6 +344,105 @@ void AddLights(vtkRenderer* ren, int count, const double bounds[6])
   }
 }
 
+namespace
+{
+/**
+ * The normalized device coordinate box (x0, x1, y0, y1) of every point of the renderer's
+ * visible actors' data, as the active camera projects them; false when there is none.
+ */
+bool ProjectedBox(vtkRenderer* ren, double box[4])
+{
+  vtkCamera* camera = ren->GetActiveCamera();
+  double aspect[2];
+  ren->GetAspect(aspect);
+  vtkMatrix4x4* m = camera->GetCompositeProjectionTransformMatrix(aspect[0] / aspect[1], -1, 1);
+  box[0] = box[2] = VTK_DOUBLE_MAX;
+  box[1] = box[3] = -VTK_DOUBLE_MAX;
+  bool any = false;
+  vtkActorCollection* actors = ren->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    auto* pd = actor->GetVisibility() && actor->GetMapper()
+      ? vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0))
+      : nullptr;
+    vtkPoints* points = pd ? pd->GetPoints() : nullptr;
+    if (!points)
+    {
+      continue;
+    }
+    vtkMatrix4x4* actorMatrix = actor->GetMatrix();
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      double p[4] = { 0, 0, 0, 1 };
+      points->GetPoint(i, p);
+      actorMatrix->MultiplyPoint(p, p);
+      m->MultiplyPoint(p, p);
+      if (!(p[3] > 0.0))
+      {
+        continue;
+      }
+      const double x = p[0] / p[3], y = p[1] / p[3];
+      box[0] = std::min(box[0], x);
+      box[1] = std::max(box[1], x);
+      box[2] = std::min(box[2], y);
+      box[3] = std::max(box[3], y);
+      any = true;
+    }
+  }
+  return any && box[1] > box[0] && box[3] > box[2];
+}
+
+/**
+ * Centres the data in the view and zooms so that its projected box fills `fill` of the
+ * image's width or height, whichever it reaches first. A few rounds, since under perspective
+ * moving the camera changes the projection.
+ */
+void FitView(vtkRenderer* ren, double fill)
+{
+  vtkCamera* camera = ren->GetActiveCamera();
+  for (int round = 0; round < 3; ++round)
+  {
+    double box[4];
+    if (!ProjectedBox(ren, box))
+    {
+      return;
+    }
+    // Centre: move the camera and its focal point across the view by the box's offset.
+    const double cx = 0.5 * (box[0] + box[1]), cy = 0.5 * (box[2] + box[3]);
+    double aspect[2];
+    ren->GetAspect(aspect);
+    const double halfHeight = camera->GetParallelProjection()
+      ? camera->GetParallelScale()
+      : camera->GetDistance() * std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle()));
+    const double halfWidth = halfHeight * aspect[0] / aspect[1];
+    double up[3], dop[3], right[3];
+    camera->GetViewUp(up);
+    camera->GetDirectionOfProjection(dop);
+    vtkMath::Cross(dop, up, right);
+    vtkMath::Normalize(right);
+    double shift[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      shift[i] = cx * halfWidth * right[i] + cy * halfHeight * up[i];
+    }
+    double position[3], focal[3];
+    camera->GetPosition(position);
+    camera->GetFocalPoint(focal);
+    camera->SetPosition(position[0] + shift[0], position[1] + shift[1], position[2] + shift[2]);
+    camera->SetFocalPoint(focal[0] + shift[0], focal[1] + shift[1], focal[2] + shift[2]);
+    // Zoom: the larger of the box's width and height fractions becomes `fill`.
+    const double extent = std::max(0.5 * (box[1] - box[0]), 0.5 * (box[3] - box[2]));
+    if (extent > 1e-12 && std::isfinite(extent))
+    {
+      camera->Zoom(std::min(1e6, fill / extent));
+    }
+    ren->ResetCameraClippingRange();
+  }
+}
+}
+
 void SetUpCamera(vtkRenderer* ren, const Options& opt, bool builtIn)
 {
   vtkCamera* camera = ren->GetActiveCamera();
@@ -349,12 +451,11 @@ void SetUpCamera(vtkRenderer* ren, const Options& opt, bool builtIn)
   camera->SetViewUp(0, 1, 0);
   camera->SetParallelProjection(opt.Parallel);
   ren->ResetCamera();
-  const double azimuth = opt.Azimuth ? *opt.Azimuth : (builtIn ? SceneAzimuth : 0.0);
-  const double elevation = opt.Elevation ? *opt.Elevation : (builtIn ? SceneElevation : 0.0);
-  camera->Azimuth(azimuth);
+  // A three-quarter view by default, as for the built-in scene.
+  camera->Azimuth(opt.Azimuth ? *opt.Azimuth : SceneAzimuth);
   double before[3];
   camera->GetDirectionOfProjection(before);
-  camera->Elevation(elevation);
+  camera->Elevation(opt.Elevation ? *opt.Elevation : SceneElevation);
   // Looking straight up or down: the old view-up is parallel to the view; use the old forward
   // direction instead so that the view transform stays well defined.
   double dop[3], up[3];
@@ -366,6 +467,12 @@ void SetUpCamera(vtkRenderer* ren, const Options& opt, bool builtIn)
     camera->SetViewUp(sign * before[0], sign * before[1], sign * before[2]);
   }
   camera->OrthogonalizeViewUp();
+  ren->ResetCameraClippingRange();
+  // Files fill the frame (the built-in scene keeps its composed framing).
+  if (!builtIn)
+  {
+    FitView(ren, FrameFill);
+  }
   camera->Zoom(opt.Zoom);
   ren->ResetCameraClippingRange();
 }

@@ -14,6 +14,7 @@ uniform int stylizeModel;           // 0 Standard, 1 Comic, 2 PixelArt
 uniform float stylizeSubjectFactor; // p1 in [0, 1]
 uniform float stylizeLevelsNear;    // gray levels at the near end of the depth range, [0, 100]
 uniform float stylizeLevelsFar;     // gray levels at the far end, [0, 100]
+uniform int stylizeMonochrome;      // 1: comic tone from the light alone (white colours)
 uniform float stylizeSpecularGain;  // specular multiplier, [0, 100]
 uniform vec2 stylizeDepthRange;     // view depth mapped to 0 and 1 for the level interpolation
 // Pixel art (docs/algorithms.md section 1)
@@ -98,6 +99,11 @@ vec3 stylizeComic(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 spe
   float La = p1 + I - 2.0 * p1 * I;
   vec3 diffuseBase = kd > 1e-6 ? diffuseC / kd : vec3(0.0);
   vec3 ambientBase = ka > 1e-6 ? ambientC / ka : diffuseBase;
+  if (stylizeMonochrome == 1)
+  {
+    diffuseBase = vec3(1.0);
+    ambientBase = vec3(1.0);
+  }
 
   float span = stylizeDepthRange.y - stylizeDepthRange.x;
   float t = span > 0.0 ? clamp((-P.z - stylizeDepthRange.x) / span, 0.0, 1.0) : 0.0;

@@ -348,6 +348,12 @@ int TestComicMotion(int argc, char* argv[])
     vtkNew<vtkComicPass> comic;
     comic->SetReferenceHeight(H);
     comic->SetAnchor(anchor);
+    // Pattern everywhere (the paper's darker lighting, normal-dependent hatching), so that the
+    // measure is about the pattern and not the outlines, which are anchored in both modes.
+    comic->GetLightingPass()->SetSubjectFactor(0.0);
+    comic->GetLightingPass()->SetGrayLevelsFar(2.0);
+    comic->GetLightingPass()->SetGrayLevelsNear(4.0);
+    comic->SetHatchDirections(4);
     ren->SetPass(comic);
     vtkCamera* cam = ren->GetActiveCamera();
 

@@ -183,6 +183,7 @@ int TestLightingExtremes(int, char*[])
     Buffers b;
     Render(vtkStylizeLightingPass::COMIC, false, [](vtkRenderer* r, vtkStylizeLightingPass* l) {
       AddSphere(r, 20, 0.0, 0.0);
+      l->SetSubjectFactor(0.0);
       l->SetGrayLevelsNear(0);
       l->SetGrayLevelsFar(0);
     }, b, "comic pd = 0");

@@ -207,3 +207,260 @@ double vtkStylizeImageMetrics::SSIM(vtkImageData* a, vtkImageData* b, double pea
   }
   return count > 0 ? sum / count : -2.0;
 }
+
+namespace
+{
+/** An image as planes of doubles: width, height and the first three (or one) components. */
+struct Planes
+{
+  int W = 0;
+  int H = 0;
+  std::vector<double> R, G, B;
+
+  bool Read(vtkImageData* image)
+  {
+    vtkDataArray* s = image ? image->GetPointData()->GetScalars() : nullptr;
+    if (!s)
+    {
+      return false;
+    }
+    int d[3];
+    image->GetDimensions(d);
+    if (d[2] != 1)
+    {
+      return false;
+    }
+    this->W = d[0];
+    this->H = d[1];
+    const size_t n = static_cast<size_t>(this->W) * this->H;
+    const int nc = s->GetNumberOfComponents();
+    this->R.resize(n);
+    this->G.resize(n);
+    this->B.resize(n);
+    for (size_t i = 0; i < n; ++i)
+    {
+      const vtkIdType t = static_cast<vtkIdType>(i);
+      this->R[i] = s->GetComponent(t, 0);
+      this->G[i] = s->GetComponent(t, nc >= 3 ? 1 : 0);
+      this->B[i] = s->GetComponent(t, nc >= 3 ? 2 : 0);
+    }
+    return true;
+  }
+
+  /** Rec. 709 luminance in [0, 1] (8-bit components). */
+  std::vector<double> Luminance() const
+  {
+    std::vector<double> l(this->R.size());
+    for (size_t i = 0; i < l.size(); ++i)
+    {
+      l[i] = (0.2126 * this->R[i] + 0.7152 * this->G[i] + 0.0722 * this->B[i]) / 255.0;
+    }
+    return l;
+  }
+
+  bool SameSize(const Planes& o) const { return this->W == o.W && this->H == o.H; }
+};
+
+/** The surface pixels of a key-coloured mask image (empty when the image is unusable). */
+std::vector<char> SurfaceMask(vtkImageData* image, const double key[3], int& w, int& h)
+{
+  Planes p;
+  if (!p.Read(image))
+  {
+    return {};
+  }
+  w = p.W;
+  h = p.H;
+  std::vector<char> m(p.R.size());
+  for (size_t i = 0; i < m.size(); ++i)
+  {
+    m[i] = std::abs(p.R[i] - key[0]) > 1.0 || std::abs(p.G[i] - key[1]) > 1.0 ||
+      std::abs(p.B[i] - key[2]) > 1.0;
+  }
+  return m;
+}
+
+/** Separable Gaussian blur of a plane (edges clamped). */
+std::vector<double> Blur(const std::vector<double>& v, int w, int h, double sigma)
+{
+  if (sigma <= 0.0)
+  {
+    return v;
+  }
+  const int r = static_cast<int>(std::ceil(3.0 * sigma));
+  std::vector<double> k(2 * r + 1);
+  double ks = 0.0;
+  for (int i = -r; i <= r; ++i)
+  {
+    ks += k[i + r] = std::exp(-0.5 * i * i / (sigma * sigma));
+  }
+  for (double& x : k)
+  {
+    x /= ks;
+  }
+  std::vector<double> t(v.size()), o(v.size());
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      double s = 0.0;
+      for (int i = -r; i <= r; ++i)
+      {
+        s += k[i + r] * v[static_cast<size_t>(y) * w + std::min(w - 1, std::max(0, x + i))];
+      }
+      t[static_cast<size_t>(y) * w + x] = s;
+    }
+  }
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      double s = 0.0;
+      for (int i = -r; i <= r; ++i)
+      {
+        s += k[i + r] * t[static_cast<size_t>(std::min(h - 1, std::max(0, y + i))) * w + x];
+      }
+      o[static_cast<size_t>(y) * w + x] = s;
+    }
+  }
+  return o;
+}
+}
+
+double vtkStylizeImageMetrics::ToneCorrelation(vtkImageData* styled, vtkImageData* reference,
+  vtkImageData* mask, const double key[3], double sigma)
+{
+  Planes a, b;
+  int w = 0, h = 0;
+  const std::vector<char> m = SurfaceMask(mask, key, w, h);
+  if (!a.Read(styled) || !b.Read(reference) || !a.SameSize(b) || a.W != w || a.H != h)
+  {
+    return -2.0;
+  }
+  const std::vector<double> x = Blur(a.Luminance(), w, h, sigma);
+  const std::vector<double> y = b.Luminance();
+  double n = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+  for (size_t i = 0; i < m.size(); ++i)
+  {
+    if (m[i])
+    {
+      n += 1;
+      sx += x[i];
+      sy += y[i];
+      sxx += x[i] * x[i];
+      syy += y[i] * y[i];
+      sxy += x[i] * y[i];
+    }
+  }
+  if (n < 2)
+  {
+    return -2.0;
+  }
+  const double vx = sxx - sx * sx / n, vy = syy - sy * sy / n, cxy = sxy - sx * sy / n;
+  return vx > 0 && vy > 0 ? cxy / std::sqrt(vx * vy) : 0.0;
+}
+
+double vtkStylizeImageMetrics::PaperShare(
+  vtkImageData* styled, vtkImageData* mask, const double key[3], double threshold)
+{
+  Planes a;
+  int w = 0, h = 0;
+  const std::vector<char> m = SurfaceMask(mask, key, w, h);
+  if (!a.Read(styled) || a.W != w || a.H != h)
+  {
+    return -2.0;
+  }
+  const std::vector<double> l = a.Luminance();
+  double n = 0, paper = 0;
+  for (size_t i = 0; i < m.size(); ++i)
+  {
+    if (m[i])
+    {
+      n += 1;
+      paper += l[i] >= threshold ? 1 : 0;
+    }
+  }
+  return n > 0 ? paper / n : -2.0;
+}
+
+double vtkStylizeImageMetrics::DirectionAgreement(
+  vtkImageData* directions, vtkImageData* mask, const double key[3], int window)
+{
+  Planes a;
+  int w = 0, h = 0;
+  const std::vector<char> m = SurfaceMask(mask, key, w, h);
+  if (!a.Read(directions) || a.W != w || a.H != h || window < 1)
+  {
+    return -2.0;
+  }
+  // Summed-area tables of cos 2theta, sin 2theta and the mask (one extra row and column).
+  const size_t W1 = static_cast<size_t>(w) + 1;
+  std::vector<double> sc(W1 * (h + 1), 0.0), ss(sc.size(), 0.0), sm(sc.size(), 0.0);
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * w + x;
+      double c = 0.0, s = 0.0;
+      if (m[i])
+      {
+        // r = 0.5 + 0.5 cos a, g - b = sin(a) sqrt(3) / 2 (0-255 components)
+        c = 2.0 * a.R[i] / 255.0 - 1.0;
+        s = (a.G[i] - a.B[i]) / 255.0 * 2.0 / std::sqrt(3.0);
+        const double len = std::sqrt(c * c + s * s);
+        c = len > 0 ? c / len : 0.0;
+        s = len > 0 ? s / len : 0.0;
+      }
+      const size_t j = (y + 1) * W1 + x + 1;
+      sc[j] = c + sc[j - 1] + sc[j - W1] - sc[j - W1 - 1];
+      ss[j] = s + ss[j - 1] + ss[j - W1] - ss[j - W1 - 1];
+      sm[j] = (m[i] ? 1.0 : 0.0) + sm[j - 1] + sm[j - W1] - sm[j - W1 - 1];
+    }
+  }
+  auto box = [&](const std::vector<double>& t, int x0, int y0, int x1, int y1) {
+    return t[y1 * W1 + x1] - t[y0 * W1 + x1] - t[y1 * W1 + x0] + t[y0 * W1 + x0];
+  };
+  const int r = window / 2;
+  const double area = static_cast<double>(2 * r + 1) * (2 * r + 1);
+  double sum = 0.0, n = 0.0;
+  for (int y = r; y < h - r; ++y)
+  {
+    for (int x = r; x < w - r; ++x)
+    {
+      if (!m[static_cast<size_t>(y) * w + x] || box(sm, x - r, y - r, x + r + 1, y + r + 1) < area)
+      {
+        continue;
+      }
+      const double c = box(sc, x - r, y - r, x + r + 1, y + r + 1) / area;
+      const double s = box(ss, x - r, y - r, x + r + 1, y + r + 1) / area;
+      sum += std::sqrt(c * c + s * s);
+      n += 1;
+    }
+  }
+  return n > 0 ? sum / n : -2.0;
+}
+
+double vtkStylizeImageMetrics::FramingExtent(vtkImageData* mask, const double key[3])
+{
+  int w = 0, h = 0;
+  const std::vector<char> m = SurfaceMask(mask, key, w, h);
+  int x0 = w, x1 = -1, y0 = h, y1 = -1;
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      if (m[static_cast<size_t>(y) * w + x])
+      {
+        x0 = std::min(x0, x);
+        x1 = std::max(x1, x);
+        y0 = std::min(y0, y);
+        y1 = std::max(y1, y);
+      }
+    }
+  }
+  if (x1 < 0)
+  {
+    return -2.0;
+  }
+  return std::max(static_cast<double>(x1 - x0 + 1) / w, static_cast<double>(y1 - y0 + 1) / h);
+}

@@ -49,6 +49,44 @@ public:
   /** Number of NaN or infinite values among all components of the array. */
   static vtkIdType CountNonFinite(vtkDataArray* array);
 
+  /**
+   * @name Real-data measures
+   * The surface is given by a mask image: an 8-bit RGB(A) image of the same view rendered on a
+   * key background colour (0-255 per component); its pixels that differ from the key by more
+   * than 1 in some component are the surface. Luminance is Rec. 709 of the first three
+   * components (or the only one), in [0, 1] for 8-bit images. Every measure returns -2 when an
+   * image is missing, the sizes differ or the mask is empty.
+   */
+  ///@{
+  /**
+   * Tone agreement of a stylized image with a reference rendering: the Pearson correlation,
+   * over the surface pixels, of the stylized luminance blurred by a Gaussian of sigma pixels
+   * (a halftone seen from afar) with the reference luminance. 1 = the tones agree.
+   */
+  static double ToneCorrelation(vtkImageData* styled, vtkImageData* reference,
+    vtkImageData* mask, const double key[3], double sigma);
+
+  /** Share of the surface pixels whose luminance is at least threshold (in [0, 1]): paper. */
+  static double PaperShare(vtkImageData* styled, vtkImageData* mask, const double key[3],
+    double threshold);
+
+  /**
+   * Local agreement of a direction field drawn as the sketch pass's directions layer (the
+   * screen angle theta, modulo 180 degrees, as the hue 0.5 + 0.5 cos(2 theta - k 120 degrees),
+   * k = 0, 1, 2): the mean over the surface pixels, whose window x window neighbourhood is all
+   * surface, of |mean of exp(2 i theta)| over that window. 1 = parallel strokes, about 0 =
+   * random directions.
+   */
+  static double DirectionAgreement(vtkImageData* directions, vtkImageData* mask,
+    const double key[3], int window);
+
+  /**
+   * Framing: the larger of the surface's bounding box width over the image width and its
+   * height over the image height (1 = the object touches two opposite sides).
+   */
+  static double FramingExtent(vtkImageData* mask, const double key[3]);
+  ///@}
+
 protected:
   vtkStylizeImageMetrics() = default;
   ~vtkStylizeImageMetrics() override = default;

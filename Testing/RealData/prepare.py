@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""Writes the real-data test set into a folder (the realdata fixture of the test suite).
+
+The meshes are public test meshes shipped by Debian's libcgal-demo package (CGAL's data/meshes:
+scanned models, CAD parts, animal models; see /usr/share/doc/libcgal-dev/copyright). Nothing of
+them is committed to this repository: this script reads them from the package's data.tar.gz and
+converts them from OFF (which VTK 9.1 has no reader for) to binary PLY with VTK's writer.
+
+usage: prepare.py OUTDIR [--archive data.tar.gz]
+"""
+import argparse
+import os
+import sys
+import tarfile
+
+import vtk
+
+# name in the test set: (file in data/meshes, kind)
+MESHES = {
+    "bunny": ("bunny00.off", "scan"),
+    "armadillo": ("armadillo.off", "scan"),
+    "dragon": ("ChineseDragon-10kv.off", "scan"),
+    "lion": ("lion-head.off", "scan"),
+    "man": ("man.off", "scan"),
+    "femur": ("femur.off", "scan"),
+    "fandisk": ("fandisk.off", "cad"),
+    "shark": ("mech-holes-shark.off", "cad"),
+    "rotor": ("rotor.off", "cad"),
+    "pinion": ("pinion.off", "cad"),
+    "turbine": ("turbine.off", "cad"),
+    "cow": ("cow.off", "model"),
+    "elephant": ("elephant.off", "model"),
+}
+
+ARCHIVES = [
+    "/usr/share/doc/libcgal-dev/data.tar.gz",
+    "/usr/share/doc/libcgal-demo/data.tar.gz",
+]
+
+
+def parse_off(text, name):
+    """The vertices and faces of an OFF file (comments and per-face colours allowed)."""
+    tokens = []
+    for line in text.splitlines():
+        line = line.split("#", 1)[0].strip()
+        if line:
+            tokens.append(line.split())
+    if not tokens or not tokens[0][0].endswith("OFF"):
+        raise ValueError(name + ": not an OFF file")
+    header = tokens[0][1:] if len(tokens[0]) > 1 else None
+    rows = tokens[1:]
+    if header is None:
+        header, rows = rows[0], rows[1:]
+    nv, nf = int(header[0]), int(header[1])
+    points = vtk.vtkPoints()
+    points.SetDataTypeToFloat()
+    points.SetNumberOfPoints(nv)
+    for i in range(nv):
+        x, y, z = (float(v) for v in rows[i][:3])
+        points.SetPoint(i, x, y, z)
+    polys = vtk.vtkCellArray()
+    for row in rows[nv:nv + nf]:
+        n = int(row[0])
+        ids = [int(v) for v in row[1:1 + n]]
+        if n >= 3 and all(0 <= v < nv for v in ids):
+            polys.InsertNextCell(n, ids)
+    mesh = vtk.vtkPolyData()
+    mesh.SetPoints(points)
+    mesh.SetPolys(polys)
+    return mesh
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("outdir")
+    parser.add_argument("--archive", help="CGAL's data.tar.gz (default: the libcgal-demo package's)")
+    args = parser.parse_args()
+    archive = args.archive or next((a for a in ARCHIVES if os.path.exists(a)), None)
+    if not archive:
+        sys.exit("prepare.py: CGAL's data.tar.gz not found (install Debian's libcgal-demo; "
+                 "scripts/test.sh does)")
+    os.makedirs(args.outdir, exist_ok=True)
+    with tarfile.open(archive) as tar:
+        for name, (member, _kind) in MESHES.items():
+            out = os.path.join(args.outdir, name + ".ply")
+            if os.path.exists(out):
+                continue
+            text = tar.extractfile("data/meshes/" + member).read().decode("latin-1")
+            mesh = parse_off(text, member)
+            writer = vtk.vtkPLYWriter()
+            writer.SetFileName(out[:-4] + ".part.ply")
+            writer.SetInputData(mesh)
+            writer.SetFileTypeToBinary()
+            if not writer.Write():
+                sys.exit("prepare.py: cannot write " + out)
+            os.replace(out[:-4] + ".part.ply", out)
+            print(out, mesh.GetNumberOfPoints(), "points", mesh.GetNumberOfCells(), "faces")
+
+
+if __name__ == "__main__":
+    main()
