@@ -620,6 +620,11 @@ void AddProgramOptions(OptionTable& t)
      "scale) (default: 1)",
      general, [](Options& opt, const std::string& v) { opt.Magnify = std::atoi(v.c_str()); })
     ->check(NumberIn(1, MaxMagnify, true));
+  t.Value("--time-step", "N",
+     "time step to draw, an index from 0 into the file's time steps (Exodus, EnSight, "
+     "OpenFOAM, .pvd) (default: 0, the first)",
+     general, [](Options& opt, const std::string& v) { opt.TimeStep = std::atoi(v.c_str()); })
+    ->check(NumberIn(0, 1000000000, true));
   t.Value("--iso", "VALUE",
      "image data only: contour value, any finite number (default: the middle of the scalar "
      "range)",
@@ -766,7 +771,12 @@ const char* Description =
   "\n"
   "INPUT formats, chosen by extension (case-insensitive):\n"
   "  .vtp .vtu .vts .vtr .vti .vtm  VTK XML files\n"
+  "  .pvtp .pvtu .pvts .pvtr .pvti  VTK parallel XML files\n"
+  "  .pvd                           ParaView data collections (see --time-step)\n"
   "  .vtk                           VTK legacy files\n"
+  "  .ex2 .exo .e .g                Exodus II (every element block)\n"
+  "  .case                          EnSight\n"
+  "  .foam                          OpenFOAM cases\n"
   "  .stl .obj .ply                 surface meshes\n"
   "Volumes and grids are drawn as their outer surface; image data with a point scalar array\n"
   "is drawn as a contour (see --iso); each block of a multiblock file is drawn as its own\n"

@@ -85,6 +85,7 @@ struct Options
   PassSettings Passes;
   bool ModelDirections = false; // --direction-source model: compute the principal directions
   int Magnify = 1;
+  int TimeStep = 0;
   bool GBuffer = false;
   std::optional<double> IsoValue;
   std::string ColorBy;

@@ -146,7 +146,7 @@ int Run(int argc, char* argv[])
   }
   else
   {
-    vtkSmartPointer<vtkDataObject> data = ReadInput(opt.Input);
+    vtkSmartPointer<vtkDataObject> data = ReadInput(opt.Input, opt.TimeStep);
     CollectParts(data, opt.IsoValue, what, parts);
     info.Title = BaseName(opt.Input);
   }

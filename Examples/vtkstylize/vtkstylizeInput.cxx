@@ -15,6 +15,17 @@
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
+#include "vtkExodusIIReader.h"
+#include "vtkGenericEnSightReader.h"
+#include "vtkOpenFOAMReader.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkXMLDataElement.h"
+#include "vtkXMLDataParser.h"
+#include "vtkXMLPImageDataReader.h"
+#include "vtkXMLPPolyDataReader.h"
+#include "vtkXMLPRectilinearGridReader.h"
+#include "vtkXMLPStructuredGridReader.h"
+#include "vtkXMLPUnstructuredGridReader.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericDataObjectReader.h"
 #include "vtkImageData.h"
@@ -44,6 +55,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <functional>
 #include <map>
 
@@ -79,6 +91,19 @@ ReaderFactory MakeReader()
   };
 }
 
+/** Exodus II: every element block, with all point and element result arrays. */
+vtkSmartPointer<vtkAlgorithm> MakeExodusReader(const std::string& path)
+{
+  vtkNew<vtkExodusIIReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
+  reader->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
+  reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK_ELEM_CONN, 1);
+  reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK_ATTRIB, 1);
+  return reader;
+}
+
 const std::map<std::string, ReaderFactory>& Readers()
 {
   static const std::map<std::string, ReaderFactory> readers = {
@@ -102,6 +127,24 @@ const std::map<std::string, ReaderFactory>& Readers()
     { ".stl", MakeReader<vtkSTLReader>() },
     { ".obj", MakeReader<vtkOBJReader>() },
     { ".ply", MakeReader<vtkPLYReader>() },
+    { ".pvtu", MakeReader<vtkXMLPUnstructuredGridReader>() },
+    { ".pvtp", MakeReader<vtkXMLPPolyDataReader>() },
+    { ".pvti", MakeReader<vtkXMLPImageDataReader>() },
+    { ".pvts", MakeReader<vtkXMLPStructuredGridReader>() },
+    { ".pvtr", MakeReader<vtkXMLPRectilinearGridReader>() },
+    { ".ex2", MakeExodusReader },
+    { ".exo", MakeExodusReader },
+    { ".e", MakeExodusReader },
+    { ".g", MakeExodusReader },
+    { ".case",
+      [](const std::string& path) -> vtkSmartPointer<vtkAlgorithm> {
+        vtkNew<vtkGenericEnSightReader> reader;
+        reader->SetCaseFileName(path.c_str());
+        return reader;
+      } },
+    { ".foam", MakeReader<vtkOpenFOAMReader>() },
+    // .pvd: a collection file; ReadInput reads the data set file of the chosen time step.
+    { ".pvd", nullptr },
   };
   return readers;
 }
@@ -160,8 +203,80 @@ void CheckInputFile(const std::string& path)
 }
 } // namespace
 
-vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path)
+namespace
 {
+/**
+ * The data set files of a ParaView data (.pvd) collection, in time order, read with VTK's XML
+ * parser; a relative file is relative to the .pvd's folder.
+ */
+std::vector<std::string> CollectionFiles(const std::string& path)
+{
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetFileName(path.c_str());
+  ClearVTKErrors();
+  if (!parser->Parse() || !parser->GetRootElement())
+  {
+    Fail("cannot read " + Quote(path) + ": not a well-formed ParaView data (.pvd) file");
+  }
+  vtkXMLDataElement* collection = parser->GetRootElement()->FindNestedElementWithName("Collection");
+  std::vector<std::pair<double, std::string>> entries;
+  for (int i = 0; collection && i < collection->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* e = collection->GetNestedElement(i);
+    const char* file = e->GetAttribute("file");
+    if (!e->GetName() || std::string(e->GetName()) != "DataSet" || !file)
+    {
+      continue;
+    }
+    double t = static_cast<double>(entries.size());
+    e->GetScalarAttribute("timestep", t);
+    std::string f = file;
+    const auto slash = path.find_last_of('/');
+    if (!f.empty() && f[0] != '/' && slash != std::string::npos)
+    {
+      f = path.substr(0, slash + 1) + f;
+    }
+    entries.emplace_back(t, f);
+  }
+  ClearVTKErrors();
+  if (entries.empty())
+  {
+    Fail("cannot read " + Quote(path) + ": the collection lists no data set file");
+  }
+  std::stable_sort(entries.begin(), entries.end(),
+    [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> files;
+  for (const auto& e : entries)
+  {
+    files.push_back(e.second);
+  }
+  return files;
+}
+
+std::string StepsText(std::size_t n)
+{
+  return n == 1 ? "1 time step" : std::to_string(n) + " time steps";
+}
+}
+
+vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
+{
+  if (Extension(path) == ".pvd")
+  {
+    CheckInputFile(path);
+    const std::vector<std::string> files = CollectionFiles(path);
+    if (timeStep < 0 || static_cast<std::size_t>(timeStep) >= files.size())
+    {
+      Fail("cannot read " + Quote(path) + ": --time-step " + std::to_string(timeStep) +
+        " is out of range (the file has " + StepsText(files.size()) + ")");
+    }
+    const std::string& file = files[static_cast<std::size_t>(timeStep)];
+    if (Extension(file) == ".pvd" || !IsSupportedInput(file))
+    {
+      Fail("cannot read " + Quote(path) + ": unsupported data set file " + Quote(file));
+    }
+    return ReadInput(file, 0);
+  }
   const auto it = Readers().find(Extension(path));
   if (it == Readers().end())
   {
@@ -183,9 +298,28 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path)
       Fail("cannot read " + Quote(path) + ": " + problem);
     }
   }
-  vtkSmartPointer<vtkAlgorithm> reader = it->second(path);
   ClearVTKErrors();
-  reader->Update();
+  vtkSmartPointer<vtkAlgorithm> reader = it->second(path);
+  reader->UpdateInformation();
+  // Time: the requested step of the reader's time steps (files without time have one step).
+  vtkInformation* info = reader->GetOutputInformation(0);
+  const int steps = info && info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS())
+    ? info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS())
+    : 0;
+  if (timeStep < 0 || timeStep >= std::max(steps, 1))
+  {
+    Fail("cannot read " + Quote(path) + ": --time-step " + std::to_string(timeStep) +
+      " is out of range (the file has " + StepsText(static_cast<std::size_t>(std::max(steps, 1))) +
+      ")");
+  }
+  if (steps > 0)
+  {
+    reader->UpdateTimeStep(info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[timeStep]);
+  }
+  else
+  {
+    reader->Update();
+  }
   const std::string what = "cannot read " + Quote(path);
   CheckVTKErrors(what);
   if (reader->GetErrorCode() != vtkErrorCode::NoError)
@@ -197,6 +331,21 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path)
   if (!output)
   {
     Fail(what + ": the reader produced no data");
+  }
+  // VTK 9.1's PLY reader reads faces only: say so for a file stored as triangle strips.
+  auto* poly = vtkPolyData::SafeDownCast(output);
+  if (it->first == ".ply" && poly && poly->GetNumberOfCells() == 0)
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    while (std::getline(in, line) && line.compare(0, 10, "end_header") != 0)
+    {
+      if (line.compare(0, 17, "element tristrips") == 0)
+      {
+        Fail(what + ": the surface is stored as triangle strips (element \"tristrips\"), which " +
+          "VTK 9.1's PLY reader does not read; save it with faces (element \"face\") instead");
+      }
+    }
   }
   vtkSmartPointer<vtkDataObject> data;
   data.TakeReference(output->NewInstance());

@@ -35,8 +35,11 @@ std::string SupportedExtensions();
 /** Whether the extension of the path (case-insensitive) has a reader. */
 bool IsSupportedInput(const std::string& path);
 
-/** Checks and reads the file. */
-vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path);
+/**
+ * Checks and reads the file at the given time step (an index into the reader's time steps, or
+ * into the data set files of a .pvd collection; 0 for files without time).
+ */
+vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep = 0);
 
 /**
  * Appends the surfaces of a dataset or of every leaf of a composite dataset to parts: polydata

@@ -8,9 +8,13 @@
 
 #include "vtkAppendFilter.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkConeSource.h"
 #include "vtkDoubleArray.h"
 #include "vtkElevationFilter.h"
+#include "vtkExodusIIWriter.h"
+#include "vtkIntArray.h"
+#include "vtkXMLPUnstructuredGridWriter.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericDataObjectWriter.h"
 #include "vtkImageData.h"
@@ -394,5 +398,85 @@ int main(int argc, char* argv[])
     w->SetInputData(table);
     Write(w.Get(), "table.vtk");
   }
+  // ---- Simulation formats (issue 14: files VTK reads are never refused) -----------------
+  {
+    vtkNew<vtkAppendFilter> toGrid;
+    toGrid->SetInputData(Wavelet(3));
+    toGrid->Update();
+    vtkUnstructuredGrid* grid = toGrid->GetOutput();
+    // Parallel XML: two pieces and the .pvtu that lists them.
+    vtkNew<vtkXMLPUnstructuredGridWriter> p;
+    p->SetInputData(grid);
+    p->SetNumberOfPieces(2);
+    p->SetStartPiece(0);
+    p->SetEndPiece(1);
+    Write(p.Get(), "pieces.pvtu");
+    // A .pvd collection of three time steps (the third one a sphere).
+    vtkNew<vtkXMLUnstructuredGridWriter> u;
+    u->SetInputData(grid);
+    Write(u.Get(), "series_0.vtu");
+    Write(u.Get(), "series_1.vtu");
+    vtkNew<vtkXMLPolyDataWriter> v;
+    v->SetInputData(sphere);
+    Write(v.Get(), "series_2.vtp");
+    std::ofstream(P("series.pvd"))
+      << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+         "<Collection>\n"
+         "<DataSet timestep=\"2\" part=\"0\" file=\"series_2.vtp\"/>\n"
+         "<DataSet timestep=\"0\" part=\"0\" file=\"series_0.vtu\"/>\n"
+         "<DataSet timestep=\"1\" part=\"0\" file=\"series_1.vtu\"/>\n"
+         "</Collection>\n</VTKFile>\n";
+    std::ofstream(P("broken.pvd")) << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\"";
+    // Exodus II, one element block of hexahedra with a nodal variable.
+    vtkNew<vtkUnstructuredGrid> exo;
+    exo->DeepCopy(grid);
+    vtkNew<vtkIntArray> blocks;
+    blocks->SetName("ElementBlockIds");
+    blocks->SetNumberOfTuples(exo->GetNumberOfCells());
+    blocks->FillValue(1);
+    exo->GetCellData()->AddArray(blocks);
+    vtkNew<vtkExodusIIWriter> e;
+    e->SetInputData(exo);
+    e->WriteAllTimeStepsOff();
+    Write(e.Get(), "mesh.ex2");
+  }
+  {
+    // Legacy file with one 20-node hexahedron (VTK_QUADRATIC_HEXAHEDRON), as VTK reads it.
+    vtkNew<vtkUnstructuredGrid> q;
+    vtkNew<vtkPoints> points;
+    const double corner[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
+      { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } };
+    const int edge[12][2] = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 },
+      { 7, 4 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } };
+    for (const auto& c : corner)
+    {
+      points->InsertNextPoint(c);
+    }
+    for (const auto& ed : edge)
+    {
+      points->InsertNextPoint(0.5 * (corner[ed[0]][0] + corner[ed[1]][0]),
+        0.5 * (corner[ed[0]][1] + corner[ed[1]][1]), 0.5 * (corner[ed[0]][2] + corner[ed[1]][2]));
+    }
+    q->SetPoints(points);
+    vtkIdType ids[20];
+    for (vtkIdType i = 0; i < 20; ++i)
+    {
+      ids[i] = i;
+    }
+    q->InsertNextCell(VTK_QUADRATIC_HEXAHEDRON, 20, ids);
+    vtkNew<vtkGenericDataObjectWriter> w;
+    w->SetInputData(q);
+    Write(w.Get(), "hex20.vtk");
+  }
+  // PLY stored as triangle strips (element "tristrips", -1 separates strips), and a legacy file
+  // with strips and polygons.
+  std::ofstream(P("strips.ply"))
+    << "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+       "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
+       "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0.2\n0 2 0\n1 2 0\n7 0 1 2 3 4 5 -1\n";
+  std::ofstream(P("strips.vtk"))
+    << "# vtk DataFile Version 3.0\nstrips and polygons\nASCII\nDATASET POLYDATA\n"
+       "POINTS 8 float\n0 0 0\n1 0 0\n0 1 0\n1 1 0.2\n0 2 0\n1 2 0\n2 0 0\n2 1 0.3\n"
+       "POLYGONS 1 5\n4 1 6 7 3\nTRIANGLE_STRIPS 1 7\n6 0 1 2 3 4 5\n";
   return Failed ? 1 : 0;
 }
