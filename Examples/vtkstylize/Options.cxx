@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <sstream>
 #include <type_traits>
 #include <utility>
@@ -279,6 +280,24 @@ const char* GroupOf(const vtkSketchPass*)
   return "Sketch (--style sketch)";
 }
 
+/** The --style a pass class's options apply to (none for the lighting: every style). */
+const char* StyleOf(const vtkStylizeLightingPass*)
+{
+  return nullptr;
+}
+const char* StyleOf(const vtkComicPass*)
+{
+  return "comic";
+}
+const char* StyleOf(const vtkPixelArtPass*)
+{
+  return "pixel";
+}
+const char* StyleOf(const vtkSketchPass*)
+{
+  return "sketch";
+}
+
 /**
  * The options of the program on a CLI11 app. Each option has actions that run, for each
  * occurrence, in command-line order (Apply()). An option several pass classes share (e.g.
@@ -420,6 +439,22 @@ public:
         action(opt, value);
       }
     }
+    // Options of a style other than the chosen one do nothing: say so, once per option.
+    for (const auto& e : this->Entries)
+    {
+      const Entry& entry = e.second;
+      if (entry.Styles.empty() || entry.Option->count() == 0 || entry.Styles.count(opt.Style))
+      {
+        continue;
+      }
+      std::string styles;
+      for (const std::string& st : entry.Styles)
+      {
+        styles += (styles.empty() ? "" : "|") + st;
+      }
+      opt.Warnings.push_back(e.first + " applies to --style " + styles + ", not " + opt.Style +
+        " (ignored)");
+    }
   }
 
 private:
@@ -428,6 +463,7 @@ private:
     CLI::Option* Option = nullptr;
     std::string Help;
     std::vector<Action> Actions;
+    std::set<std::string> Styles; // the styles a pass option applies to; empty: every one
   };
 
   CLI::Option* Add(const std::string& name, const std::string& metavar, const std::string& help,
@@ -466,9 +502,18 @@ private:
     auto found = this->Entries.find(name);
     if (found == this->Entries.end())
     {
-      return this->Add(name, metavar, text, GroupOf(static_cast<Pass*>(nullptr)), action);
+      CLI::Option* o = this->Add(name, metavar, text, GroupOf(static_cast<Pass*>(nullptr)), action);
+      if (const char* style = StyleOf(static_cast<Pass*>(nullptr)))
+      {
+        this->Entries[name].Styles.insert(style);
+      }
+      return o;
     }
     Entry& e = found->second;
+    if (const char* style = StyleOf(static_cast<Pass*>(nullptr)))
+    {
+      e.Styles.insert(style);
+    }
     e.Help += "; " + text;
     e.Option->description(e.Help);
     e.Actions.push_back(action);
@@ -642,6 +687,10 @@ void AddProgramOptions(OptionTable& t)
     [](Options& opt, const std::string&) { opt.NoScalars = true; });
   t.Flag("--no-annotations", "no title and no scalar bar (default: both are drawn)", general,
     [](Options& opt, const std::string&) { opt.NoAnnotations = true; });
+  t.Flag("--scalar-bar",
+    "draw the colour legend on black-and-white output too (default: comic and sketch draw it "
+    "only with --tinted)",
+    general, [](Options& opt, const std::string&) { opt.ScalarBar = true; });
   t.Value("--multisamples", "N", "multisample anti-aliasing samples (default: 0)", general,
      [](Options& opt, const std::string& v) { opt.MultiSamples = std::atoi(v.c_str()); })
     ->check(NumberIn(0, MaxMultiSamples, true));

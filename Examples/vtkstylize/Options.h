@@ -93,6 +93,8 @@ struct Options
   bool NoAnnotations = false;
   int MultiSamples = 0;
   bool Quiet = false;
+  std::vector<std::string> Warnings; // options that do not apply, printed unless --quiet
+  bool ScalarBar = false; // --scalar-bar: the colour legend on black-and-white output too
   bool Help = false;
   bool Version = false;
   std::string Input; // empty: the built-in scene

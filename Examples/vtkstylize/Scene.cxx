@@ -8,10 +8,13 @@
 #include "vtkCellData.h"
 #include "vtkActorCollection.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkComicPass.h"
+#include "vtkSketchPass.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
 #include "vtkCoordinate.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -29,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -148,7 +152,10 @@ void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations
   const double luminance =
     0.299 * opt.Background[0] + 0.587 * opt.Background[1] + 0.114 * opt.Background[2];
   const double ink = luminance > 0.5 ? 0.1 : 0.95;
-  const int fontSize = std::max(8, std::min(opt.Width, opt.Height) / 28);
+  // Text is drawn in pixels of the final image: a magnified (tiled) screenshot scales it with
+  // the image, as it does the 3D scene (vtkWindowToImageFilter does not scale 2D text).
+  const int magnify = std::max(1, opt.Magnify);
+  const int fontSize = std::max(8, std::min(opt.Width, opt.Height) / 28) * magnify;
 
   vtkNew<vtkTextActor> title;
   title->SetInput(info.Title.c_str());
@@ -160,8 +167,23 @@ void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations
   title->GetPositionCoordinate()->SetValue(0.02, 0.97);
   ren->AddActor2D(title);
 
+  // Black-and-white output (comic or sketch, not tinted) shows no colours: no colour legend
+  // unless --scalar-bar asks for one.
+  bool blackAndWhite = false;
+  if (opt.Style == "comic")
+  {
+    vtkNew<vtkComicPass> comic;
+    opt.Passes.ApplyTo(comic.Get());
+    blackAndWhite = !comic->GetTinted();
+  }
+  else if (opt.Style == "sketch")
+  {
+    vtkNew<vtkSketchPass> sketch;
+    opt.Passes.ApplyTo(sketch.Get());
+    blackAndWhite = !sketch->GetTinted();
+  }
   const auto it = maps.find(info.ScalarBarArray);
-  if (!info.ScalarBarArray.empty() && it != maps.end())
+  if (!info.ScalarBarArray.empty() && it != maps.end() && (!blackAndWhite || opt.ScalarBar))
   {
     vtkNew<vtkScalarBarActor> bar;
     bar->SetLookupTable(it->second);
@@ -179,7 +201,7 @@ void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations
       tp->ItalicOff();
     }
     bar->SetVerticalTitleSeparation(std::max(2, fontSize / 3));
-    bar->SetMaximumWidthInPixels(std::max(40, opt.Width / 8));
+    bar->SetMaximumWidthInPixels(std::max(40, opt.Width / 8) * magnify);
     ren->AddActor2D(bar);
   }
 }
@@ -221,7 +243,29 @@ void AddParts(vtkRenderer* ren, const std::vector<Part>& parts, const Options& o
   }
   if (!opt.ColorBy.empty() && !anyColored)
   {
-    Fail(what + ": no point or cell array named " + Quote(opt.ColorBy) + " (see --color-by)");
+    // List what there is, so that the next try can succeed.
+    std::set<std::string> names;
+    for (const Part& p : parts)
+    {
+      for (vtkFieldData* fd : { static_cast<vtkFieldData*>(p.Surface->GetPointData()),
+             static_cast<vtkFieldData*>(p.Surface->GetCellData()) })
+      {
+        for (int a = 0; a < fd->GetNumberOfArrays(); ++a)
+        {
+          if (fd->GetArray(a) && fd->GetArray(a)->GetName())
+          {
+            names.insert(fd->GetArray(a)->GetName());
+          }
+        }
+      }
+    }
+    std::string list;
+    for (const std::string& n : names)
+    {
+      list += (list.empty() ? "" : ", ") + Quote(n);
+    }
+    Fail(what + ": no point or cell array named " + Quote(opt.ColorBy) + " (see --color-by); " +
+      (list.empty() ? std::string("the data has no arrays") : "the arrays are: " + list));
   }
   std::map<std::string, vtkSmartPointer<vtkColorTransferFunction>> maps;
   for (auto& r : ranges)

@@ -116,6 +116,10 @@ int Run(int argc, char* argv[])
     std::cout << HelpText() << std::flush;
     return 0;
   }
+  for (const std::string& warning : opt.Warnings)
+  {
+    WriteError("warning: " + warning);
+  }
   if (opt.Version)
   {
     std::cout << "vtkstylize " << VTKSTYLIZE_VERSION << " (VTK " << vtkVersion::GetVTKVersion()
