@@ -415,9 +415,14 @@ public:
   }
 
   /** Adds an action to an existing option. */
-  void Also(const std::string& name, Action action)
+  void Also(const std::string& name, Action action, const char* style = nullptr)
   {
-    this->Entries.at(name).Actions.push_back(std::move(action));
+    Entry& e = this->Entries.at(name);
+    e.Actions.push_back(std::move(action));
+    if (style)
+    {
+      e.Styles.insert(style);
+    }
   }
 
   /** Runs the actions of every occurrence, in command-line order. */
@@ -782,7 +787,7 @@ void AddOptionEffects(OptionTable& t)
       opt.Passes.Of<vtkSketchPass>().push_back(
         [value](vtkSketchPass* p) { p->SetReferenceHeight(value); });
     }
-  });
+  }, "sketch");
   // The program computes the principal directions only when the pass uses them.
   t.Also("--direction-source",
     [](Options& opt, const std::string& v) { opt.ModelDirections = v == "model"; });
