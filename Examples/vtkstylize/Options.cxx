@@ -673,11 +673,16 @@ void AddProgramOptions(OptionTable& t)
   t.Value("--time-step", "N",
      "time step to draw, an index from 0 into the file's time steps (Exodus, EnSight, "
      "OpenFOAM, .pvd) (default: 0, the first)",
-     general, [](Options& opt, const std::string& v) { opt.TimeStep = std::atoi(v.c_str()); })
+     general,
+     [](Options& opt, const std::string& v) {
+       opt.TimeStep = std::atoi(v.c_str());
+       opt.TimeStepGiven = true;
+     })
     ->check(NumberIn(0, 1000000000, true));
   t.Value("--iso", "VALUE",
-     "image data only: contour value, any finite number (default: the middle of the scalar "
-     "range)",
+     "3D image data only: contour value, any finite number (default: Otsu's threshold of the "
+     "point scalars, the value that best separates their two main populations: over a "
+     "256-bin histogram, the split of largest between-class variance; printed as a note)",
      general, [](Options& opt, const std::string& v) { opt.IsoValue = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(-HUGE_VAL, HUGE_VAL, false));
   t.Value("--color-by", "ARRAY",
@@ -839,8 +844,11 @@ const char* Description =
   "a later option overrides an earlier one.";
 
 const char* Footer =
-  "On success the output path is printed on stdout. On failure one line starting with\n"
-  "\"vtkstylize: \" is printed on stderr and no output file is written.\n"
+  "On success the output path is printed on stdout, and on stderr lines starting with\n"
+  "\"vtkstylize: warning: \" (an option that does not apply) or \"vtkstylize: note: \" (a\n"
+  "value the program chose, e.g. the contour value); --quiet leaves out the path and the\n"
+  "notes. On failure one line starting with \"vtkstylize: \" is printed on stderr (and\n"
+  "nothing else) and no output file is written.\n"
   "Exit status: 0 success, 1 input, rendering or output error, 2 usage error (unknown\n"
   "option, bad option value, unsupported INPUT extension).\n"
   "Environment: VTKSTYLIZE_VERBOSE=1 also shows VTK's own messages on stderr.\n"

@@ -86,6 +86,7 @@ struct Options
   bool ModelDirections = false; // --direction-source model: compute the principal directions
   int Magnify = 1;
   int TimeStep = 0;
+  bool TimeStepGiven = false; // --time-step was given (a warning when there is no INPUT)
   bool GBuffer = false;
   std::optional<double> IsoValue;
   std::string ColorBy;
@@ -93,7 +94,7 @@ struct Options
   bool NoAnnotations = false;
   int MultiSamples = 0;
   bool Quiet = false;
-  std::vector<std::string> Warnings; // options that do not apply, printed unless --quiet
+  std::vector<std::string> Warnings; // options that do not apply, printed after a success
   bool ScalarBar = false; // --scalar-bar: the colour legend on black-and-white output too
   bool Help = false;
   bool Version = false;

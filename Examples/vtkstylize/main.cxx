@@ -36,6 +36,7 @@
 #include "vtkStylizeLightingPass.h"
 #include "vtkVersion.h"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -116,12 +117,12 @@ int Run(int argc, char* argv[])
     std::cout << HelpText() << std::flush;
     return 0;
   }
-  for (const std::string& warning : opt.Warnings)
-  {
-    WriteError("warning: " + warning);
-  }
   if (opt.Version)
   {
+    for (const std::string& warning : opt.Warnings)
+    {
+      WriteError("warning: " + warning);
+    }
     std::cout << "vtkstylize " << VTKSTYLIZE_VERSION << " (VTK " << vtkVersion::GetVTKVersion()
               << ")\n"
               << std::flush;
@@ -153,6 +154,25 @@ int Run(int argc, char* argv[])
     vtkSmartPointer<vtkDataObject> data = ReadInput(opt.Input, opt.TimeStep);
     CollectParts(data, opt.IsoValue, what, parts);
     info.Title = BaseName(opt.Input);
+  }
+  // Input options that the input gives nothing to apply to: ignored, with a warning.
+  const bool contoured =
+    std::any_of(parts.begin(), parts.end(), [](const Part& p) { return p.Contour.has_value(); });
+  if (opt.IsoValue && !contoured)
+  {
+    opt.Warnings.push_back("--iso applies to 3D image data with point scalars (.vti, .pvti, "
+      "legacy structured points), which the " + std::string(builtIn ? "built-in scene" : "input " + what) +
+      " does not contain (ignored)");
+  }
+  if (opt.TimeStepGiven && builtIn)
+  {
+    opt.Warnings.push_back("--time-step applies to an INPUT file with time steps, not to the "
+      "built-in scene (ignored)");
+  }
+  if (!opt.ColorBy.empty() && opt.NoScalars)
+  {
+    opt.Warnings.push_back("--color-by does nothing with --no-scalars (ignored)");
+    opt.ColorBy.clear();
   }
   FinishParts(parts, what);
   if (opt.ModelDirections && opt.Style == "sketch")
@@ -195,8 +215,17 @@ int Run(int argc, char* argv[])
   ren->SetPass(style->MakePass(lighting, gbuffer, opt));
 
   RenderAndWrite(window, opt);
+  // Warnings and notes only now: a failure is one line.
+  for (const std::string& warning : opt.Warnings)
+  {
+    WriteError("warning: " + warning);
+  }
   if (!opt.Quiet)
   {
+    for (const std::string& note : Notes())
+    {
+      WriteError("note: " + note);
+    }
     std::cout << opt.Output << "\n" << std::flush;
   }
   return 0;

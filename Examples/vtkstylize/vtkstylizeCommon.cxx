@@ -24,6 +24,25 @@ void Fail(const std::string& message)
   throw CliError{ ExitFailure, message };
 }
 
+namespace
+{
+std::vector<std::string>& NoteList()
+{
+  static std::vector<std::string> notes;
+  return notes;
+}
+}
+
+void Note(const std::string& message)
+{
+  NoteList().push_back(message);
+}
+
+const std::vector<std::string>& Notes()
+{
+  return NoteList();
+}
+
 std::string Quote(const std::string& text)
 {
   return "'" + text + "'";

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace vtkstylize
 {
@@ -30,6 +31,13 @@ struct CliError
 
 /** Throws a CliError with ExitFailure. */
 [[noreturn]] void Fail(const std::string& message);
+
+/**
+ * Informational lines ("vtkstylize: note: ..."), kept until the image is written: main() prints
+ * them on stderr after a success (unless --quiet), so that a failure stays one line.
+ */
+void Note(const std::string& message);
+const std::vector<std::string>& Notes();
 
 /** 'text' */
 std::string Quote(const std::string& text);

@@ -589,8 +589,72 @@ vtkDataArray* ContourScalars(vtkImageData* image)
   return nullptr;
 }
 
-vtkSmartPointer<vtkPolyData> ToSurface(
-  vtkDataSet* ds, const std::optional<double>& isoValue, const std::string& what)
+/**
+ * Otsu's threshold of component 0 of the array: the value that splits its values into the two
+ * classes of largest between-class variance, over a 256-bin histogram of [lo, hi] (finite values
+ * only). When several bin boundaries tie, the middle one is taken (two populations with a gap
+ * between them are split in the middle of the gap). Returns false when there is nothing to
+ * split (fewer than two distinct finite values).
+ */
+bool OtsuThreshold(vtkDataArray* array, double lo, double hi, double& threshold)
+{
+  constexpr int bins = 256;
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi))
+  {
+    return false;
+  }
+  std::vector<double> histogram(bins, 0.0);
+  const double scale = bins / (hi - lo);
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    const double v = array->GetComponent(i, 0);
+    if (std::isfinite(v))
+    {
+      const int b = std::min(bins - 1, std::max(0, static_cast<int>((v - lo) * scale)));
+      histogram[b] += 1.0;
+    }
+  }
+  double total = 0.0, totalSum = 0.0;
+  for (int b = 0; b < bins; ++b)
+  {
+    total += histogram[b];
+    totalSum += histogram[b] * (b + 0.5);
+  }
+  // Between-class variance of a split after bin k: w0 w1 (mu0 - mu1)^2, in bin units.
+  double w0 = 0.0, sum0 = 0.0, best = -1.0;
+  int first = -1, last = -1;
+  for (int k = 0; k < bins - 1; ++k)
+  {
+    w0 += histogram[k];
+    sum0 += histogram[k] * (k + 0.5);
+    const double w1 = total - w0;
+    if (w0 <= 0.0 || w1 <= 0.0)
+    {
+      continue;
+    }
+    const double d = sum0 / w0 - (totalSum - sum0) / w1;
+    const double variance = w0 * w1 * d * d;
+    if (variance > best * (1.0 + 1e-12))
+    {
+      best = variance;
+      first = last = k;
+    }
+    else if (variance >= best * (1.0 - 1e-12))
+    {
+      last = k;
+    }
+  }
+  if (first < 0)
+  {
+    return false;
+  }
+  // The boundary after bin k is lo + (k + 1) / scale; the middle of the tied boundaries.
+  threshold = lo + (0.5 * (first + last) + 1.0) / scale;
+  return threshold > lo && threshold < hi;
+}
+
+vtkSmartPointer<vtkPolyData> ToSurface(vtkDataSet* ds, const std::optional<double>& isoValue,
+  const std::string& what, std::optional<double>& contourValue)
 {
   ValidateDataSet(ds, what);
   if (auto* pd = vtkPolyData::SafeDownCast(ds))
@@ -610,7 +674,26 @@ vtkSmartPointer<vtkPolyData> ToSurface(
   {
     double range[2];
     scalars->GetRange(range, 0);
-    const double iso = isoValue ? *isoValue : 0.5 * (range[0] + range[1]);
+    const std::string name = scalars->GetName() ? scalars->GetName() : "scalars";
+    double iso = 0.5 * (range[0] + range[1]);
+    if (isoValue)
+    {
+      iso = *isoValue;
+    }
+    else
+    {
+      // Otsu's threshold separates the two main populations of the values (object and
+      // background); the middle of the range is the fallback (and it is what a constant
+      // array gets, whose contour is empty).
+      const bool otsu = OtsuThreshold(scalars, range[0], range[1], iso);
+      if (!otsu)
+      {
+        iso = 0.5 * (range[0] + range[1]);
+      }
+      Note(what + ": contour of " + Quote(name) + " at " + FormatNumber(iso) + " (" +
+        (otsu ? "Otsu's threshold" : "the middle") + " of its values in [" +
+        FormatNumber(range[0]) + ", " + FormatNumber(range[1]) + "]; choose another with --iso)");
+    }
     vtkNew<vtkContourFilter> contour;
     contour->SetInputData(image);
     contour->SetInputArrayToProcess(
@@ -621,11 +704,12 @@ vtkSmartPointer<vtkPolyData> ToSurface(
     contour->Update();
     CheckVTKErrors(what + ": contouring failed");
     surface = contour->GetOutput();
+    contourValue = iso;
     if (surface->GetNumberOfCells() == 0)
     {
-      Fail(what + ": the contour of " + Quote(scalars->GetName() ? scalars->GetName() : "scalars") +
-        " at " + FormatNumber(iso) + " is empty (the scalar range is [" + FormatNumber(range[0]) +
-        ", " + FormatNumber(range[1]) + "]; see --iso)");
+      Fail(what + ": the contour of " + Quote(name) + " at " + FormatNumber(iso) +
+        " is empty (the scalar range is [" + FormatNumber(range[0]) + ", " +
+        FormatNumber(range[1]) + "]; see --iso)");
     }
   }
   else
@@ -670,7 +754,9 @@ void CollectParts(vtkDataObject* data, const std::optional<double>& isoValue,
         Fail(what + ": block " + Quote(name) + " is a " + leaf->GetClassName() +
           ", which cannot be rendered");
       }
-      parts.push_back({ name, ToSurface(ds, isoValue, what + " (block " + Quote(name) + ")") });
+      Part part{ name, nullptr, std::nullopt };
+      part.Surface = ToSurface(ds, isoValue, what + " (block " + Quote(name) + ")", part.Contour);
+      parts.push_back(part);
     }
     return;
   }
@@ -680,7 +766,9 @@ void CollectParts(vtkDataObject* data, const std::optional<double>& isoValue,
     Fail(what + ": the data is a " + std::string(data->GetClassName()) +
       ", which cannot be rendered");
   }
-  parts.push_back({ std::string(), ToSurface(ds, isoValue, what) });
+  Part part{ std::string(), nullptr, std::nullopt };
+  part.Surface = ToSurface(ds, isoValue, what, part.Contour);
+  parts.push_back(part);
 }
 
 /** Drops empty parts, fails when nothing is left, adds normals where missing. */

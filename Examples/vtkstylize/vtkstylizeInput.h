@@ -27,6 +27,7 @@ struct Part
 {
   std::string Name;
   vtkSmartPointer<vtkPolyData> Surface;
+  std::optional<double> Contour; // image data: the contour value it was drawn at
 };
 
 /** The supported extensions, space-separated (".obj .ply ..."). */
@@ -43,8 +44,9 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep =
 
 /**
  * Appends the surfaces of a dataset or of every leaf of a composite dataset to parts: polydata
- * as is, 3D image data with a point scalar array as its contour at isoValue (default: the middle
- * of the scalar range), anything else as its outer surface. what names the input in messages.
+ * as is, 3D image data with a point scalar array as its contour at isoValue (default: Otsu's
+ * threshold of the scalars, the value that best separates their two main populations, noted
+ * with Note()), anything else as its outer surface. what names the input in messages.
  */
 void CollectParts(vtkDataObject* data, const std::optional<double>& isoValue,
   const std::string& what, std::vector<Part>& parts);

@@ -5,9 +5,13 @@
 #       exit status RC (1 or 2), stderr exactly one line starting with "vtkstylize: " (and not an
 #       internal error), nothing on stdout, OUTPUT absent and no temporary file left beside it.
 #   run_cli.sh render OUTPUT WIDTH HEIGHT BACKGROUND CHECKER STDOUT -- COMMAND...
-#       exit status 0, nothing on stderr, stdout is "OUTPUT" (STDOUT=path) or empty
-#       (STDOUT=quiet), no temporary file left, and CHECKER OUTPUT WIDTH HEIGHT BACKGROUND passes
-#       (a PNG of that size that is not just the background).
+#       exit status 0, stdout is "OUTPUT" (STDOUT=path) or empty (STDOUT=quiet), no temporary
+#       file left, and CHECKER OUTPUT WIDTH HEIGHT BACKGROUND passes (a PNG of that size that is
+#       not just the background). stderr: nothing but "vtkstylize: note: " lines (the values the
+#       program chose, e.g. a contour value), and nothing at all with STDOUT=quiet.
+#   run_cli.sh warn OUTPUT TEXT -- COMMAND...
+#       exit status 0, OUTPUT written, stderr has a line "vtkstylize: warning: TEXT..." and every
+#       stderr line is a warning or a note.
 #   run_cli.sh help "WORD..." -- COMMAND...
 #       exit status 0, nothing on stderr, every WORD appears in stdout.
 #   run_cli.sh version -- COMMAND...
@@ -42,6 +46,8 @@ case "$mode" in
     expected_rc=$1; output=$2; shift 2 ;;
   render)
     output=$1; width=$2; height=$3; background=$4; checker=$5; stdout_mode=$6; shift 6 ;;
+  warn)
+    output=$1; text=$2; shift 2 ;;
   help)
     words=$1; shift ;;
   version) ;;
@@ -72,10 +78,11 @@ case "$mode" in
     ;;
   render)
     [ "$rc" -eq 0 ] || fail "expected exit status 0"
-    [ -s "$tmp.err" ] && fail "stderr is not empty"
     if [ "$stdout_mode" = quiet ]; then
+      [ -s "$tmp.err" ] && fail "stderr is not empty with --quiet"
       [ -s "$tmp.out" ] && fail "stdout is not empty with --quiet"
     else
+      grep -v '^vtkstylize: note: ' "$tmp.err" | grep -q . && fail "stderr has more than notes"
       [ "$(cat "$tmp.out")" = "$output" ] || fail "stdout is not the output path"
       [ "$(wc -l <"$tmp.out")" -eq 1 ] || fail "stdout is not one line"
     fi
@@ -83,6 +90,14 @@ case "$mode" in
     check_no_temporary "$output"
     check=$("$checker" "$output" "$width" "$height" "$background") || fail "image check: $check"
     echo "$check"
+    ;;
+  warn)
+    [ "$rc" -eq 0 ] || fail "expected exit status 0"
+    [ -s "$output" ] || fail "no output file $output"
+    grep -q -F -e "vtkstylize: warning: $text" "$tmp.err" || fail "no warning '$text'"
+    grep -v -e '^vtkstylize: warning: ' -e '^vtkstylize: note: ' "$tmp.err" | grep -q . &&
+      fail "stderr has more than warnings and notes"
+    cat "$tmp.err"
     ;;
   help)
     [ "$rc" -eq 0 ] || fail "expected exit status 0"

@@ -207,6 +207,38 @@ int main(int argc, char* argv[])
     Write(w.Get(), "constant.vti");
   }
   {
+    // A ball of density 100 in a background of 0 (a smooth step of one voxel), with six hot
+    // voxels of 1000 inside it: the middle of the range (about 500) contours the hot voxels
+    // only, six small pieces; Otsu's threshold (between 0 and 100) gives the ball, one closed
+    // surface.
+    vtkNew<vtkImageData> ball;
+    ball->SetDimensions(25, 25, 25);
+    ball->SetOrigin(-12, -12, -12);
+    vtkNew<vtkFloatArray> density;
+    density->SetName("Density");
+    for (int k = -12; k <= 12; ++k)
+    {
+      for (int j = -12; j <= 12; ++j)
+      {
+        for (int i = -12; i <= 12; ++i)
+        {
+          const double r = std::sqrt(double(i * i + j * j + k * k));
+          double v = 100.0 / (1.0 + std::exp(r - 8.0));
+          if ((std::abs(i) == 4 && j == 0 && k == 0) || (std::abs(j) == 4 && i == 0 && k == 0) ||
+            (std::abs(k) == 4 && i == 0 && j == 0))
+          {
+            v = 1000.0;
+          }
+          density->InsertNextValue(static_cast<float>(v));
+        }
+      }
+    }
+    ball->GetPointData()->SetScalars(density);
+    vtkNew<vtkXMLImageDataWriter> w;
+    w->SetInputData(ball);
+    Write(w.Get(), "otsu.vti");
+  }
+  {
     // Structured grid: a bent sheet of 6 x 5 x 2 points.
     vtkNew<vtkStructuredGrid> grid;
     grid->SetDimensions(6, 5, 2);
