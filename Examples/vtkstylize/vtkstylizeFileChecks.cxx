@@ -289,6 +289,12 @@ bool IsFaceIndexList(const PLYElement& e, const PLYProperty& p)
   return e.Name == "face" && !p.CountType.empty() &&
     (p.Name == "vertex_indices" || p.Name == "vertex_index");
 }
+
+/** The index list of triangle strips: vertex indices, -1 between two strips. */
+bool IsStripIndexList(const PLYElement& e, const PLYProperty& p)
+{
+  return e.Name == "tristrips" && !p.CountType.empty() && p.Name == "vertex_indices";
+}
 } // namespace
 
 std::string CheckPLYFile(const std::string& path)
@@ -450,6 +456,11 @@ std::string CheckPLYFile(const std::string& path)
               return where + ": face references vertex " + std::to_string(index) + " but there are " +
                 std::to_string(vertices) + " vertices";
             }
+            if (IsStripIndexList(e, p) && (index < -1 || index >= vertices))
+            {
+              return where + ": a triangle strip references vertex " + std::to_string(index) +
+                " but there are " + std::to_string(vertices) + " vertices";
+            }
           }
         }
       }
@@ -505,7 +516,8 @@ std::string CheckPLYFile(const std::string& path)
             " in element '" + e.Name + "'";
         }
         const auto n = static_cast<long long>(count);
-        if (!IsFaceIndexList(e, p))
+        const bool strip = IsStripIndexList(e, p);
+        if (!IsFaceIndexList(e, p) && !strip)
         {
           if (!in.Skip(n * PLYTypeSize(p.Type)))
           {
@@ -520,9 +532,9 @@ std::string CheckPLYFile(const std::string& path)
           {
             return truncated;
           }
-          if (!(index >= 0 && index < static_cast<double>(vertices)))
+          if (!((index >= 0 || (strip && index == -1)) && index < static_cast<double>(vertices)))
           {
-            return "a PLY face references vertex " + std::to_string(static_cast<long long>(index)) +
+            return std::string(strip ? "a PLY triangle strip" : "a PLY face") + " references vertex " + std::to_string(static_cast<long long>(index)) +
               " but there are " + std::to_string(vertices) + " vertices";
           }
         }

@@ -506,6 +506,24 @@ int main(int argc, char* argv[])
     << "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
        "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
        "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0.2\n0 2 0\n1 2 0\n7 0 1 2 3 4 5 -1\n";
+  // The same as binary (little endian) with two strips in one list, and ASCII files whose
+  // strips reference a vertex that does not exist, and -2.
+  {
+    std::string bin = "ply\nformat binary_little_endian 1.0\nelement vertex 6\n"
+                      "property float x\nproperty float y\nproperty float z\n"
+                      "element tristrips 1\nproperty list int int vertex_indices\nend_header\n";
+    const float xyz[18] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0.2f, 0, 2, 0, 1, 2, 0 };
+    const int list[10] = { 9, 0, 1, 2, 3, -1, 2, 3, 4, 5 };
+    bin.append(reinterpret_cast<const char*>(xyz), sizeof(xyz));
+    bin.append(reinterpret_cast<const char*>(list), sizeof(list));
+    WriteBytes("strips_binary.ply", bin.data(), bin.size());
+  }
+  const std::string stripsHead = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                                 "property float y\nproperty float z\nelement tristrips 1\n"
+                                 "property list int int vertex_indices\nend_header\n"
+                                 "0 0 0\n1 0 0\n0 1 0\n1 1 0\n";
+  WriteText("badstrips.ply", stripsHead + "5 0 1 2 3 9\n");
+  WriteText("badstrips_negative.ply", stripsHead + "5 0 1 2 -2 3\n");
   std::ofstream(P("strips.vtk"))
     << "# vtk DataFile Version 3.0\nstrips and polygons\nASCII\nDATASET POLYDATA\n"
        "POINTS 8 float\n0 0 0\n1 0 0\n0 1 0\n1 1 0.2\n0 2 0\n1 2 0\n2 0 0\n2 1 0.3\n"
