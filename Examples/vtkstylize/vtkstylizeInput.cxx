@@ -171,8 +171,11 @@ bool IsSupportedInput(const std::string& path)
 
 namespace
 {
-/** Checks that INPUT is a readable, non-empty regular file (before any reader sees it). */
-void CheckInputFile(const std::string& path)
+/**
+ * Checks that INPUT is a readable regular file, not empty unless allowEmpty (an OpenFOAM .foam
+ * file only names its case directory and is usually empty), before any reader sees it.
+ */
+void CheckInputFile(const std::string& path, bool allowEmpty = false)
 {
   struct stat st;
   if (::stat(path.c_str(), &st) != 0)
@@ -200,7 +203,7 @@ void CheckInputFile(const std::string& path)
   {
     Fail("cannot read " + Quote(path) + ": " + std::strerror(readErrno));
   }
-  if (n == 0 || st.st_size == 0)
+  if ((n == 0 || st.st_size == 0) && !allowEmpty)
   {
     Fail("cannot read " + Quote(path) + ": the file is empty");
   }
@@ -448,7 +451,7 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
     // Checked already while parsing; kept for safety.
     UsageError("unsupported file type " + Quote(path) + " (supported: " + SupportedExtensions() + ")");
   }
-  CheckInputFile(path);
+  CheckInputFile(path, it->first == ".foam");
   // Structural checks for the formats whose readers crash or read garbage on broken files.
   using Check = std::string (*)(const std::string&);
   static const std::map<std::string, Check> checks = { { ".ply", vtkstylize::CheckPLYFile },

@@ -500,6 +500,97 @@ int main(int argc, char* argv[])
     w->SetInputData(q);
     Write(w.Get(), "hex20.vtk");
   }
+  // EnSight Gold (ASCII): two hexahedra with a nodal scalar; a case file whose geometry file
+  // is missing, and one whose geometry file is cut short.
+  {
+    const char* geoHead = "EnSight Gold geometry\nvtkstylize test\nnode id off\nelement id off\n"
+                          "part\n         1\ntwo hexahedra\ncoordinates\n        12\n";
+    std::string xyz[3];
+    for (int k = 0; k < 2; ++k)
+    {
+      for (int j = 0; j < 2; ++j)
+      {
+        for (int i = 0; i < 3; ++i)
+        {
+          xyz[0] += std::to_string(i) + ".0\n";
+          xyz[1] += std::to_string(j) + ".0\n";
+          xyz[2] += std::to_string(k) + ".0\n";
+        }
+      }
+    }
+    // Points i + 3 j + 6 k, numbered from 1; hexa8: bottom face then top face.
+    const std::string cells = "hexa8\n         2\n1 2 5 4 7 8 11 10\n2 3 6 5 8 9 12 11\n";
+    WriteText("ensight.geo", geoHead + xyz[0] + xyz[1] + xyz[2] + cells);
+    std::string values = "Temperature\npart\n         1\ncoordinates\n";
+    for (int n = 0; n < 12; ++n)
+    {
+      values += std::to_string(300 + 10 * n) + ".0\n";
+    }
+    WriteText("ensight.Temperature", values);
+    const std::string caseText = "FORMAT\ntype: ensight gold\n\nGEOMETRY\nmodel: ensight.geo\n\n"
+                                 "VARIABLE\nscalar per node: Temperature ensight.Temperature\n";
+    WriteText("ensight.case", caseText);
+    WriteText("ensight_missing.case",
+      "FORMAT\ntype: ensight gold\n\nGEOMETRY\nmodel: does_not_exist.geo\n");
+    WriteText("ensight_truncated.geo", geoHead + xyz[0] + "0.0\n");
+    WriteText("ensight_truncated.case",
+      "FORMAT\ntype: ensight gold\n\nGEOMETRY\nmodel: ensight_truncated.geo\n");
+  }
+  // OpenFOAM: a case directory of two hexahedral cells (one internal face, ten boundary faces in
+  // one patch) with a cell field T at time 1; the .foam file is empty, as OpenFOAM's are. A
+  // second case whose polyMesh has no faces file.
+  {
+    const auto header = [](const char* cls, const char* object) {
+      return std::string("FoamFile\n{\n    version 2.0;\n    format ascii;\n    class ") + cls +
+        ";\n    object " + object + ";\n}\n";
+    };
+    for (const std::string& dir : { std::string("foam"), std::string("foam_broken") })
+    {
+      for (const char* sub : { "", "/system", "/constant", "/constant/polyMesh", "/1" })
+      {
+        ::mkdir(P(dir + sub).c_str(), 0777);
+      }
+      WriteText(dir + "/case.foam", "");
+      WriteText(dir + "/system/controlDict",
+        header("dictionary", "controlDict") +
+          "application icoFoam;\nstartFrom startTime;\nstartTime 0;\nstopAt endTime;\n"
+          "endTime 1;\ndeltaT 1;\nwriteControl timeStep;\nwriteInterval 1;\n");
+      std::string points = header("vectorField", "points") + "12\n(\n";
+      for (int k = 0; k < 2; ++k)
+      {
+        for (int j = 0; j < 2; ++j)
+        {
+          for (int i = 0; i < 3; ++i)
+          {
+            points += "(" + std::to_string(i) + " " + std::to_string(j) + " " + std::to_string(k) +
+              ")\n";
+          }
+        }
+      }
+      WriteText(dir + "/constant/polyMesh/points", points + ")\n");
+      if (dir == "foam")
+      {
+        // Internal face first (owner 0, neighbour 1, normal +x), then each cell's boundary
+        // faces, normals pointing out of their owner.
+        WriteText(dir + "/constant/polyMesh/faces",
+          header("faceList", "faces") +
+            "11\n(\n4(1 4 10 7)\n4(0 6 9 3)\n4(0 3 4 1)\n4(6 7 10 9)\n4(0 1 7 6)\n4(3 9 10 4)\n"
+            "4(2 5 11 8)\n4(1 4 5 2)\n4(7 8 11 10)\n4(1 2 8 7)\n4(4 10 11 5)\n)\n");
+      }
+      WriteText(dir + "/constant/polyMesh/owner",
+        header("labelList", "owner") + "11\n(\n0\n0\n0\n0\n0\n0\n1\n1\n1\n1\n1\n)\n");
+      WriteText(dir + "/constant/polyMesh/neighbour",
+        header("labelList", "neighbour") + "1\n(\n1\n)\n");
+      WriteText(dir + "/constant/polyMesh/boundary",
+        header("polyBoundaryMesh", "boundary") +
+          "1\n(\n    walls\n    {\n        type wall;\n        nFaces 10;\n        startFace 1;\n"
+          "    }\n)\n");
+      WriteText(dir + "/1/T",
+        header("volScalarField", "T") +
+          "dimensions [0 0 0 1 0 0 0];\ninternalField nonuniform List<scalar> 2\n(\n300\n400\n)\n;\n"
+          "boundaryField\n{\n    walls\n    {\n        type zeroGradient;\n    }\n}\n");
+    }
+  }
   // PLY stored as triangle strips (element "tristrips", -1 separates strips), and a legacy file
   // with strips and polygons.
   std::ofstream(P("strips.ply"))
