@@ -273,9 +273,18 @@ vtkScalarsToColors* FindLookupTable(const vtkRenderState* s)
           mapper->GetScalarMode(), mapper->GetArrayAccessMode(), mapper->GetArrayId(),
           mapper->GetArrayName(), cellFlag))
       : nullptr;
-    if (scalars && scalars->GetNumberOfComponents() == 1)
+    if (!scalars)
     {
-      return mapper->GetLookupTable();
+      continue;
+    }
+    // A vector array is mapped through the table by its magnitude or one component (as VTK's
+    // scalar colouring does, vtkScalarsToColors::SetVectorModeToMagnitude): the table's range
+    // and colours are then the colormap too. Vectors shown as RGB colours have no colormap.
+    vtkScalarsToColors* lut = mapper->GetLookupTable();
+    if (scalars->GetNumberOfComponents() == 1 ||
+      (lut && lut->GetVectorMode() != vtkScalarsToColors::RGBCOLORS))
+    {
+      return lut;
     }
   }
   return nullptr;

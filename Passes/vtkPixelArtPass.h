@@ -258,7 +258,8 @@ public:
   ///@{
   /**
    * The colormap for the COLORMAP palette. nullptr (default): the lookup table of the first
-   * visible actor that colours by scalars. Without one, COLORMAP falls back to LEVELS.
+   * visible actor that colours by scalars (one component, or a vector mapped by its magnitude or
+   * a component). Without one, COLORMAP falls back to LEVELS.
    */
   virtual void SetLookupTable(vtkScalarsToColors* lut);
   vtkGetObjectMacro(LookupTable, vtkScalarsToColors);

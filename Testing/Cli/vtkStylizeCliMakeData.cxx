@@ -172,6 +172,24 @@ int main(int argc, char* argv[])
     Write(w.Get(), "SPHERE_UPPER.VTP");
   }
   {
+    // A 3-component point array whose magnitude varies: "Velocity" = (2 x, y, z) on the sphere.
+    vtkNew<vtkPolyData> flow;
+    flow->DeepCopy(sphere);
+    vtkNew<vtkFloatArray> velocity;
+    velocity->SetName("Velocity");
+    velocity->SetNumberOfComponents(3);
+    for (vtkIdType i = 0; i < flow->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      flow->GetPoint(i, p);
+      velocity->InsertNextTuple3(2.0 * p[0], p[1], p[2]);
+    }
+    flow->GetPointData()->AddArray(velocity);
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetInputData(flow);
+    Write(w.Get(), "velocity.vtp");
+  }
+  {
     // Volumetric unstructured grid: hexahedra of a small image, with point scalars.
     vtkNew<vtkAppendFilter> toGrid;
     toGrid->SetInputData(Wavelet(3));
