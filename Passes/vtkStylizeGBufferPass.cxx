@@ -66,6 +66,20 @@ public:
     {
       glClearBufferfv(GL_COLOR, 0, zero);
     }
+    else if (!ren->GetGradientBackground() && !ren->GetTexturedBackground())
+    {
+      // A flat background as the 8-bit window shows it: the colour target is half-float, and a
+      // background such as 0.1 or 0.5 (255 c = k + 1/2) would otherwise come out one level
+      // darker than in a plain render, under the styles and the overlays drawn on them.
+      double c[3];
+      ren->GetBackground(c);
+      GLfloat snapped[4] = { 0.f, 0.f, 0.f, static_cast<GLfloat>(ren->GetBackgroundAlpha()) };
+      for (int i = 0; i < 3; ++i)
+      {
+        snapped[i] = static_cast<GLfloat>(std::round(std::min(1.0, std::max(0.0, c[i])) * 255.0) / 255.0);
+      }
+      glClearBufferfv(GL_COLOR, 0, snapped);
+    }
     if (!erased)
     {
       const GLfloat one = 1.f;
