@@ -40,7 +40,10 @@ namespace vtkstylize
 {
 namespace
 {
-constexpr double SolidColor[3] = { 0.80, 0.80, 0.78 };
+// A neutral gray: the pixel-art levels palette dithers each channel with the same threshold, so a
+// neutral colour stays neutral, while a warm gray (0.80, 0.80, 0.78 before) got yellow specks
+// wherever the threshold fell between its blue and its red and green.
+constexpr double SolidColor[3] = { 0.80, 0.80, 0.80 };
 
 /** Diverging cool-to-warm colour map (Moreland) over [lo, hi]. */
 vtkSmartPointer<vtkColorTransferFunction> CoolWarm(double lo, double hi)
