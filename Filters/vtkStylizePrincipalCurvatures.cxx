@@ -14,8 +14,10 @@
 #include "vtkPolyData.h"
 #include "vtkTriangleFilter.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkStylizePrincipalCurvatures);
@@ -81,6 +83,10 @@ void vtkStylizePrincipalCurvatures::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "UseInputNormals: " << this->UseInputNormals << "\n";
+  os << indent << "SmoothingRadius: " << this->SmoothingRadius << "\n";
+  os << indent << "MaximumNeighbors: " << this->MaximumNeighbors << "\n";
+  os << indent << "PlanarTolerance: " << this->PlanarTolerance << "\n";
+  os << indent << "UmbilicTolerance: " << this->UmbilicTolerance << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -301,6 +307,42 @@ int vtkStylizePrincipalCurvatures::RequestData(
     }
   }
 
+  // The tensors per unit area, in each point's frame.
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    const bool ok = weight[i] > 0.0 && framed[i] &&
+      std::all_of(tensor[i].begin(), tensor[i].end(),
+        [&](double v) { return std::isfinite(v / weight[i]); });
+    for (double& v : tensor[i])
+    {
+      v = ok ? v / weight[i] : 0.0;
+    }
+    weight[i] = ok ? weight[i] : 0.0;
+  }
+
+  // The scale: the neighbourhood radius, or the mean edge length.
+  double edgeSum = 0.0;
+  for (const auto& f : faces)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edgeSum += Norm(Sub(p[f[(k + 1) % 3]], p[f[k]]));
+    }
+  }
+  const double meanEdge = faces.empty() ? 0.0 : edgeSum / (3.0 * faces.size());
+  double bounds[6];
+  input->GetBounds(bounds);
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  const double smoothing =
+    np > 0 && std::isfinite(diagonal) ? this->SmoothingRadius * diagonal : 0.0;
+  const double scaleLength = smoothing > 0.0 ? smoothing : meanEdge;
+  if (smoothing > 0.0)
+  {
+    tensor = this->SmoothTensors(p, normal, frameU, frameV, faces, tensor, weight, smoothing);
+  }
+
   auto makeArray = [np](const char* name, int comps) {
     vtkNew<vtkDoubleArray> a;
     a->SetName(name);
@@ -314,6 +356,8 @@ int vtkStylizePrincipalCurvatures::RequestData(
   auto dMax = makeArray("PrincipalDirectionMax", 3);
   auto dMin = makeArray("PrincipalDirectionMin", 3);
   auto bisector = makeArray("PrincipalDirectionBisector", 3);
+  auto dMinAbs = makeArray("PrincipalDirectionMinAbs", 3);
+  auto dMaxAbs = makeArray("PrincipalDirectionMaxAbs", 3);
   auto mean = makeArray("MeanCurvature", 1);
   auto gauss = makeArray("GaussianCurvature", 1);
   for (vtkIdType i = 0; i < np; ++i)
@@ -322,9 +366,9 @@ int vtkStylizePrincipalCurvatures::RequestData(
     {
       continue;
     }
-    const double A = tensor[i][0] / weight[i];
-    const double B = tensor[i][1] / weight[i];
-    const double C = tensor[i][2] / weight[i];
+    const double A = tensor[i][0];
+    const double B = tensor[i][1];
+    const double C = tensor[i][2];
     if (!std::isfinite(A) || !std::isfinite(B) || !std::isfinite(C))
     {
       continue;
@@ -344,12 +388,112 @@ int vtkStylizePrincipalCurvatures::RequestData(
     bisector->SetTuple(i, bis.data());
     mean->SetValue(i, half);
     gauss->SetValue(i, k1 * k2);
+    const double larger = std::max(std::abs(k1), std::abs(k2));
+    const bool planar = !(larger * scaleLength > this->PlanarTolerance);
+    const bool umbilic = !(k1 - k2 > this->UmbilicTolerance * (std::abs(k1) + std::abs(k2)));
+    if (!planar && !umbilic)
+    {
+      const bool maxIsLarger = std::abs(k1) >= std::abs(k2);
+      dMinAbs->SetTuple(i, (maxIsLarger ? d2 : d1).data());
+      dMaxAbs->SetTuple(i, (maxIsLarger ? d1 : d2).data());
+    }
   }
   vtkPointData* pd = output->GetPointData();
   for (vtkDoubleArray* a : { kMax.Get(), kMin.Get(), dMax.Get(), dMin.Get(), bisector.Get(),
-         mean.Get(), gauss.Get() })
+         dMinAbs.Get(), dMaxAbs.Get(), mean.Get(), gauss.Get() })
   {
     pd->AddArray(a);
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::array<double, 3>> vtkStylizePrincipalCurvatures::SmoothTensors(
+  const std::vector<std::array<double, 3>>& p, const std::vector<std::array<double, 3>>& normal,
+  const std::vector<std::array<double, 3>>& frameU,
+  const std::vector<std::array<double, 3>>& frameV,
+  const std::vector<std::array<vtkIdType, 3>>& faces,
+  const std::vector<std::array<double, 3>>& tensor, const std::vector<double>& area,
+  double radius) const
+{
+  const size_t np = p.size();
+  // Edge adjacency (compressed rows).
+  std::vector<std::pair<vtkIdType, vtkIdType>> edges;
+  edges.reserve(faces.size() * 6);
+  for (const auto& f : faces)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edges.emplace_back(f[k], f[(k + 1) % 3]);
+      edges.emplace_back(f[(k + 1) % 3], f[k]);
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<size_t> start(np + 1, 0);
+  for (const auto& e : edges)
+  {
+    ++start[static_cast<size_t>(e.first) + 1];
+  }
+  for (size_t i = 0; i < np; ++i)
+  {
+    start[i + 1] += start[i];
+  }
+
+  const double sigma2 = 0.25 * radius * radius; // a Gaussian of sigma radius / 2
+  const double radius2 = radius * radius;
+  const size_t most = static_cast<size_t>(this->MaximumNeighbors);
+  std::vector<std::array<double, 3>> out(tensor);
+  std::vector<size_t> stamp(np, np);
+  std::vector<size_t> queue;
+  for (size_t i = 0; i < np; ++i)
+  {
+    if (!(area[i] > 0.0))
+    {
+      continue;
+    }
+    double sum[3] = { 0, 0, 0 };
+    double wsum = 0.0;
+    queue.assign(1, i);
+    stamp[i] = i;
+    // Breadth first through the edges, within the radius, up to MaximumNeighbors points.
+    for (size_t head = 0; head < queue.size() && head < most; ++head)
+    {
+      const size_t j = queue[head];
+      const Vec dj = Sub(p[j], p[i]);
+      if (area[j] > 0.0 && Dot(normal[j], normal[i]) > -0.999999)
+      {
+        // j's frame turned onto i's tangent plane, then j's tensor in i's frame.
+        const Vec u = Rotate(normal[j], normal[i], frameU[j]);
+        const Vec v = Rotate(normal[j], normal[i], frameV[j]);
+        const double a = Dot(frameU[i], u), b = Dot(frameU[i], v);
+        const double c = Dot(frameV[i], u), d = Dot(frameV[i], v);
+        const double A = tensor[j][0], B = tensor[j][1], C = tensor[j][2];
+        const double w = area[j] * std::exp(-0.5 * Dot(dj, dj) / sigma2);
+        sum[0] += w * (A * a * a + 2.0 * B * a * b + C * b * b);
+        sum[1] += w * (A * a * c + B * (a * d + b * c) + C * b * d);
+        sum[2] += w * (A * c * c + 2.0 * B * c * d + C * d * d);
+        wsum += w;
+      }
+      for (size_t e = start[j]; e < start[j + 1]; ++e)
+      {
+        const size_t k = static_cast<size_t>(edges[e].second);
+        if (stamp[k] == i)
+        {
+          continue;
+        }
+        stamp[k] = i;
+        const Vec dk = Sub(p[k], p[i]);
+        if (Dot(dk, dk) <= radius2)
+        {
+          queue.push_back(k);
+        }
+      }
+    }
+    if (wsum > 0.0 && std::isfinite(sum[0] + sum[1] + sum[2]))
+    {
+      out[i] = { sum[0] / wsum, sum[1] / wsum, sum[2] / wsum };
+    }
+  }
+  return out;
 }

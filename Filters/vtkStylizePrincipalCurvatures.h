@@ -16,7 +16,19 @@
  * - "PrincipalDirectionMax", "PrincipalDirectionMin": unit tangent vectors of k1 and k2. A
  *   direction is a line, so d and -d are the same.
  * - "PrincipalDirectionBisector": the unit bisector (d1 + d2) / sqrt(2) of the two directions.
+ * - "PrincipalDirectionMinAbs", "PrincipalDirectionMaxAbs": unit tangent vectors of the
+ *   principal curvature of the smaller and of the larger **absolute value**: along and around a
+ *   cylinder, whether it is convex or concave (the signed k2 of a concave cylinder runs around
+ *   it). This is the convention of vtkSketchPass' MINIMUM and MAXIMUM, in screen and in model
+ *   mode. Zero vectors where there is no principal direction: planar points (the larger |k|
+ *   times the neighbourhood's radius below PlanarTolerance) and umbilic points (|k1 - k2|
+ *   below UmbilicTolerance times |k1| + |k2|); the sketch pass estimates those in screen space.
  * - "MeanCurvature" (k1 + k2) / 2 and "GaussianCurvature" k1 k2.
+ *
+ * Scale: with a SmoothingRadius above 0, each point's tensor is the average of the tensors of
+ * the points around it (reached through the mesh's edges, within the radius), transported into
+ * its tangent frame and weighted by their areas and a Gaussian of the distance: the curvature
+ * at the shape's scale rather than at the scan noise's.
  *
  * Point normals are taken from the input's point normals when it has them (and
  * UseInputNormals is on), otherwise computed (face normals weighted by the corner angle). Only
@@ -36,6 +48,9 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkStylizeFiltersModule.h" // for export macro
 
+#include <array>  // for std::array
+#include <vector> // for std::vector
+
 class VTKSTYLIZEFILTERS_EXPORT vtkStylizePrincipalCurvatures : public vtkPolyDataAlgorithm
 {
 public:
@@ -50,13 +65,65 @@ public:
   vtkBooleanMacro(UseInputNormals, bool);
   ///@}
 
+  ///@{
+  /**
+   * Radius of the neighbourhood whose curvature tensors are averaged at each point, as a
+   * fraction of the input's bounding-box diagonal (dimensionless); 0 keeps each point's own
+   * estimate (exact for the quadratic part of the surface). At most MaximumNeighbors points
+   * are averaged. Range [0, 1], default 0.
+   */
+  vtkSetClampMacro(SmoothingRadius, double, 0.0, 1.0);
+  vtkGetMacro(SmoothingRadius, double);
+  ///@}
+
+  ///@{
+  /** Most points averaged into one point's tensor (SmoothingRadius). Range [1, 100000], default 2000. */
+  vtkSetClampMacro(MaximumNeighbors, int, 1, 100000);
+  vtkGetMacro(MaximumNeighbors, int);
+  ///@}
+
+  ///@{
+  /**
+   * A point whose larger |curvature| times the neighbourhood's size (the smoothing radius, or
+   * the mean edge length when it is 0; radians of normal turn) is below this has no principal
+   * direction in the MinAbs/MaxAbs arrays. Range [0, 1], default 1e-3.
+   */
+  vtkSetClampMacro(PlanarTolerance, double, 0.0, 1.0);
+  vtkGetMacro(PlanarTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * A point whose |k1 - k2| is at most this times |k1| + |k2| is umbilic: no principal
+   * direction in the MinAbs/MaxAbs arrays. Range [0, 1], default 0.05.
+   */
+  vtkSetClampMacro(UmbilicTolerance, double, 0.0, 1.0);
+  vtkGetMacro(UmbilicTolerance, double);
+  ///@}
+
 protected:
   vtkStylizePrincipalCurvatures() = default;
   ~vtkStylizePrincipalCurvatures() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  /**
+   * The tensors (per unit area, in each point's frame) averaged over each point's
+   * neighbourhood of the given radius (world units), reached through the edges of the faces.
+   */
+  std::vector<std::array<double, 3>> SmoothTensors(const std::vector<std::array<double, 3>>& p,
+    const std::vector<std::array<double, 3>>& normal,
+    const std::vector<std::array<double, 3>>& frameU,
+    const std::vector<std::array<double, 3>>& frameV,
+    const std::vector<std::array<vtkIdType, 3>>& faces,
+    const std::vector<std::array<double, 3>>& tensor, const std::vector<double>& area,
+    double radius) const;
+
   bool UseInputNormals = true;
+  double SmoothingRadius = 0.0;
+  int MaximumNeighbors = 2000;
+  double PlanarTolerance = 1.0e-2;
+  double UmbilicTolerance = 0.05;
 
 private:
   vtkStylizePrincipalCurvatures(const vtkStylizePrincipalCurvatures&) = delete;

@@ -91,6 +91,7 @@ struct vtkSketchPass::Plan
   int MaxStride;
   double SpacingWorld;
   double FillRadius;  // pixels; < 0: no fill
+  double SmoothingRadius; // pixels; < 1: none
   double Fallback;    // radians
   int BlurSize[2];
   double BlurRadius;  // pixels
@@ -109,7 +110,7 @@ vtkSketchPass::vtkSketchPass()
 {
   // The estimate differentiates normals: half floats (3 digits) would dominate its error.
   this->GetGBufferPass()->SetPrecision(vtkStylizeGBufferPass::FULL);
-  this->SetDirectionArrayName("PrincipalDirectionMin");
+  this->SetDirectionArrayName("PrincipalDirectionMinAbs");
 }
 
 //------------------------------------------------------------------------------
@@ -316,6 +317,11 @@ void vtkSketchPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxStride: " << this->MaxStride << " pt\n";
   os << indent << "PlanarTolerance: " << this->PlanarTolerance << "\n";
   os << indent << "UmbilicTolerance: " << this->UmbilicTolerance << "\n";
+  os << indent << "ObjectScale: " << this->ObjectScale << "\n";
+  os << indent << "SceneBounds: " << this->SceneBounds[0] << " " << this->SceneBounds[1] << " "
+     << this->SceneBounds[2] << " " << this->SceneBounds[3] << " " << this->SceneBounds[4] << " "
+     << this->SceneBounds[5] << "\n";
+  os << indent << "SmoothingRadius: " << this->SmoothingRadius << " pt\n";
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
   os << indent << "FillRadius: " << this->FillRadius << " pt\n";
   os << indent << "FallbackAngle: " << this->FallbackAngle << " deg\n";
@@ -487,8 +493,40 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   p.MaxStride = std::max(1, static_cast<int>(std::lround(maxStride * p.PointSize)));
   p.SpacingWorld = finite(this->NeighborSpacing, self->GetNeighborSpacingMinValue()) *
     p.PointSize * p.FocalPixel;
+  // The object's scale: the spacing is at least ObjectScale times the scene's diagonal, and the
+  // smoothing radius grows by the same factor (at most its range's maximum).
+  double scale = 1.0;
+  const double objectScale = finite(this->ObjectScale, self->GetObjectScaleMinValue());
+  if (objectScale > 0.0 && p.SpacingWorld > 0.0)
+  {
+    auto valid = [](const double* b) {
+      return std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }) && b[0] <= b[1] &&
+        b[2] <= b[3] && b[4] <= b[5];
+    };
+    double b[6];
+    std::copy(this->SceneBounds, this->SceneBounds + 6, b);
+    if (!valid(b))
+    {
+      frame.Renderer->ComputeVisiblePropBounds(b);
+    }
+    if (valid(b))
+    {
+      const double diagonal =
+        std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+          (b[5] - b[4]) * (b[5] - b[4]));
+      const double object = objectScale * diagonal;
+      if (std::isfinite(object) && object > p.SpacingWorld)
+      {
+        scale = object / p.SpacingWorld;
+        p.SpacingWorld = object;
+      }
+    }
+  }
   const double fill = finite(this->FillRadius, self->GetFillRadiusMinValue());
   p.FillRadius = fill > 0.0 ? std::max(1.0, fill * p.PointSize) : -1.0;
+  p.SmoothingRadius = std::min(
+    finite(this->SmoothingRadius, self->GetSmoothingRadiusMinValue()) * scale,
+    self->GetSmoothingRadiusMaxValue()) * p.PointSize;
   p.Fallback =
     vtkMath::RadiansFromDegrees(finite(this->FallbackAngle, self->GetFallbackAngleMinValue()));
   const int stride = this->BlurStride;
@@ -567,8 +605,15 @@ void vtkSketchPass::RenderEstimateStage(const Frame& frame, const Plan& p)
 //------------------------------------------------------------------------------
 int vtkSketchPass::RenderSmoothStages(const Frame& frame, const Plan& p)
 {
-  // Smoothing (all pixels, 3x3), then filling (undefined pixels, distances 1, 2, 4, ...).
+  // Smoothing (all pixels, 3x3 at tap distances 1, 2, 4, ... points up to the smoothing radius,
+  // then at distance 1 pixel), then filling (undefined pixels, distances 1, 2, 4, ...).
   std::vector<std::pair<int, int>> iterations; // radius, fill only
+  // The taps are 1, 2, 4, ... points apart (at least a pixel), so that a magnified image is
+  // smoothed over the same part of the picture.
+  for (double pt = 1.0; pt <= p.SmoothingRadius / p.PointSize; pt *= 2.0)
+  {
+    iterations.emplace_back(std::max(1, static_cast<int>(std::lround(pt * p.PointSize))), 0);
+  }
   for (int i = 0; i < this->SmoothingIterations; ++i)
   {
     iterations.emplace_back(1, 0);

@@ -17,12 +17,14 @@
  *    focal height of the larger |curvature| lie along the other principal direction and are
  *    fitted by total least squares through the origin (doubled angles), each weighted by how
  *    far it is from the umbilic 0/0 case. The neighbour stride grows near the camera so that
- *    neighbours stay at least `NeighborSpacing` apart in world units (up to `MaxStride`).
+ *    neighbours stay at least `NeighborSpacing` apart in world units (up to `MaxStride`), and
+ *    at least `ObjectScale` times the scene's size apart (a close-up follows the shape).
  *    Model-space mode (DirectionSource MODEL) uses a point-data direction array instead
- *    (`DirectionArrayName`, by default vtkStylizePrincipalCurvatures' PrincipalDirectionMin),
+ *    (`DirectionArrayName`, by default vtkStylizePrincipalCurvatures' PrincipalDirectionMinAbs),
  *    mapped to the G-buffer's DIRECTION channel; pixels without it fall back to the estimate.
- * 3. `SmoothingIterations` sign-invariant smoothing iterations (doubled angles over 3x3 pixels of
- *    the same surface), then fill iterations for undefined (planar, umbilic) pixels from their
+ * 3. Sign-invariant smoothing (doubled angles over 3x3 pixels of the same surface, weighted by
+ *    the estimate's confidence) with taps doubling up to `SmoothingRadius`, then
+ *    `SmoothingIterations` passes of neighbouring pixels, then fill iterations for undefined (planar, umbilic) pixels from their
  *    surface's defined neighbours at distances doubling up to `FillRadius`; pixels still
  *    undefined follow the isophotes of the lit image (structure tensor of its gradient), else a
  *    fixed screen direction: no surface pixel is left without a direction. `Direction` selects
@@ -138,9 +140,11 @@ public:
   /**
    * The point-data array used in MODEL mode: a 3-component direction per point, taken as the
    * direction of the smaller |curvature| (Direction then picks it, its perpendicular or the
-   * bisector). Default "PrincipalDirectionMin" (vtkStylizePrincipalCurvatures; signed minimum,
-   * the same as the smaller |curvature| wherever the surface is not a saddle with |k_min| >
-   * |k_max|). The pass maps it on each actor's vtkOpenGLPolyDataMapper that has it.
+   * bisector), as in SCREEN mode: MINIMUM and MAXIMUM are by absolute value in both modes (along
+   * and around a cylinder, convex or concave). Default "PrincipalDirectionMinAbs"
+   * (vtkStylizePrincipalCurvatures: the direction of the smaller |curvature|, zero where the
+   * surface is planar or umbilic; such pixels take the SCREEN estimate). The pass maps it on
+   * each actor's vtkOpenGLPolyDataMapper that has it.
    */
   vtkSetStringMacro(DirectionArrayName);
   vtkGetStringMacro(DirectionArrayName);
@@ -181,6 +185,31 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The object's share of the estimate's scale, dimensionless: the neighbour spacing is at
+   * least this fraction of the scene's size (the diagonal of SceneBounds), and the smoothing
+   * radius grows with it, so a close-up of a scanned surface follows its shape, not its scan
+   * noise, while a view of the whole object keeps the screen scale (NeighborSpacing,
+   * SmoothingRadius): the coarser of the two is used. 0 keeps the screen scale at any zoom.
+   * Range [0, 1], default 0.01.
+   */
+  vtkSetClampMacro(ObjectScale, double, 0.0, 1.0);
+  vtkGetMacro(ObjectScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * The scene's bounds (world units; xmin, xmax, ymin, ymax, zmin, zmax) for ObjectScale. An
+   * invalid box (xmin > xmax, the default) means the renderer's visible props' bounds; a
+   * parallel renderer (ParaView's view) sets the bounds of all ranks' data so every rank
+   * counts the same scale; a non-finite box counts as invalid. Range each [-1e300, 1e300],
+   * default (1, -1, 1, -1, 1, -1).
+   */
+  vtkSetVector6Macro(SceneBounds, double);
+  vtkGetVector6Macro(SceneBounds, double);
+  ///@}
+
+  ///@{
   /** Largest neighbour stride, points (at least NeighborSpacing to keep it). Range [1, 64], default 32. */
   vtkSetClampMacro(MaxStride, double, 1.0, 64.0);
   vtkGetMacro(MaxStride, double);
@@ -206,8 +235,22 @@ public:
 
   ///@{
   /**
-   * Sign-invariant smoothing iterations over 3x3 pixels: each widens the averaging of the
-   * direction field by about a pixel. Range [0, 16], default 8.
+   * Distance (points) over which the direction field is averaged, sign-invariantly, weighted
+   * by the estimates' confidence and only within a surface: 3x3 passes with taps 1, 2, 4, ...
+   * points apart up to this distance (an "a trous" pyramid: the cost grows with the logarithm
+   * of the radius). This is the scale of the strokes' flow: 0 follows every estimate; 16
+   * points smooths a scanned mesh's noise away but keeps the shape's turns (measured on the
+   * real-data set, docs/sketch.md). Range [0, 256], default 16.
+   */
+  vtkSetClampMacro(SmoothingRadius, double, 0.0, 256.0);
+  vtkGetMacro(SmoothingRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Further sign-invariant smoothing iterations over 3x3 neighbouring pixels after the
+   * SmoothingRadius passes: each widens the averaging by about a pixel and evens out the
+   * pyramid's taps. Range [0, 16], default 2.
    */
   vtkSetClampMacro(SmoothingIterations, int, 0, 16);
   vtkGetMacro(SmoothingIterations, int);
@@ -394,9 +437,12 @@ protected:
   int Neighbors = 8;
   double NeighborSpacing = 16.0;
   double MaxStride = 32.0;
+  double ObjectScale = 0.01;
+  double SceneBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   double PlanarTolerance = 1.0e-3;
   double UmbilicTolerance = 0.05;
-  int SmoothingIterations = 8;
+  double SmoothingRadius = 16.0;
+  int SmoothingIterations = 2;
   double FillRadius = 16.0;
   double FallbackAngle = 45.0;
   int LicMode = PERSPECTIVE;

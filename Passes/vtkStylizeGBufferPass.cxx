@@ -757,13 +757,17 @@ bool vtkStylizeGBufferPass::PreReplaceShaderValues(std::string& vertexShader, st
   {
     if (this->Channels & DIRECTION)
     {
-      // The direction attribute's outer product, in view coordinates (sign-free interpolation).
+      // The direction attribute's outer product, in view coordinates (sign-free interpolation),
+      // of the unit direction: a zero vector (no direction there) weighs nothing.
       vtkShaderProgram::Substitute(vertexShader, "//VTK::System::Dec",
         "//VTK::System::Dec\nin vec3 stylizeDirectionMC;\nuniform mat3 stylizeDirectionMCVC;\n"
         "out vec3 stylizeDirDiagVSOutput;\nout vec3 stylizeDirOffVSOutput;\n",
         false);
       vtkShaderProgram::Substitute(vertexShader, "//VTK::Normal::Impl",
         "//VTK::Normal::Impl\n  vec3 stylizeDirVC = stylizeDirectionMCVC * stylizeDirectionMC;\n"
+        "  float stylizeDirLength = length(stylizeDirVC);\n"
+        "  stylizeDirVC = stylizeDirLength > 0.0 && !isinf(stylizeDirLength) ?\n"
+        "    stylizeDirVC / stylizeDirLength : vec3(0.0);\n"
         "  stylizeDirDiagVSOutput = stylizeDirVC * stylizeDirVC;\n"
         "  stylizeDirOffVSOutput = stylizeDirVC.xxy * stylizeDirVC.yzz;\n",
         false);

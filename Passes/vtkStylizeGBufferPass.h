@@ -16,7 +16,8 @@
  * |          |         |                        | in world units, 0 where there is no surface     |
  * | DIRECTION | request | RGBA16F (or 32F)      | view-space unit tangent direction from the      |
  * |          |         |                        | vertex attribute stylizeDirectionMC, a = its    |
- * |          |         |                        | coherence (0: no attribute or no direction)     |
+ * |          |         |                        | confidence: 1 where the vertices' unit          |
+ * |          |         |                        | directions agree, 0: none (zero vectors)        |
  *
  * LINEAR_DEPTH keeps full relative precision at any near/far ratio (the window-space depth of a
  * 1e7 near/far ratio has almost none left far away), which scale-free screen-space edges need.

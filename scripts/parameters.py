@@ -943,7 +943,8 @@ XML_PROXIES = [
 ]
 XML_ALL_STYLES = "1 2 3"
 # Parameters the view sets itself, so not exposed: (class, parameter) -> why.
-XML_SKIP = {("vtkStylizeLightingPass", "Model"): "set by the view"}
+XML_SKIP = {("vtkStylizeLightingPass", "Model"): "set by the view",
+            ("vtkSketchPass", "SceneBounds"): "set by the view (the data's bounds on all ranks)"}
 # panel_visibility="advanced": tuning knobs of the algorithms rather than of the look, by name,
 # and settings whose comment says they are for measurement, testing or a baseline.
 XML_ADVANCED_NAME = re.compile(r"(?:Thresholds?|Tolerance|Stride|Seed)$|^ReferenceHeight$")
@@ -1276,11 +1277,13 @@ CLI_PIXEL = [
 CLI_SKETCH = [
     ("Neighbors", "--neighbors", "2|4|8", {"2": "2", "4": "4", "8": "8"}),
     ("NeighborSpacing", "--neighbor-spacing", "PT"), ("MaxStride", "--max-stride", "PT"),
+    ("ObjectScale", "--object-scale", "F"),
     ("PlanarTolerance", "--planar-tolerance", "T"),
     ("UmbilicTolerance", "--umbilic-tolerance", "T"), ("FillRadius", "--fill-radius", "PT"),
     ("FallbackAngle", "--fallback-angle", "DEG"), ("StepLength", "--step-length", "PT"),
     ("NoiseSize", "--noise-size", "PT"), ("StrokeContrast", "--stroke-contrast", "C"),
     ("Contrast", "--contrast", "C"), ("BlurRadius", "--blur-radius", "PT"),
+    ("SmoothingRadius", "--smoothing-radius", "PT"),
     ("SmoothingIterations", "--smoothing", "N"), ("Steps", "--steps", "N"),
     ("BlurStride", "--blur-stride", "K"),
     ("DirectionSource", "--direction-source", "screen|model",

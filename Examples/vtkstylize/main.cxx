@@ -31,6 +31,7 @@
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSketchPass.h"
 #include "vtkStylizeDemoScene.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
@@ -177,7 +178,10 @@ int Run(int argc, char* argv[])
   FinishParts(parts, what);
   if (opt.ModelDirections && opt.Style == "sketch")
   {
-    AddPrincipalDirections(parts, what);
+    // The curvature is averaged at the sketch's object scale (one setting for both modes).
+    vtkNew<vtkSketchPass> settings;
+    opt.Passes.ApplyTo(settings.Get());
+    AddPrincipalDirections(parts, what, settings->GetObjectScale());
   }
 
   // Scene.

@@ -975,7 +975,8 @@ void FinishParts(std::vector<Part>& parts, const std::string& what)
   parts = kept;
 }
 
-void AddPrincipalDirections(std::vector<Part>& parts, const std::string& what)
+void AddPrincipalDirections(
+  std::vector<Part>& parts, const std::string& what, double smoothingRadius)
 {
   ClearVTKErrors();
   for (Part& p : parts)
@@ -984,6 +985,7 @@ void AddPrincipalDirections(std::vector<Part>& parts, const std::string& what)
     {
       vtkNew<vtkStylizePrincipalCurvatures> curvatures;
       curvatures->SetInputData(p.Surface);
+      curvatures->SetSmoothingRadius(smoothingRadius);
       curvatures->Update();
       p.Surface = curvatures->GetOutput();
     }

@@ -59,10 +59,12 @@ void FinishParts(std::vector<Part>& parts, const std::string& what);
 
 /**
  * Adds the principal curvatures and directions (vtkStylizePrincipalCurvatures: point arrays
- * "PrincipalDirectionMin" and the others) to every part that has polygons or strips, for the
- * sketch pass's model-space directions. Parts of lines or vertices are left as they are.
+ * "PrincipalDirectionMinAbs" and the others) to every part that has polygons or strips, for the
+ * sketch pass's model-space directions, the tensors averaged over smoothingRadius times the
+ * part's diagonal. Parts of lines or vertices are left as they are.
  */
-void AddPrincipalDirections(std::vector<Part>& parts, const std::string& what);
+void AddPrincipalDirections(
+  std::vector<Part>& parts, const std::string& what, double smoothingRadius);
 }
 
 #endif

@@ -182,8 +182,10 @@ void sketchMain()
     return;
   }
 #ifdef SKETCH_MODEL
+  // The mapped direction where the data gives one with confidence (its vertices agree), else
+  // the screen estimate.
   vec4 given = texelFetch(stylizeDirectionTexture, p, 0);
-  if (given.a > 0.0)
+  if (given.a > sketchUmbilic)
   {
     gl_FragData[0] = vec4(given.xyz, max(given.a, 1e-3));
     return;

@@ -5,7 +5,9 @@ in vec3 stylizeDirDiagVSOutput; // (dx dx, dy dy, dz dz)
 in vec3 stylizeDirOffVSOutput;  // (dx dy, dx dz, dy dz)
 
 // The tensor's principal direction in the tangent plane of unit normal n (view space), and its
-// coherence (eigenvalue gap / trace, 0 = no direction) in w.
+// confidence in w: the eigenvalue gap of the interpolated outer products of unit directions,
+// 1 where the face's vertices agree, less where they disagree or where some have no direction
+// (a zero vector), 0 where none has.
 vec4 stylizeTensorDirection(vec3 n)
 {
   vec3 d = stylizeDirDiagVSOutput;
@@ -22,10 +24,10 @@ vec4 stylizeTensorDirection(vec3 n)
   float syy = dot(y, ty);
   float trace = sxx + syy;
   float gap = sqrt((sxx - syy) * (sxx - syy) + 4.0 * sxy * sxy);
-  if (!(trace > 0.0) || !(gap > 1.0e-4 * trace) || isinf(trace))
+  if (!(trace > 0.0) || !(gap > 1.0e-4) || isinf(trace))
   {
     return vec4(0.0);
   }
   float theta = 0.5 * atan(2.0 * sxy, sxx - syy);
-  return vec4(x * cos(theta) + y * sin(theta), clamp(gap / trace, 0.0, 1.0));
+  return vec4(x * cos(theta) + y * sin(theta), clamp(gap, 0.0, 1.0));
 }

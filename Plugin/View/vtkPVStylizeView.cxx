@@ -1,5 +1,6 @@
 #include "vtkPVStylizeView.h"
 
+#include "vtkBoundingBox.h"
 #include "vtkComicPass.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
@@ -156,6 +157,14 @@ void vtkPVStylizeView::ConfigurePasses()
     this->SynchronizedRenderers->SetUseDepthBuffer(true);
   }
   this->SynchronizedRenderers->SetImageProcessingPass(style);
+  // The sketch's object scale counts the data of all ranks (the style runs on the composited
+  // image, where a rank's own props would give another scale on every rank count).
+  double bounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
+  if (this->GeometryBounds.IsValid())
+  {
+    this->GeometryBounds.GetBounds(bounds);
+  }
+  this->SketchPass->SetSceneBounds(bounds);
 }
 
 //------------------------------------------------------------------------------

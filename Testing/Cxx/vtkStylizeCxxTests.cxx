@@ -26,6 +26,7 @@ int TestPrincipalCurvatures(int argc, char* argv[]);
 int TestSketchRegression(int argc, char* argv[]);
 int TestSketchNoise(int argc, char* argv[]);
 int TestSketchExtremes(int argc, char* argv[]);
+int TestSketchCylinders(int argc, char* argv[]);
 
 namespace
 {
@@ -59,6 +60,7 @@ const Entry Tests[] = {
   { "TestSketchRegression", TestSketchRegression },
   { "TestSketchNoise", TestSketchNoise },
   { "TestSketchExtremes", TestSketchExtremes },
+  { "TestSketchCylinders", TestSketchCylinders },
 };
 }
 

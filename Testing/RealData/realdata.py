@@ -33,9 +33,6 @@ BLUR_SIGMA, WINDOW, PAPER_LEVEL = 4.0, 15, 0.9
 OPEN = {
     ("dragon", "tone"): 0.77,
     ("pinion", "tone"): 0.70,
-    ("bunny", "agreement"): 0.77,
-    ("armadillo", "agreement"): 0.74,
-    ("dragon", "agreement"): 0.69,
 }
 
 
