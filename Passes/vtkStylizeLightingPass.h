@@ -111,9 +111,10 @@ public:
   /**
    * Comic: subject factor p1 of the ambient term `La = p1 + I - 2 p1 I`, dimensionless, in
    * [0, 1]. 0 gives La = I (ordinary ambient), 1 gives La = 1 - I (the subject responds inversely
-   * to ambient light). Default 0.4: with the default gray levels, the lit half of a real mesh
-   * reaches white (paper in the comic style) and its shadows stay dark. Per actor:
-   * SUBJECT_FACTOR().
+   * to ambient light). Default 0.35: with the default gray levels, the lit half of a real mesh
+   * reaches white (paper in the comic style), the ambient-only shadow band is hatched, and the
+   * halftone follows the Standard model's tone (correlation >= 0.8 on the real-data set,
+   * docs/comic.md). Per actor: SUBJECT_FACTOR().
    */
   vtkSetClampMacro(SubjectFactor, double, 0.0, 1.0);
   vtkGetMacro(SubjectFactor, double);
@@ -236,7 +237,7 @@ protected:
 
   vtkRenderPass* DelegatePass = nullptr;
   int Model = STANDARD;
-  double SubjectFactor = 0.4;
+  double SubjectFactor = 0.35;
   double GrayLevelsNear = 6.0;
   double GrayLevelsFar = 6.0;
   double SpecularGain = 1.5;

@@ -22,7 +22,7 @@ uniform float comicNormalThreshold;
 uniform float comicColorThreshold;
 uniform float comicDotSpacing;     // pixels (screen) or world units (object anchor)
 uniform float comicHatchSpacing;   // pixels (screen) or world units (object anchor)
-uniform float comicHatchWidth;     // fraction of the hatch spacing
+uniform float comicHatchWidth;     // fraction of the hatch spacing; 0: follows the tone
 uniform vec2 comicDotDirection;    // (cos, sin) of the screen angle
 uniform float comicHatchAngle;     // radians
 uniform int comicHatchDirections;  // 0: one direction; n: normal-dependent, n steps over 180 deg
@@ -173,12 +173,13 @@ float comicDots(vec2 uv, float tone, float aa)
 }
 
 // Hatch lines (eq. 11-12, reconstructed): u is the coordinate across the lines in spacing units;
-// the line is the band within half the width of an integer. 1 = paper.
-float comicLines(float u, float aa)
+// the line is the band within half the width w (a fraction of the spacing) of an integer.
+// 1 = paper.
+float comicLines(float u, float w, float aa)
 {
   float t = abs(fract(u + 0.5) - 0.5);
-  float hw = 0.5 * comicHatchWidth;
-  return smoothstep(hw - aa, hw + aa, t);
+  float hw = 0.5 * w;
+  return w >= 1.0 ? 0.0 : (w > 0.0 ? smoothstep(hw - aa, hw + aa, t) : 1.0);
 }
 
 void comicMain()
@@ -248,11 +249,21 @@ void comicMain()
     }
   }
   vec2 across = vec2(-sin(angle), cos(angle));
-  float hatch = comicLines(dot(hatchUV, across), hatchAA);
+  // The line width: constant (eq. 11), or the tone's: one direction covers 1 - I, two crossed
+  // directions of width 1 - sqrt(I) cover 1 - I together.
+  float ink = clamp(1.0 - tone, 0.0, 1.0);
 #ifdef COMIC_CROSS
-  if (tone < comicCross)
+  bool crossed = tone < comicCross;
+  float width = comicHatchWidth > 0.0 ? comicHatchWidth
+                                      : (crossed ? 1.0 - sqrt(clamp(tone, 0.0, 1.0)) : ink);
+#else
+  float width = comicHatchWidth > 0.0 ? comicHatchWidth : ink;
+#endif
+  float hatch = comicLines(dot(hatchUV, across), width, hatchAA);
+#ifdef COMIC_CROSS
+  if (crossed)
   {
-    hatch = min(hatch, comicLines(dot(hatchUV, vec2(across.y, -across.x)), hatchAA));
+    hatch = min(hatch, comicLines(dot(hatchUV, vec2(across.y, -across.x)), width, hatchAA));
   }
 #endif
 #else

@@ -14,6 +14,7 @@ int TestComicScale(int argc, char* argv[]);
 int TestComicMagnify(int argc, char* argv[]);
 int TestComicExtremes(int argc, char* argv[]);
 int TestComicMotion(int argc, char* argv[]);
+int TestComicTone(int argc, char* argv[]);
 int TestComicEdgeAccuracy(int argc, char* argv[]);
 int TestPixelArtRegression(int argc, char* argv[]);
 int TestPixelArtDither(int argc, char* argv[]);
@@ -48,6 +49,7 @@ const Entry Tests[] = {
   { "TestComicMagnify", TestComicMagnify },
   { "TestComicExtremes", TestComicExtremes },
   { "TestComicMotion", TestComicMotion },
+  { "TestComicTone", TestComicTone },
   { "TestComicEdgeAccuracy", TestComicEdgeAccuracy },
   { "TestPixelArtRegression", TestPixelArtRegression },
   { "TestPixelArtDither", TestPixelArtDither },
