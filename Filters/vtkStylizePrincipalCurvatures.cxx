@@ -320,16 +320,7 @@ int vtkStylizePrincipalCurvatures::RequestData(
     weight[i] = ok ? weight[i] : 0.0;
   }
 
-  // The scale: the neighbourhood radius, or the mean edge length.
-  double edgeSum = 0.0;
-  for (const auto& f : faces)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      edgeSum += Norm(Sub(p[f[(k + 1) % 3]], p[f[k]]));
-    }
-  }
-  const double meanEdge = faces.empty() ? 0.0 : edgeSum / (3.0 * faces.size());
+  // The object's size: the smoothing radius and the planar test are fractions of it.
   double bounds[6];
   input->GetBounds(bounds);
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
@@ -337,7 +328,6 @@ int vtkStylizePrincipalCurvatures::RequestData(
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
   const double smoothing =
     np > 0 && std::isfinite(diagonal) ? this->SmoothingRadius * diagonal : 0.0;
-  const double scaleLength = smoothing > 0.0 ? smoothing : meanEdge;
   if (smoothing > 0.0)
   {
     tensor = this->SmoothTensors(p, normal, frameU, frameV, faces, tensor, weight, smoothing);
@@ -389,7 +379,7 @@ int vtkStylizePrincipalCurvatures::RequestData(
     mean->SetValue(i, half);
     gauss->SetValue(i, k1 * k2);
     const double larger = std::max(std::abs(k1), std::abs(k2));
-    const bool planar = !(larger * scaleLength > this->PlanarTolerance);
+    const bool planar = !(larger * diagonal > this->PlanarTolerance);
     const bool umbilic = !(k1 - k2 > this->UmbilicTolerance * (std::abs(k1) + std::abs(k2)));
     if (!planar && !umbilic)
     {

@@ -21,7 +21,7 @@
  *   cylinder, whether it is convex or concave (the signed k2 of a concave cylinder runs around
  *   it). This is the convention of vtkSketchPass' MINIMUM and MAXIMUM, in screen and in model
  *   mode. Zero vectors where there is no principal direction: planar points (the larger |k|
- *   times the neighbourhood's radius below PlanarTolerance) and umbilic points (|k1 - k2|
+ *   times the input's diagonal below PlanarTolerance) and umbilic points (|k1 - k2|
  *   below UmbilicTolerance times |k1| + |k2|); the sketch pass estimates those in screen space.
  * - "MeanCurvature" (k1 + k2) / 2 and "GaussianCurvature" k1 k2.
  *
@@ -84,11 +84,14 @@ public:
 
   ///@{
   /**
-   * A point whose larger |curvature| times the neighbourhood's size (the smoothing radius, or
-   * the mean edge length when it is 0; radians of normal turn) is below this has no principal
-   * direction in the MinAbs/MaxAbs arrays. Range [0, 1], default 1e-3.
+   * A point whose larger |curvature| times the input's bounding-box diagonal (dimensionless:
+   * the normal's turn, in radians, across the object's size) is below this is planar: no
+   * principal direction in the MinAbs/MaxAbs arrays. 1 (default) counts a surface whose radius
+   * of curvature exceeds the object's size as flat, at any mesh resolution (the fandisk's flat
+   * faces have 0.01 to 0.5 from their tessellation; its fillets 3 and more). Range [0, 1000],
+   * default 1.
    */
-  vtkSetClampMacro(PlanarTolerance, double, 0.0, 1.0);
+  vtkSetClampMacro(PlanarTolerance, double, 0.0, 1000.0);
   vtkGetMacro(PlanarTolerance, double);
   ///@}
 
@@ -122,7 +125,7 @@ protected:
   bool UseInputNormals = true;
   double SmoothingRadius = 0.0;
   int MaximumNeighbors = 2000;
-  double PlanarTolerance = 1.0e-2;
+  double PlanarTolerance = 1.0;
   double UmbilicTolerance = 0.05;
 
 private:
