@@ -185,6 +185,48 @@ int Overlay(const char* plainPath, const char* barePath, const char* styledPath,
             << 100.0 * minimum << "%)\n";
   return ok ? 0 : 1;
 }
+
+/** The number of pixels where `plain` differs from `bare`, or -1 on an error. */
+long OverlayCount(const char* plainPath, const char* barePath)
+{
+  Image plain, bare;
+  if (!Read(plainPath, plain) || !Read(barePath, bare) || plain.RGB.size() != bare.RGB.size())
+  {
+    return -1;
+  }
+  long overlay = 0;
+  for (size_t i = 0; i < plain.RGB.size(); i += 3)
+  {
+    bool drawn = false;
+    for (int c = 0; c < 3; ++c)
+    {
+      drawn = drawn || plain.RGB[i + c] != bare.RGB[i + c];
+    }
+    overlay += drawn ? 1 : 0;
+  }
+  return overlay;
+}
+
+int OverlayScale(
+  const char* plain1, const char* bare1, const char* plain2, const char* bare2, double tolerance)
+{
+  const long a = OverlayCount(plain1, bare1), b = OverlayCount(plain2, bare2);
+  if (a < 0 || b < 0)
+  {
+    std::cout << "ERROR: unreadable images, or images of different sizes\n";
+    return 2;
+  }
+  if (a < 20 || b < 20)
+  {
+    std::cout << "FAIL: too few overlay pixels (" << a << ", " << b << ")\n";
+    return 1;
+  }
+  const double ratio = static_cast<double>(a) / b;
+  const bool ok = std::abs(ratio - 1.0) <= tolerance;
+  std::cout << (ok ? "OK: " : "FAIL: ") << a << " overlay pixels in " << plain1 << ", " << b
+            << " in " << plain2 << ": ratio " << ratio << " (tolerance " << tolerance << ")\n";
+  return ok ? 0 : 1;
+}
 }
 
 int main(int argc, char* argv[])
@@ -202,8 +244,14 @@ int main(int argc, char* argv[])
   {
     return Overlay(argv[2], argv[3], argv[4], std::atof(argv[5]));
   }
+  if (mode == "overlay-scale" && argc == 7)
+  {
+    return OverlayScale(argv[2], argv[3], argv[4], argv[5], std::atof(argv[6]));
+  }
   std::cerr << "usage: vtkStylizeCliCheckColors gray FILE.png R,G,B\n"
                "       vtkStylizeCliCheckColors off-levels FILE.png K MIN\n"
-               "       vtkStylizeCliCheckColors overlay PLAIN.png BARE.png STYLED.png MIN\n";
+               "       vtkStylizeCliCheckColors overlay PLAIN.png BARE.png STYLED.png MIN\n"
+               "       vtkStylizeCliCheckColors overlay-scale PLAIN.png BARE.png PLAIN2.png "
+               "BARE2.png TOL\n";
   return 2;
 }
