@@ -61,7 +61,7 @@ READERS = {
     ".obj": vtkOBJReader,
 }
 
-SOLID_COLOR = (0.80, 0.80, 0.78)
+SOLID_COLOR = (0.80, 0.80, 0.80)
 
 
 class Failure(Exception):
