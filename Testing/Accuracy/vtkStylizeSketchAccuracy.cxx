@@ -347,12 +347,16 @@ int main(int argc, char* argv[])
   }
   out << "### Principal directions: angular error against the analytic direction\n\n"
       << study.W << "x" << study.H
-      << ", direction MAXIMUM (the larger |curvature|), degrees modulo 180. Smoothing `off`: "
+      << ", direction MAXIMUM (the larger |curvature|), degrees modulo 180. Scale `2 pt`: "
+         "neighbours 2 points apart, no object scale (the estimate's own accuracy); `defaults`: "
+         "the pass's (NeighborSpacing 16 points, ObjectScale 1%, chosen for scanned meshes). "
+         "Smoothing `off`: "
          "no smoothing radius and no iterations; `defaults`: the pass's (SmoothingRadius 16 "
          "points, SmoothingIterations 2). `undefined`: surface pixels left without a direction "
          "(after fill and fallbacks).\n\n"
-      << "| surface | camera | source | neighbours | smoothing | median | 95th pct | undefined | "
-         "pixels |\n| --- | --- | --- | ---: | --- | ---: | ---: | ---: | ---: |\n";
+      << "| surface | camera | source | scale | neighbours | smoothing | median | 95th pct | "
+         "undefined | pixels |\n| --- | --- | --- | --- | ---: | --- | ---: | ---: | ---: | ---: "
+         "|\n";
   auto pass = study.Pass;
   vtkNew<vtkSketchPass> defaults; // the pass's default settings, for the "defaults" rows
   pass->SetLayer(vtkSketchPass::DIRECTIONS);
@@ -371,21 +375,29 @@ int main(int argc, char* argv[])
       study.PlaceCamera(parallel, near);
       const std::string camera =
         std::string(near ? "near" : "far") + (parallel ? ", parallel" : ", perspective");
+      // The fine scale (neighbours 2 points apart, no object scale: the estimate's own
+      // accuracy) for every neighbour count, with and without smoothing; then the shipped
+      // defaults (16 points, 1% of the object), chosen for scanned meshes.
       struct Case
       {
         int Source, Neighbors, Smoothing;
+        bool DefaultScale;
       };
       std::vector<Case> cases;
       for (int n : { 2, 4, 8 })
       {
         for (int smoothing : { 0, 2 })
         {
-          cases.push_back({ vtkSketchPass::SCREEN, n, smoothing });
+          cases.push_back({ vtkSketchPass::SCREEN, n, smoothing, false });
         }
       }
-      cases.push_back({ vtkSketchPass::MODEL, 8, 0 });
+      cases.push_back({ vtkSketchPass::SCREEN, 8, 0, true });
+      cases.push_back({ vtkSketchPass::SCREEN, 8, 2, true });
+      cases.push_back({ vtkSketchPass::MODEL, 8, 0, false });
       for (const Case& c : cases)
       {
+        pass->SetNeighborSpacing(c.DefaultScale ? defaults->GetNeighborSpacing() : 2.0);
+        pass->SetObjectScale(c.DefaultScale ? defaults->GetObjectScale() : 0.0);
         pass->SetDirectionSource(c.Source);
         pass->SetNeighbors(c.Neighbors);
         // Smoothing off: no pyramid and no iterations; on: the pass's defaults.
@@ -393,8 +405,10 @@ int main(int argc, char* argv[])
         pass->SetSmoothingRadius(c.Smoothing ? defaults->GetSmoothingRadius() : 0.0);
         const auto r = study.Directions(s);
         char line[512];
-        std::snprintf(line, sizeof(line), "| %s | %s | %s | %s | %s | %.2f | %.2f | %ld | %ld |\n",
-          s.Name.c_str(), camera.c_str(), c.Source == vtkSketchPass::MODEL ? "model" : "screen",
+        std::snprintf(line, sizeof(line),
+          "| %s | %s | %s | %s | %s | %s | %.2f | %.2f | %ld | %ld |\n", s.Name.c_str(),
+          camera.c_str(), c.Source == vtkSketchPass::MODEL ? "model" : "screen",
+          c.Source == vtkSketchPass::MODEL ? "-" : (c.DefaultScale ? "defaults" : "2 pt"),
           c.Source == vtkSketchPass::MODEL ? "-" : std::to_string(c.Neighbors).c_str(),
           c.Source == vtkSketchPass::MODEL ? "-" : (c.Smoothing ? "defaults" : "off"),
           r.Median, r.P95, r.Undefined, r.Surface);
@@ -423,6 +437,8 @@ int main(int argc, char* argv[])
   pass->SetNeighbors(8);
   pass->SetSmoothingIterations(defaults->GetSmoothingIterations());
   pass->SetSmoothingRadius(defaults->GetSmoothingRadius());
+  pass->SetNeighborSpacing(defaults->GetNeighborSpacing());
+  pass->SetObjectScale(defaults->GetObjectScale());
 
   // ---- 2. LIC steps at a fixed stroke length, near the torus in a wide perspective
   const int frames = study.Quick ? 1 : 3;
