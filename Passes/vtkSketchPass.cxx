@@ -48,21 +48,16 @@ double Fade(double t)
   return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
 }
 
+// The direction field's stages are the base's (RenderDirectionField()).
 enum Stages
 {
-  ESTIMATE_STAGE = 0, // raw principal directions (focal surfaces, or the model's)
-  SMOOTH_STAGE,       // 3x3 smoothing, or filling of undefined pixels
-  RESOLVE_STAGE,      // fallbacks and the requested direction
-  BLUR_X_STAGE,       // strided blur of the lit luminance, x then y
+  BLUR_X_STAGE = 0, // strided blur of the lit luminance, x then y
   BLUR_Y_STAGE,
-  FINAL_STAGE         // strokes and tone into the output
+  FINAL_STAGE // strokes and tone into the output
 };
 enum Textures
 {
-  FIELD_0 = 0, // raw field ping-pong
-  FIELD_1,
-  RESOLVED, // xyz direction, w linear depth
-  BLUR_X,
+  BLUR_X = 0,
   BLUR_Y,
   NOISE
 };
@@ -84,15 +79,11 @@ struct vtkSketchPass::Plan
   bool Model, Strokes, ObjectNoise, Contrast;
   SceneRequest Scene;
   std::string Defines;
+  FieldSettings Field; // the direction field's settings (NaN settings replaced)
   // Settings as used (a NaN setting counts as its range's minimum), lengths in pixels.
   double PointSize;   // pixels per point
   double FocalPixel;  // world size of a pixel at the focal distance
-  double Planar, Umbilic, StepLength, StrokeContrast, CrossThreshold, ContrastSetting;
-  int MaxStride;
-  double SpacingWorld;
-  double FillRadius;  // pixels; < 0: no fill
-  double SmoothingRadius; // pixels; < 1: none
-  double Fallback;    // radians
+  double StepLength, StrokeContrast, CrossThreshold, ContrastSetting;
   int BlurSize[2];
   double BlurRadius;  // pixels
   double NoiseUnit;
@@ -103,9 +94,8 @@ vtkStandardNewMacro(vtkSketchPass);
 //------------------------------------------------------------------------------
 vtkSketchPass::vtkSketchPass()
   : vtkStylizeStylePass(vtkStylizeLightingPass::STANDARD, vtkSketchFS,
-      { "SKETCH_STAGE_ESTIMATE", "SKETCH_STAGE_SMOOTH", "SKETCH_STAGE_RESOLVE",
-        "SKETCH_STAGE_BLUR_X", "SKETCH_STAGE_BLUR_Y", "SKETCH_STAGE_FINAL" },
-      "  sketchMain();\n")
+      { "SKETCH_STAGE_BLUR_X", "SKETCH_STAGE_BLUR_Y", "SKETCH_STAGE_FINAL" }, "  sketchMain();\n",
+      true)
   , Internals(new vtkInternals)
 {
   // The estimate differentiates normals: half floats (3 digits) would dominate its error.
@@ -394,7 +384,7 @@ void vtkSketchPass::MapDirectionArrays(vtkRenderer* ren)
 //------------------------------------------------------------------------------
 bool vtkSketchPass::DownloadDirections(vtkFloatArray* out)
 {
-  return this->DownloadTexture(this->TextureSlot(RESOLVED), out);
+  return this->DownloadTexture(this->GetDirectionFieldTexture(), out);
 }
 
 //------------------------------------------------------------------------------
@@ -419,9 +409,7 @@ void vtkSketchPass::Render(const vtkRenderState* s)
   {
     this->UpdateNoise(frame);
   }
-  this->RenderEstimateStage(frame, plan);
-  const int field = this->RenderSmoothStages(frame, plan);
-  this->RenderResolveStage(frame, plan, field);
+  this->RenderDirectionField(frame, plan.Field, plan.PointSize);
   if (plan.Contrast)
   {
     this->RenderBlurStages(frame, plan);
@@ -458,10 +446,26 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
     p.Scene.Channels |= vtkStylizeGBufferPass::DIRECTION;
   }
 
+  // The clamp macros let NaN through: a NaN setting counts as its range's minimum.
+  auto finite = [](double v, double fallback) { return std::isfinite(v) ? v : fallback; };
+  auto* self = const_cast<vtkSketchPass*>(this); // the Min/Max getters are not const
+  FieldSettings& f = p.Field;
+  f.Neighbors = this->Neighbors;
+  f.NeighborSpacing = finite(this->NeighborSpacing, self->GetNeighborSpacingMinValue());
+  f.MaxStride = finite(this->MaxStride, self->GetMaxStrideMinValue());
+  f.ObjectScale = finite(this->ObjectScale, self->GetObjectScaleMinValue());
+  std::copy(this->SceneBounds, this->SceneBounds + 6, f.SceneBounds);
+  f.PlanarTolerance = finite(this->PlanarTolerance, self->GetPlanarToleranceMinValue());
+  f.UmbilicTolerance = finite(this->UmbilicTolerance, self->GetUmbilicToleranceMinValue());
+  f.SmoothingRadius = finite(this->SmoothingRadius, self->GetSmoothingRadiusMinValue());
+  f.SmoothingIterations = this->SmoothingIterations;
+  f.FillRadius = finite(this->FillRadius, self->GetFillRadiusMinValue());
+  f.FallbackAngle = finite(this->FallbackAngle, self->GetFallbackAngleMinValue());
+  f.Direction = this->Direction;
+  f.Model = p.Model;
+
+  p.Defines = FieldDefines(f);
   auto define = [&p](bool on, const std::string& name) { AddDefine(p.Defines, on, name); };
-  define(true, "SKETCH_NEIGHBORS " + std::to_string(this->Neighbors));
-  define(p.Model, "SKETCH_MODEL");
-  define(true, "SKETCH_DIRECTION " + std::to_string(this->Direction));
   define(!p.ObjectNoise, "SKETCH_NOISE_SCREEN");
   define(this->LicMode == SCREEN_2D, "SKETCH_SCREEN_LIC");
   define(cross, "SKETCH_CROSS");
@@ -469,11 +473,6 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   define(this->Tinted, "SKETCH_TINTED");
   define(true, "SKETCH_LAYER " + std::to_string(this->Layer));
 
-  // The clamp macros let NaN through: a NaN setting counts as its range's minimum.
-  auto finite = [](double v, double fallback) { return std::isfinite(v) ? v : fallback; };
-  auto* self = const_cast<vtkSketchPass*>(this); // the Min/Max getters are not const
-  p.Planar = finite(this->PlanarTolerance, self->GetPlanarToleranceMinValue());
-  p.Umbilic = finite(this->UmbilicTolerance, self->GetUmbilicToleranceMinValue());
   p.StepLength = finite(this->StepLength, self->GetStepLengthMinValue());
   p.StrokeContrast = finite(this->StrokeContrast, self->GetStrokeContrastMinValue());
   p.CrossThreshold = finite(this->CrossThreshold, self->GetCrossThresholdMinValue());
@@ -483,52 +482,7 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   const double referenceHeight =
     finite(this->ReferenceHeight, self->GetReferenceHeightMinValue());
   p.PointSize = frame.FullSize[1] / referenceHeight;
-  p.FocalPixel =
-    frame.Parallel ? frame.PixelWorld : frame.PixelWorld * frame.Camera->GetDistance();
-  if (!(p.FocalPixel > 0.0) || !std::isfinite(p.FocalPixel))
-  {
-    p.FocalPixel = 1.0;
-  }
-  const double maxStride = finite(this->MaxStride, self->GetMaxStrideMinValue());
-  p.MaxStride = std::max(1, static_cast<int>(std::lround(maxStride * p.PointSize)));
-  p.SpacingWorld = finite(this->NeighborSpacing, self->GetNeighborSpacingMinValue()) *
-    p.PointSize * p.FocalPixel;
-  // The object's scale: the spacing is at least ObjectScale times the scene's diagonal, and the
-  // smoothing radius grows by the same factor (at most its range's maximum).
-  double scale = 1.0;
-  const double objectScale = finite(this->ObjectScale, self->GetObjectScaleMinValue());
-  if (objectScale > 0.0 && p.SpacingWorld > 0.0)
-  {
-    auto valid = [](const double* b) {
-      return std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }) && b[0] <= b[1] &&
-        b[2] <= b[3] && b[4] <= b[5];
-    };
-    double b[6];
-    std::copy(this->SceneBounds, this->SceneBounds + 6, b);
-    if (!valid(b))
-    {
-      frame.Renderer->ComputeVisiblePropBounds(b);
-    }
-    if (valid(b))
-    {
-      const double diagonal =
-        std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-          (b[5] - b[4]) * (b[5] - b[4]));
-      const double object = objectScale * diagonal;
-      if (std::isfinite(object) && object > p.SpacingWorld)
-      {
-        scale = object / p.SpacingWorld;
-        p.SpacingWorld = object;
-      }
-    }
-  }
-  const double fill = finite(this->FillRadius, self->GetFillRadiusMinValue());
-  p.FillRadius = fill > 0.0 ? std::max(1.0, fill * p.PointSize) : -1.0;
-  p.SmoothingRadius = std::min(
-    finite(this->SmoothingRadius, self->GetSmoothingRadiusMinValue()) * scale,
-    self->GetSmoothingRadiusMaxValue()) * p.PointSize;
-  p.Fallback =
-    vtkMath::RadiansFromDegrees(finite(this->FallbackAngle, self->GetFallbackAngleMinValue()));
+  p.FocalPixel = FocalPixelWorld(frame);
   const int stride = this->BlurStride;
   p.BlurSize[0] = (frame.Size[0] + stride - 1) / stride;
   p.BlurSize[1] = (frame.Size[1] + stride - 1) / stride;
@@ -574,90 +528,6 @@ void vtkSketchPass::UpdateNoise(const Frame& frame)
 }
 
 //------------------------------------------------------------------------------
-void vtkSketchPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame)
-{
-  vtkMatrix4x4* projection = frame.Camera->GetProjectionTransformMatrix(frame.Renderer);
-  this->BindSceneTextures(u);
-  u.Int2("sketchSize", frame.Size[0], frame.Size[1])
-    .Float2("sketchPixelOffset", frame.FullOffset[0], frame.FullOffset[1])
-    .Int("sketchParallel", frame.Parallel ? 1 : 0)
-    .Float("sketchPixelWorld", frame.PixelWorld)
-    .Float4("sketchProjection", projection->GetElement(0, 0), projection->GetElement(1, 1),
-      projection->GetElement(0, 2), projection->GetElement(1, 2))
-    .Float2("sketchProjOffset", projection->GetElement(0, 3), projection->GetElement(1, 3));
-  this->SetDepthMappingUniforms(u);
-}
-
-//------------------------------------------------------------------------------
-void vtkSketchPass::RenderEstimateStage(const Frame& frame, const Plan& p)
-{
-  const int w = frame.Size[0], h = frame.Size[1];
-  vtkTextureObject* field = this->EnsureTexture(FIELD_0, w, h, GL_RGBA16F);
-  this->RenderStage(ESTIMATE_STAGE, { field }, w, h, [&](vtkStylizeUniforms& u) {
-    this->SetStageUniforms(u, frame);
-    u.Float("sketchSpacing", p.SpacingWorld)
-      .Int("sketchMaxStride", p.MaxStride)
-      .Float("sketchPlanar", p.Planar)
-      .Float("sketchUmbilic", p.Umbilic);
-  });
-}
-
-//------------------------------------------------------------------------------
-int vtkSketchPass::RenderSmoothStages(const Frame& frame, const Plan& p)
-{
-  // Smoothing (all pixels, 3x3 at tap distances 1, 2, 4, ... points up to the smoothing radius,
-  // then at distance 1 pixel), then filling (undefined pixels, distances 1, 2, 4, ...).
-  std::vector<std::pair<int, int>> iterations; // radius, fill only
-  // The taps are 1, 2, 4, ... points apart (at least a pixel), so that a magnified image is
-  // smoothed over the same part of the picture.
-  for (double pt = 1.0; pt <= p.SmoothingRadius / p.PointSize; pt *= 2.0)
-  {
-    iterations.emplace_back(std::max(1, static_cast<int>(std::lround(pt * p.PointSize))), 0);
-  }
-  for (int i = 0; i < this->SmoothingIterations; ++i)
-  {
-    iterations.emplace_back(1, 0);
-  }
-  for (int r = 1; p.FillRadius > 0.0 && r <= p.FillRadius; r *= 2)
-  {
-    iterations.emplace_back(r, 1);
-  }
-  const int w = frame.Size[0], h = frame.Size[1];
-  if (iterations.empty())
-  {
-    this->FreeTexture(FIELD_1);
-    return FIELD_0;
-  }
-  this->EnsureTexture(FIELD_1, w, h, GL_RGBA16F);
-  int current = FIELD_0;
-  for (const auto& it : iterations)
-  {
-    const int next = current == FIELD_0 ? FIELD_1 : FIELD_0;
-    this->RenderStage(SMOOTH_STAGE, { this->TextureSlot(next) }, w, h, [&](vtkStylizeUniforms& u) {
-      this->SetStageUniforms(u, frame);
-      u.Texture("sketchInput", this->TextureSlot(current))
-        .Int("sketchRadius", it.first)
-        .Int("sketchFillOnly", it.second);
-    });
-    current = next;
-  }
-  return current;
-}
-
-//------------------------------------------------------------------------------
-void vtkSketchPass::RenderResolveStage(const Frame& frame, const Plan& p, int field)
-{
-  const int w = frame.Size[0], h = frame.Size[1];
-  vtkTextureObject* resolved = this->EnsureTexture(RESOLVED, w, h, GL_RGBA32F);
-  this->RenderStage(RESOLVE_STAGE, { resolved }, w, h, [&](vtkStylizeUniforms& u) {
-    this->SetStageUniforms(u, frame);
-    u.Texture("sketchInput", this->TextureSlot(field))
-      .Int("sketchGradientStride", std::max(1, static_cast<int>(std::lround(2.0 * p.PointSize))))
-      .Float2("sketchScreenDirection", std::cos(p.Fallback), std::sin(p.Fallback));
-  });
-}
-
-//------------------------------------------------------------------------------
 void vtkSketchPass::RenderBlurStages(const Frame& frame, const Plan& p)
 {
   const int bw = p.BlurSize[0], bh = p.BlurSize[1];
@@ -667,7 +537,7 @@ void vtkSketchPass::RenderBlurStages(const Frame& frame, const Plan& p)
   blurY->SetMagnificationFilter(vtkTextureObject::Linear);
   const int taps = static_cast<int>(std::ceil(p.BlurRadius / this->BlurStride));
   auto uniforms = [&](vtkStylizeUniforms& u) {
-    this->SetStageUniforms(u, frame);
+    this->SetFieldUniforms(u, frame);
     u.Int("sketchBlurStride", this->BlurStride)
       .Float("sketchBlurSigma", std::max(0.5, p.BlurRadius / 3.0))
       .Int("sketchBlurTaps", taps)
@@ -685,8 +555,8 @@ void vtkSketchPass::RenderFinalStage(const Frame& frame, const Plan& p)
 {
   const vtkInternals& in = *this->Internals;
   this->RenderStageToOutput(frame, FINAL_STAGE, true, [&](vtkStylizeUniforms& u) {
-    this->SetStageUniforms(u, frame);
-    u.Texture("sketchField", this->TextureSlot(RESOLVED))
+    this->SetFieldUniforms(u, frame);
+    u.Texture("sketchField", this->GetDirectionFieldTexture())
       .Texture("sketchBlur", this->TextureSlot(BLUR_Y))
       .Texture("sketchNoise", this->TextureSlot(NOISE))
       .Float2("sketchNoiseStats", in.NoiseStats[0], in.NoiseStats[1])

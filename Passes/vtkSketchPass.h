@@ -433,18 +433,18 @@ protected:
   int Layer = SKETCH;
   int DirectionSource = SCREEN;
   char* DirectionArrayName = nullptr;
-  int Direction = MAXIMUM;
-  int Neighbors = 8;
-  double NeighborSpacing = 16.0;
-  double MaxStride = 32.0;
-  double ObjectScale = 0.01;
+  int Direction = FieldSettings().Direction;
+  int Neighbors = FieldSettings().Neighbors;
+  double NeighborSpacing = FieldSettings().NeighborSpacing;
+  double MaxStride = FieldSettings().MaxStride;
+  double ObjectScale = FieldSettings().ObjectScale;
   double SceneBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
-  double PlanarTolerance = 1.0e-3;
-  double UmbilicTolerance = 0.05;
-  double SmoothingRadius = 16.0;
-  int SmoothingIterations = 2;
-  double FillRadius = 16.0;
-  double FallbackAngle = 45.0;
+  double PlanarTolerance = FieldSettings().PlanarTolerance;
+  double UmbilicTolerance = FieldSettings().UmbilicTolerance;
+  double SmoothingRadius = FieldSettings().SmoothingRadius;
+  int SmoothingIterations = FieldSettings().SmoothingIterations;
+  double FillRadius = FieldSettings().FillRadius;
+  double FallbackAngle = FieldSettings().FallbackAngle;
   int LicMode = PERSPECTIVE;
   double StepLength = 1.5;
   int Steps = 10;
@@ -468,14 +468,7 @@ protected:
   Plan PlanFrame(const Frame& frame) const;
   /** The noise texture of the current kind, made when the kind changes. */
   void UpdateNoise(const Frame& frame);
-  /** The uniforms every stage reads. */
-  void SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame);
-  /** 1. Raw principal directions. */
-  void RenderEstimateStage(const Frame& frame, const Plan& plan);
-  /** 2. Smoothing, then filling; returns the texture slot holding the field. */
-  int RenderSmoothStages(const Frame& frame, const Plan& plan);
-  /** 3. Fallbacks and the requested direction. */
-  void RenderResolveStage(const Frame& frame, const Plan& plan, int field);
+  // 1-3: the direction field (vtkStylizeStylePass::RenderDirectionField()).
   /** 4. The strided blur of the lit luminance (the contrast's reference). */
   void RenderBlurStages(const Frame& frame, const Plan& plan);
   /** 5. Strokes and tone into the output framebuffer, with the scene's depth. */

@@ -17,8 +17,14 @@
 
 #include "vtkStylizeCommonFS.h"
 #include "vtkStylizeDepthFS.h"
+#include "vtkStylizeFieldFS.h"
 #include "vtkStylizeScreenFS.h"
 
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 class vtkStylizeStylePass::vtkInternals
@@ -40,6 +46,12 @@ public:
   std::vector<vtkTextureObject*> Textures; // the style's slots
   bool StageFailed = false;
 
+  // The direction field: its first stage's index (-1: the style has none) and its textures
+  // (the raw field's ping-pong pair and the resolved field).
+  int FieldStage = -1;
+  vtkTextureObject* FieldTextures[3] = { nullptr, nullptr, nullptr };
+  int FieldResolved = -1; // index in FieldTextures of the last resolved field
+
   void FreeFramebuffer(vtkWindow* w)
   {
     if (this->Framebuffer)
@@ -59,6 +71,16 @@ public:
     {
       vtkStylizeShaderUtilities::FreeTexture(t, w);
     }
+    this->FreeField(w);
+  }
+
+  void FreeField(vtkWindow* w)
+  {
+    for (vtkTextureObject*& t : this->FieldTextures)
+    {
+      vtkStylizeShaderUtilities::FreeTexture(t, w);
+    }
+    this->FieldResolved = -1;
   }
 
   // Makes stage `stage`'s program current; nullptr (and StageFailed) when it does not build.
@@ -73,7 +95,7 @@ public:
 
 //------------------------------------------------------------------------------
 vtkStylizeStylePass::vtkStylizeStylePass(int lightingModel, const char* styleSource,
-  std::vector<std::string> stageDefines, const char* mainCall)
+  std::vector<std::string> stageDefines, const char* mainCall, bool directionField)
   : Internals(new vtkInternals)
 {
   vtkInternals& in = *this->Internals;
@@ -82,6 +104,17 @@ vtkStylizeStylePass::vtkStylizeStylePass(int lightingModel, const char* styleSou
   in.StyleSource = styleSource;
   in.MainCall = mainCall;
   in.StageDefines = std::move(stageDefines);
+  if (directionField)
+  {
+    // The field's GLSL before the style's (the style's stages call its camera helpers), its
+    // stages after the style's, and main() runs the field's function in those.
+    in.StyleSource = std::string(vtkStylizeFieldFS) + in.StyleSource;
+    in.MainCall = "#ifdef STYLIZE_FIELD_STAGE\n  stylizeFieldMain();\n#else\n" + in.MainCall +
+      "#endif\n";
+    in.FieldStage = static_cast<int>(in.StageDefines.size());
+    in.StageDefines.insert(in.StageDefines.end(),
+      { "FIELD_STAGE_ESTIMATE", "FIELD_STAGE_SMOOTH", "FIELD_STAGE_RESOLVE" });
+  }
   in.Declarations.resize(in.StageDefines.size());
   for (size_t i = 0; i < in.StageDefines.size(); ++i)
   {
@@ -408,4 +441,161 @@ void vtkStylizeStylePass::ReleaseGraphicsResources(vtkWindow* w)
   in.FreeFramebuffer(w);
   in.GBuffer->ReleaseGraphicsResources(w);
   this->ReleaseStyleResources(w);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkStylizeStylePass::FieldDefines(const FieldSettings& s)
+{
+  std::string defines;
+  AddDefine(defines, true, "FIELD_NEIGHBORS " + std::to_string(s.Neighbors));
+  AddDefine(defines, s.Model, "FIELD_MODEL");
+  AddDefine(defines, true, "FIELD_DIRECTION " + std::to_string(s.Direction));
+  return defines;
+}
+
+//------------------------------------------------------------------------------
+double vtkStylizeStylePass::FocalPixelWorld(const Frame& frame)
+{
+  const double focal =
+    frame.Parallel ? frame.PixelWorld : frame.PixelWorld * frame.Camera->GetDistance();
+  return focal > 0.0 && std::isfinite(focal) ? focal : 1.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::SetFieldUniforms(vtkStylizeUniforms& u, const Frame& frame)
+{
+  vtkMatrix4x4* projection = frame.Camera->GetProjectionTransformMatrix(frame.Renderer);
+  this->BindSceneTextures(u);
+  u.Int2("fieldSize", frame.Size[0], frame.Size[1])
+    .Float2("fieldPixelOffset", frame.FullOffset[0], frame.FullOffset[1])
+    .Int("fieldParallel", frame.Parallel ? 1 : 0)
+    .Float("fieldPixelWorld", frame.PixelWorld)
+    .Float4("fieldProjection", projection->GetElement(0, 0), projection->GetElement(1, 1),
+      projection->GetElement(0, 2), projection->GetElement(1, 2))
+    .Float2("fieldProjOffset", projection->GetElement(0, 3), projection->GetElement(1, 3));
+  this->SetDepthMappingUniforms(u);
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkStylizeStylePass::RenderDirectionField(
+  const Frame& frame, const FieldSettings& s, double pointSize)
+{
+  vtkInternals& in = *this->Internals;
+  if (in.FieldStage < 0)
+  {
+    return nullptr;
+  }
+  const int w = frame.Size[0], h = frame.Size[1];
+  const double focalPixel = FocalPixelWorld(frame);
+
+  // The estimate's neighbour spacing in world units: NeighborSpacing points at the focal
+  // distance, at least ObjectScale times the scene's diagonal; the smoothing radius grows by the
+  // same factor (at most 256 points).
+  double spacingWorld = s.NeighborSpacing * pointSize * focalPixel;
+  double scale = 1.0;
+  if (s.ObjectScale > 0.0 && spacingWorld > 0.0)
+  {
+    auto valid = [](const double* b) {
+      return std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }) && b[0] <= b[1] &&
+        b[2] <= b[3] && b[4] <= b[5];
+    };
+    double b[6];
+    std::copy(s.SceneBounds, s.SceneBounds + 6, b);
+    if (!valid(b))
+    {
+      frame.Renderer->ComputeVisiblePropBounds(b);
+    }
+    if (valid(b))
+    {
+      const double diagonal =
+        std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+          (b[5] - b[4]) * (b[5] - b[4]));
+      const double object = s.ObjectScale * diagonal;
+      if (std::isfinite(object) && object > spacingWorld)
+      {
+        scale = object / spacingWorld;
+        spacingWorld = object;
+      }
+    }
+  }
+  const double smoothingRadius = std::min(s.SmoothingRadius * scale, 256.0) * pointSize;
+  const int maxStride = std::max(1, static_cast<int>(std::lround(s.MaxStride * pointSize)));
+  const double fillRadius = s.FillRadius > 0.0 ? std::max(1.0, s.FillRadius * pointSize) : -1.0;
+  const double fallback = vtkMath::RadiansFromDegrees(s.FallbackAngle);
+
+  // 1. Raw directions.
+  vtkTextureObject*& raw0 = in.FieldTextures[0];
+  vtkStylizeShaderUtilities::EnsureScreenTexture(raw0, in.Window, w, h, GL_RGBA16F);
+  this->RenderStage(in.FieldStage, { raw0 }, w, h, [&](vtkStylizeUniforms& u) {
+    this->SetFieldUniforms(u, frame);
+    u.Float("fieldSpacing", spacingWorld)
+      .Int("fieldMaxStride", maxStride)
+      .Float("fieldPlanar", s.PlanarTolerance)
+      .Float("fieldUmbilic", s.UmbilicTolerance);
+  });
+
+  // 2. Smoothing (all pixels, 3x3 at tap distances 1, 2, 4, ... points up to the smoothing
+  // radius, then at distance 1 pixel), then filling (undefined pixels, distances 1, 2, 4, ...).
+  // The taps are in points (at least a pixel), so that a magnified image is smoothed over the
+  // same part of the picture.
+  std::vector<std::pair<int, int>> iterations; // tap distance, fill only
+  for (double pt = 1.0; pt <= smoothingRadius / pointSize; pt *= 2.0)
+  {
+    iterations.emplace_back(std::max(1, static_cast<int>(std::lround(pt * pointSize))), 0);
+  }
+  for (int i = 0; i < s.SmoothingIterations; ++i)
+  {
+    iterations.emplace_back(1, 0);
+  }
+  for (int r = 1; fillRadius > 0.0 && r <= fillRadius; r *= 2)
+  {
+    iterations.emplace_back(r, 1);
+  }
+  int current = 0;
+  if (iterations.empty())
+  {
+    vtkStylizeShaderUtilities::FreeTexture(in.FieldTextures[1], in.Window);
+  }
+  else
+  {
+    vtkStylizeShaderUtilities::EnsureScreenTexture(
+      in.FieldTextures[1], in.Window, w, h, GL_RGBA16F);
+  }
+  for (const auto& it : iterations)
+  {
+    const int next = 1 - current;
+    this->RenderStage(in.FieldStage + 1, { in.FieldTextures[next] }, w, h,
+      [&](vtkStylizeUniforms& u) {
+        this->SetFieldUniforms(u, frame);
+        u.Texture("fieldInput", in.FieldTextures[current])
+          .Int("fieldRadius", it.first)
+          .Int("fieldFillOnly", it.second);
+      });
+    current = next;
+  }
+
+  // 3. Fallbacks and the requested direction.
+  vtkTextureObject*& resolved = in.FieldTextures[2];
+  vtkStylizeShaderUtilities::EnsureScreenTexture(resolved, in.Window, w, h, GL_RGBA32F);
+  this->RenderStage(in.FieldStage + 2, { resolved }, w, h, [&](vtkStylizeUniforms& u) {
+    this->SetFieldUniforms(u, frame);
+    u.Texture("fieldInput", in.FieldTextures[current])
+      .Int("fieldGradientStride", std::max(1, static_cast<int>(std::lround(2.0 * pointSize))))
+      .Float2("fieldScreenDirection", std::cos(fallback), std::sin(fallback));
+  });
+  in.FieldResolved = 2;
+  return resolved;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkStylizeStylePass::GetDirectionFieldTexture()
+{
+  vtkInternals& in = *this->Internals;
+  return in.FieldResolved >= 0 ? in.FieldTextures[in.FieldResolved] : nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::FreeDirectionField()
+{
+  this->Internals->FreeField(this->Internals->Window);
 }

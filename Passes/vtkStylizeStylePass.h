@@ -101,10 +101,12 @@ protected:
    * `lightingModel`: the style's default lighting model (vtkStylizeLightingPass::Models).
    * `styleSource`: the style's GLSL (declarations and `mainCall`'s function), assembled after the
    * shared GLSL. `stageDefines`: one entry per stage, the #define that selects it ("" for
-   * none). `mainCall`: the statement main() runs, e.g. "  comicMain();\n".
+   * none). `mainCall`: the statement main() runs, e.g. "  comicMain();\n". `directionField`:
+   * the style draws along the principal direction field (RenderDirectionField()): the field's
+   * GLSL (vtkStylizeFieldFS) goes before the style's and its three stages after the style's.
    */
   vtkStylizeStylePass(int lightingModel, const char* styleSource,
-    std::vector<std::string> stageDefines, const char* mainCall);
+    std::vector<std::string> stageDefines, const char* mainCall, bool directionField = false);
   ~vtkStylizeStylePass() override;
 
   /** The frame being rendered, as the stages see it (filled by BeginFrame()). */
@@ -221,6 +223,55 @@ protected:
    * framebuffer. The window's context must be current. False when there is none.
    */
   bool DownloadTexture(vtkTextureObject* tex, vtkFloatArray* out);
+
+  /**
+   * Settings of the principal direction field (vtkStylizeFieldFS, docs/algorithms.md section 3),
+   * as vtkSketchPass exposes them (its comments give each one's meaning); lengths in points.
+   * The member initializers are the settings' defaults. Finite values are expected.
+   */
+  struct FieldSettings
+  {
+    int Neighbors = 8;              ///< 2, 4 or 8
+    double NeighborSpacing = 16.0;  ///< points at the focal distance
+    double MaxStride = 32.0;        ///< points
+    double ObjectScale = 0.01;      ///< share of the scene's diagonal
+    double SceneBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 }; ///< invalid: the props'
+    double PlanarTolerance = 1.0e-3;
+    double UmbilicTolerance = 0.05;
+    double SmoothingRadius = 16.0;  ///< points
+    int SmoothingIterations = 2;
+    double FillRadius = 16.0;       ///< points; 0: no fill
+    double FallbackAngle = 45.0;    ///< degrees
+    int Direction = 1;              ///< 0 smaller, 1 larger |curvature|, 2 their bisector
+    bool Model = false;             ///< the G-buffer's DIRECTION channel where it is defined
+  };
+
+  /** The #defines of the field's stages for `s` (add them to the style's defines). */
+  static std::string FieldDefines(const FieldSettings& s);
+
+  /** World size of a pixel at the camera's focal distance (1 when it is not finite). */
+  static double FocalPixelWorld(const Frame& frame);
+
+  /**
+   * Runs the field's stages (estimate, smoothing and fill, resolve) over the G-buffer of this
+   * frame, which must hold LINEAR_DEPTH and NORMAL (and DIRECTION for `s.Model`); the style's
+   * defines must include FieldDefines(s). `pointSize`: pixels per point. Returns the resolved
+   * field: xyz the view-space unit direction, w the linear depth (0: no surface).
+   */
+  vtkTextureObject* RenderDirectionField(
+    const Frame& frame, const FieldSettings& s, double pointSize);
+
+  /** The resolved field of the last RenderDirectionField() (nullptr when none). */
+  vtkTextureObject* GetDirectionFieldTexture();
+
+  /** Frees the field's textures (a frame that does not use the field). */
+  void FreeDirectionField();
+
+  /**
+   * The uniforms of vtkStylizeFieldFS' camera helpers (fieldSize, fieldProjection, ...), the
+   * G-buffer textures and the depth mapping: what a stage that calls the helpers needs.
+   */
+  void SetFieldUniforms(vtkStylizeUniforms& u, const Frame& frame);
 
   /** Frees everything a style made for its stages (ReleaseGraphicsResources() calls it). */
   virtual void ReleaseStyleResources(vtkWindow*) {}
