@@ -30,6 +30,8 @@ enum Textures
 struct vtkComicPass::Plan
 {
   bool DepthEdges, NormalEdges, ColorEdges, ObjectAnchor;
+  bool Principal;     // hatching along the principal direction field
+  FieldSettings Field; // its settings: the defaults
   double WeightSum; // of the enabled edge phases, 1 when none
   SceneRequest Scene;
   std::string Defines;
@@ -40,7 +42,7 @@ vtkStandardNewMacro(vtkComicPass);
 //------------------------------------------------------------------------------
 vtkComicPass::vtkComicPass()
   : vtkStylizeStylePass(vtkStylizeLightingPass::COMIC, vtkComicFS,
-      { "COMIC_STAGE_EDGES", "" }, "  comicMain();\n")
+      { "COMIC_STAGE_EDGES", "" }, "  comicMain();\n", true)
 {
 }
 
@@ -82,6 +84,8 @@ void vtkComicPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CrossHatching: " << this->CrossHatching << "\n";
   os << indent << "CrossThreshold: " << this->CrossThreshold << "\n";
   os << indent << "BrightThreshold: " << this->BrightThreshold << "\n";
+  os << indent << "HatchOrientation: " << (this->HatchOrientation == PRINCIPAL ? "principal" : "fixed")
+     << "\n";
   os << indent << "DarkThreshold: " << this->DarkThreshold << "\n";
   os << indent << "Tinted: " << this->Tinted << "\n";
   os << indent << "Anchor: " << (this->Anchor == OBJECT ? "object" : "screen") << "\n";
@@ -110,6 +114,14 @@ void vtkComicPass::Render(const vtkRenderState* s)
   {
     this->FreeTexture(EDGE_TEXTURE);
   }
+  if (plan.Principal)
+  {
+    this->RenderDirectionField(frame, plan.Field, this->PointSize(frame));
+  }
+  else
+  {
+    this->FreeDirectionField();
+  }
   this->RenderCompositeStage(frame, plan);
   this->EndFrame(s);
 }
@@ -126,10 +138,11 @@ vtkComicPass::Plan vtkComicPass::PlanFrame() const
   p.ColorEdges = edges && this->EdgeWeights[2] > 0.0;
   const bool patterns = this->Dots || this->Hatching;
   p.ObjectAnchor = patterns && this->Anchor == OBJECT;
+  p.Principal = this->Hatching && this->HatchOrientation == PRINCIPAL;
   const bool normalHatch = this->Hatching && this->HatchDirections > 0;
 
   p.Scene.Channels = vtkStylizeGBufferPass::LINEAR_DEPTH;
-  if (p.NormalEdges || normalHatch)
+  if (p.NormalEdges || normalHatch || p.Principal)
   {
     p.Scene.Channels |= vtkStylizeGBufferPass::NORMAL;
   }
@@ -139,7 +152,12 @@ vtkComicPass::Plan vtkComicPass::PlanFrame() const
     p.Scene.PositionSpace = vtkStylizeGBufferPass::OBJECT;
   }
 
+  if (p.Principal)
+  {
+    p.Defines = FieldDefines(p.Field);
+  }
   auto define = [&p](bool on, const std::string& name) { AddDefine(p.Defines, on, name); };
+  define(p.Principal, "COMIC_HATCH_PRINCIPAL");
   define(p.DepthEdges, "COMIC_DEPTH_EDGES");
   define(p.NormalEdges, "COMIC_NORMAL_EDGES");
   define(p.ColorEdges, "COMIC_COLOR_EDGES");
@@ -155,20 +173,25 @@ vtkComicPass::Plan vtkComicPass::PlanFrame() const
 //------------------------------------------------------------------------------
 void vtkComicPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, const Plan& plan)
 {
-  // Points -> pixels of the full (possibly tiled, magnified) image.
-  const double pointSize = this->ReferenceHeight > 0.0
-    ? frame.FullSize[1] / this->ReferenceHeight
-    : static_cast<double>(frame.TileScale[1]);
+  const double pointSize = this->PointSize(frame);
   // Object anchoring: pattern periods in world units, from the pixel size at the focal point
   // (constant while the camera orbits, proportional to the scene's scale).
-  const double focalPixel =
-    frame.Parallel ? frame.PixelWorld : frame.PixelWorld * frame.Camera->GetDistance();
+  const double focalPixel = FocalPixelWorld(frame);
   const double patternUnit = plan.ObjectAnchor ? focalPixel * pointSize : pointSize;
   const int stride = std::max(1, static_cast<int>(std::lround(this->EdgeWidth * pointSize)));
   const double* weights = this->EdgeWeights;
   const double dotAngle = vtkMath::RadiansFromDegrees(this->DotAngle);
 
-  this->BindSceneTextures(u);
+  if (plan.Principal)
+  {
+    this->SetFieldUniforms(u, frame); // the G-buffer textures and the field's camera
+    u.Texture("comicField", this->GetDirectionFieldTexture())
+      .Int("comicHatchSteps", this->HatchDirections > 0 ? this->HatchDirections : 8);
+  }
+  else
+  {
+    this->BindSceneTextures(u);
+  }
   u.Int2("comicSize", frame.Size[0], frame.Size[1])
     .Float2("comicPixelOffset", frame.FullOffset[0], frame.FullOffset[1])
     .Int("comicParallel", frame.Parallel ? 1 : 0)
@@ -189,6 +212,14 @@ void vtkComicPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, c
     .Float("comicDark", this->DarkThreshold)
     .Float("comicCross", this->CrossThreshold);
   this->SetSceneOutputUniforms(u, frame.Renderer);
+}
+
+//------------------------------------------------------------------------------
+double vtkComicPass::PointSize(const Frame& frame) const
+{
+  // Points -> pixels of the full (possibly tiled, magnified) image.
+  return this->ReferenceHeight > 0.0 ? frame.FullSize[1] / this->ReferenceHeight
+                                     : static_cast<double>(frame.TileScale[1]);
 }
 
 //------------------------------------------------------------------------------

@@ -57,6 +57,13 @@ public:
   };
 
   /** What the pass writes: the comic image, or one of its layers (for figures and tests). */
+  /** What orients the hatch lines. */
+  enum HatchOrientations
+  {
+    FIXED = 0,    ///< HatchAngle, or the screen-space normal in HatchDirections steps (eq. 12)
+    PRINCIPAL = 1 ///< around the form: the surface's direction of larger |curvature|
+  };
+
   enum Layers
   {
     COMIC = 0,  ///< the pattern times the edges (the comic image)
@@ -199,6 +206,20 @@ public:
   ///@}
 
   ///@{
+  /**
+   * What orients the hatch lines: FIXED (default) or PRINCIPAL. Values: FIXED, HatchAngle, or
+   * the screen-space normal in HatchDirections steps (eq. 12); PRINCIPAL, around the form: the
+   * surface's direction of larger |curvature|, from the per-pixel principal direction field
+   * that the sketch style draws along (vtkStylizeStylePass::RenderDirectionField(), at its
+   * default settings), quantized to HatchDirections steps over 180 degrees (8 when
+   * HatchDirections is 0) so that each region keeps straight lines. It costs the field's
+   * full-screen passes (about a dozen), and only when hatching is on.
+   */
+  vtkSetClampMacro(HatchOrientation, int, FIXED, PRINCIPAL);
+  vtkGetMacro(HatchOrientation, int);
+  ///@}
+
+  ///@{
   /** Cross the hatching with a second direction (+90 degrees) in the darkest zone. Default on. */
   vtkSetMacro(CrossHatching, bool);
   vtkGetMacro(CrossHatching, bool);
@@ -285,6 +306,7 @@ protected:
   double HatchWidth = 0.0;
   double HatchAngle = 135.0;
   int HatchDirections = 0;
+  int HatchOrientation = FIXED;
   bool CrossHatching = true;
   double CrossThreshold = 0.12;
   double BrightThreshold = 0.5;
@@ -299,6 +321,8 @@ protected:
   Plan PlanFrame() const;
   /** The uniforms both stages read. */
   void SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, const Plan& plan);
+  /** Pixels per point in this frame's full (possibly tiled, magnified) image. */
+  double PointSize(const Frame& frame) const;
   /** Stage 1 (colour edges only): luminance of f_normal, k1 and k2 into the edge texture. */
   void RenderEdgeStage(const Frame& frame, const Plan& plan);
   /** Stage 2: edges, pattern and ink into the output framebuffer, with the scene's depth. */

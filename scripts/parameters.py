@@ -1253,6 +1253,8 @@ CLI_COMIC = [
     ("ReferenceHeight", "--reference-height", "PX"), ("HatchDirections", "--hatch-directions", "N"),
     ("EdgeWeights", "--edge-weights", "D,N,C"),
     ("Anchor", "--anchor", "screen|object", {"screen": "SCREEN", "object": "OBJECT"}),
+    ("HatchOrientation", "--hatch-orientation", "fixed|principal",
+     {"fixed": "FIXED", "principal": "PRINCIPAL"}),
     ("Edges", "--no-edges", None), ("Dots", "--no-dots", None), ("Hatching", "--no-hatching", None),
     ("CrossHatching", "--no-cross", None), ("Tinted", "--tinted", None),
 ]

@@ -4,6 +4,8 @@
 //   COMIC_DEPTH_EDGES, COMIC_NORMAL_EDGES, COMIC_COLOR_EDGES   the enabled edge phases
 //   COMIC_DOTS, COMIC_HATCH, COMIC_CROSS                       the enabled patterns
 //   COMIC_OBJECT_ANCHOR   patterns anchored to the object-space position, not the screen
+//   COMIC_HATCH_PRINCIPAL hatch lines around the form, along the principal direction field
+//                         (vtkStylizeFieldFS, computed by the base before the composite stage)
 //   COMIC_TINTED          keep the data's hue under the ink
 //   COMIC_LAYER           0 the comic image, 1 the edge factor alone, 2 the pattern alone
 // Lengths arrive in pixels of the final (possibly magnified) image, already multiplied by the
@@ -29,6 +31,8 @@ uniform int comicHatchDirections;  // 0: one direction; n: normal-dependent, n s
 uniform float comicBright;         // a1 of eq. 13-14: dots above
 uniform float comicDark;           // a2 of eq. 13-14: hatching below
 uniform float comicCross;          // cross-hatching below this tone
+uniform sampler2D comicField;      // COMIC_HATCH_PRINCIPAL: xyz view-space direction, w depth
+uniform int comicHatchSteps;       // COMIC_HATCH_PRINCIPAL: angle steps over 180 degrees
 
 float comicLuminance(vec3 c)
 {
@@ -237,6 +241,22 @@ void comicMain()
   vec2 hatchUV = plane / comicHatchSpacing;
   float hatchAA = clamp(0.5 * max(fwidth(hatchUV.x), fwidth(hatchUV.y)), 1e-4, 0.5);
   float angle = comicHatchAngle;
+#ifdef COMIC_HATCH_PRINCIPAL
+  // Around the form: the screen angle of the field's direction (larger |curvature|), in
+  // comicHatchSteps steps over 180 degrees so that each region keeps straight lines.
+  vec4 principal = texelFetch(comicField, p, 0);
+  if (principal.w > 0.0)
+  {
+    vec2 f0 = vec2(p) + 0.5;
+    vec2 s = fieldProject(fieldViewPosition(f0, principal.w) +
+      principal.xyz * (1e-3 * fieldPixelWorldAt(principal.w))) - f0;
+    if (dot(s, s) > 1e-12)
+    {
+      float stepAngle = 3.14159265 / float(max(comicHatchSteps, 1));
+      angle = stepAngle * floor(atan(s.y, s.x) / stepAngle + 0.5);
+    }
+  }
+#else
   if (comicHatchDirections > 0)
   {
     // eq. 12: the direction follows the screen-space normal, in steps of 180/n degrees
@@ -248,6 +268,7 @@ void comicMain()
       angle += stepAngle * floor(phi / stepAngle + 0.5);
     }
   }
+#endif
   vec2 across = vec2(-sin(angle), cos(angle));
   // The line width: constant (eq. 11), or the tone's: one direction covers 1 - I, two crossed
   // directions of width 1 - sqrt(I) cover 1 - I together.

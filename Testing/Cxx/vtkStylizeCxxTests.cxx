@@ -15,6 +15,7 @@ int TestComicMagnify(int argc, char* argv[]);
 int TestComicExtremes(int argc, char* argv[]);
 int TestComicMotion(int argc, char* argv[]);
 int TestComicTone(int argc, char* argv[]);
+int TestComicHatchOrientation(int argc, char* argv[]);
 int TestComicEdgeAccuracy(int argc, char* argv[]);
 int TestPixelArtRegression(int argc, char* argv[]);
 int TestPixelArtDither(int argc, char* argv[]);
@@ -50,6 +51,7 @@ const Entry Tests[] = {
   { "TestComicExtremes", TestComicExtremes },
   { "TestComicMotion", TestComicMotion },
   { "TestComicTone", TestComicTone },
+  { "TestComicHatchOrientation", TestComicHatchOrientation },
   { "TestComicEdgeAccuracy", TestComicEdgeAccuracy },
   { "TestPixelArtRegression", TestPixelArtRegression },
   { "TestPixelArtDither", TestPixelArtDither },
