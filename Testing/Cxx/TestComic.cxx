@@ -604,6 +604,36 @@ int TestComicEdgeAccuracy(int, char*[])
   return stylizetest::Failures == 0 ? 0 : 1;
 }
 
+namespace
+{
+/**
+ * A w x h window on white with one actor of `source` (no specular) lit by one scene light at
+ * (x, 0, z), pointing at the origin.
+ */
+TestScene MakeSideLitScene(int w, int h, vtkPolyDataAlgorithm* source, double x, double z)
+{
+  TestScene scene;
+  scene.Window = MakeWindow(w, h);
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  scene.Window->AddRenderer(scene.Renderer);
+  scene.Renderer->SetBackground(1, 1, 1);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetSpecular(0.0);
+  scene.Renderer->AddActor(actor);
+  scene.Renderer->RemoveAllLights();
+  scene.Renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(x, 0.0, z);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  scene.Renderer->AddLight(light);
+  return scene;
+}
+}
+
 // Tone reproduction: the halftone's ink follows the lit tone in every zone. A sphere lit from the
 // side by the Standard model (a continuous tone from 1 to 0 across the visible half-disc),
 // no edges: the comic image's mean over each tone band (0.1 wide, 8 px blocks averaged) is
@@ -617,28 +647,14 @@ int TestComicTone(int, char*[])
   bool monotonic[2] = { true, true };
   for (int constant : { 0, 1 })
   {
-    auto window = MakeWindow(w, h);
-    vtkNew<vtkRenderer> ren;
-    window->AddRenderer(ren);
-    ren->SetBackground(1, 1, 1);
     vtkNew<vtkSphereSource> sphere;
     sphere->SetRadius(1.0);
     sphere->SetThetaResolution(256);
     sphere->SetPhiResolution(128);
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(sphere->GetOutputPort());
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetSpecular(0.0);
-    ren->AddActor(actor);
     // A light from the right: the tone runs from 1 to 0 across the visible half-disc.
-    ren->RemoveAllLights();
-    ren->AutomaticLightCreationOff();
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetPosition(4.0, 0.0, 2.0);
-    light->SetFocalPoint(0.0, 0.0, 0.0);
-    ren->AddLight(light);
+    auto scene = MakeSideLitScene(w, h, sphere, 4.0, 2.0);
+    vtkRenderWindow* window = scene.Window;
+    vtkRenderer* ren = scene.Renderer;
     ren->GetActiveCamera()->SetPosition(0, 0, 4.2);
     ren->GetActiveCamera()->SetFocalPoint(0, 0, 0);
     ren->ResetCameraClippingRange();
@@ -731,28 +747,14 @@ int TestComicHatchOrientation(int, char*[])
   double ratio[2] = { 0, 0 };
   for (int orientation : { vtkComicPass::FIXED, vtkComicPass::PRINCIPAL })
   {
-    auto window = MakeWindow(w, h);
-    vtkNew<vtkRenderer> ren;
-    window->AddRenderer(ren);
-    ren->SetBackground(1, 1, 1);
     vtkNew<vtkCylinderSource> cylinder; // axis along y
     cylinder->SetRadius(1.0);
     cylinder->SetHeight(4.0);
     cylinder->SetResolution(256);
     cylinder->CappingOff();
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(cylinder->GetOutputPort());
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetSpecular(0.0);
-    ren->AddActor(actor);
-    ren->RemoveAllLights();
-    ren->AutomaticLightCreationOff();
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetPosition(4.0, 0.0, 3.0);
-    light->SetFocalPoint(0.0, 0.0, 0.0);
-    ren->AddLight(light);
+    auto scene = MakeSideLitScene(w, h, cylinder, 4.0, 3.0);
+    vtkRenderWindow* window = scene.Window;
+    vtkRenderer* ren = scene.Renderer;
     vtkCamera* cam = ren->GetActiveCamera();
     cam->SetPosition(0, 0, 8);
     cam->SetFocalPoint(0, 0, 0);
