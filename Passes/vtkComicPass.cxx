@@ -84,9 +84,9 @@ void vtkComicPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CrossHatching: " << this->CrossHatching << "\n";
   os << indent << "CrossThreshold: " << this->CrossThreshold << "\n";
   os << indent << "BrightThreshold: " << this->BrightThreshold << "\n";
-  os << indent << "HatchOrientation: " << (this->HatchOrientation == PRINCIPAL ? "principal" : "fixed")
-     << "\n";
   os << indent << "DarkThreshold: " << this->DarkThreshold << "\n";
+  os << indent << "HatchOrientation: "
+     << (this->HatchOrientation == PRINCIPAL ? "principal" : "fixed") << "\n";
   os << indent << "Tinted: " << this->Tinted << "\n";
   os << indent << "Anchor: " << (this->Anchor == OBJECT ? "object" : "screen") << "\n";
   os << indent << "Layer: "

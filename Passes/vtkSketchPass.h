@@ -10,8 +10,9 @@
  *    with a vtkStylizeLightingPass (Standard model by default). Channels: linear depth and
  *    normals always (full float precision by default: the estimate differentiates normals),
  *    object-space positions for surface-fixed noise, the DIRECTION channel in model-space mode.
- * 2. Principal directions per pixel, by focal surfaces (DirectionSource SCREEN): 2, 4 or 8
- *    neighbours `Neighbors` in 1, 4 or 8 pairs. For each pair the focal quadratic is solved in
+ * 2. Principal directions per pixel (the styles' base's direction field, vtkStylizeFieldFS),
+ *    by focal surfaces (DirectionSource SCREEN): 2, 4 or 8 neighbours `Neighbors` in 1, 4 or
+ *    8 pairs. For each pair the focal quadratic is solved in
  *    the curvature 1/lambda (no overflow on flat ground); pairs with a negative discriminant,
  *    neighbours off the surface, collinear or planar pairs are skipped; the rays' points at the
  *    focal height of the larger |curvature| lie along the other principal direction and are
@@ -24,8 +25,9 @@
  *    mapped to the G-buffer's DIRECTION channel; pixels without it fall back to the estimate.
  * 3. Sign-invariant smoothing (doubled angles over 3x3 pixels of the same surface, weighted by
  *    the estimate's confidence) with taps doubling up to `SmoothingRadius`, then
- *    `SmoothingIterations` passes of neighbouring pixels, then fill iterations for undefined (planar, umbilic) pixels from their
- *    surface's defined neighbours at distances doubling up to `FillRadius`; pixels still
+ *    `SmoothingIterations` passes of neighbouring pixels, then fill iterations for undefined
+ *    (planar, umbilic) pixels from their surface's defined neighbours at distances doubling up
+ *    to `FillRadius`; pixels still
  *    undefined follow the isophotes of the lit image (structure tensor of its gradient), else a
  *    fixed screen direction: no surface pixel is left without a direction. `Direction` selects
  *    the direction drawn: MINIMUM or MAXIMUM curvature (by absolute value) or their BISECTOR.
