@@ -351,6 +351,12 @@ void vtkStylizeLightingPass::RenderWithLighting(const vtkRenderState* s, vtkRend
     ren->CreateLight();
     enabled = 1;
   }
+  if (this->Model != this->ShaderModel)
+  {
+    // Each model is compiled alone: the mappers rebuild their shaders (GetShaderStageMTime()).
+    this->ShaderModel = this->Model;
+    this->ModelTime.Modified();
+  }
   this->UpdateLightGeometry(ren); // camera-following lights to their place for this frame
   this->UploadLights(ren, renWin);
 
@@ -439,6 +445,12 @@ void vtkStylizeLightingPass::ReleaseGraphicsResources(vtkWindow* w)
 }
 
 //------------------------------------------------------------------------------
+vtkMTimeType vtkStylizeLightingPass::GetShaderStageMTime()
+{
+  return this->ModelTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
 bool vtkStylizeLightingPass::PreReplaceShaderValues(std::string&, std::string&,
   std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
@@ -471,7 +483,9 @@ bool vtkStylizeLightingPass::PostReplaceShaderValues(std::string&, std::string&,
   if (lit)
   {
     vtkStylizeShaderUtilities::InjectCommon(fragmentShader);
-    vtkShaderProgram::Substitute(fragmentShader, LightDecTag, vtkStylizeLightingDec, false);
+    vtkShaderProgram::Substitute(fragmentShader, LightDecTag,
+      "#define STYLIZE_MODEL " + std::to_string(this->Model) + "\n" + vtkStylizeLightingDec,
+      false);
     vtkShaderProgram::Substitute(fragmentShader, LightImplTag,
       std::string(vtkStylizeLightingImpl) + "\n  //VTK::Light::Impl", false);
   }
@@ -497,7 +511,6 @@ bool vtkStylizeLightingPass::SetShaderParameters(
   program->SetUniformi("stylizeLights", this->LightTexture->GetTextureUnit());
   program->SetUniformi("stylizeLightCount", this->NumberOfLights);
   program->SetUniformi("stylizeHeadlightOnly", this->HeadlightOnly);
-  program->SetUniformi("stylizeModel", this->Model);
   program->SetUniformf("stylizeSubjectFactor",
     static_cast<float>(ActorValue(prop, SUBJECT_FACTOR(), this->SubjectFactor, 0.0, 1.0)));
   program->SetUniformf("stylizeLevelsNear",

@@ -55,6 +55,7 @@
 
 #include "vtkOpenGLRenderPass.h"
 #include "vtkStylizePassesModule.h" // for export macro
+#include "vtkTimeStamp.h"            // for vtkTimeStamp
 
 #include <vector> // for std::vector
 
@@ -83,8 +84,10 @@ public:
 
   ///@{
   /**
-   * The lighting model, one of STANDARD, COMIC and PIXEL_ART. Default STANDARD.
-   * Changing it does not rebuild any shader (it is a uniform).
+   * The lighting model, one of STANDARD, COMIC and PIXEL_ART. Default STANDARD. Each model is
+   * compiled into the mappers' shaders alone (a #define, not a uniform branch: with the three
+   * models in one program the lighting cost twice VTK's own at one light on llvmpipe), so
+   * changing it rebuilds those shaders once; the light count never does.
    */
   vtkSetClampMacro(Model, int, STANDARD, PIXEL_ART);
   vtkGetMacro(Model, int);
@@ -218,6 +221,9 @@ public:
   /** Frees the light buffer and the delegate's resources. */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /** When the mappers' shaders must be rebuilt: the last change of Model. */
+  vtkMTimeType GetShaderStageMTime() override;
+
   ///@{
   /** vtkOpenGLRenderPass shader hooks. */
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
@@ -237,6 +243,8 @@ protected:
 
   vtkRenderPass* DelegatePass = nullptr;
   int Model = STANDARD;
+  int ShaderModel = -1;   // the model the mappers' shaders were last built for
+  vtkTimeStamp ModelTime; // when it changed: GetShaderStageMTime()
   double SubjectFactor = 0.35;
   double GrayLevelsNear = 6.0;
   double GrayLevelsFar = 6.0;

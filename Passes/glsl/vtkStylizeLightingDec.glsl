@@ -9,7 +9,7 @@
 uniform samplerBuffer stylizeLights;
 uniform int stylizeLightCount;      // number of enabled lights, >= 0
 uniform int stylizeHeadlightOnly;   // 1 when VTK would use its single-headlight shortcut
-uniform int stylizeModel;           // 0 Standard, 1 Comic, 2 PixelArt
+// STYLIZE_MODEL (a #define the pass puts before this text): 0 Standard, 1 Comic, 2 PixelArt.
 // Comic (docs/algorithms.md section 2)
 uniform float stylizeSubjectFactor; // p1 in [0, 1]
 uniform float stylizeLevelsNear;    // gray levels at the near end of the depth range, [0, 100]

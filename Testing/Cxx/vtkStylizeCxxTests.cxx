@@ -7,6 +7,7 @@ int TestStandardMatchesVTK(int argc, char* argv[]);
 int TestLightCountNoRebuild(int argc, char* argv[]);
 int TestLightingReference(int argc, char* argv[]);
 int TestLightingExtremes(int argc, char* argv[]);
+int TestLightingModelSwitch(int argc, char* argv[]);
 int TestGBuffer(int argc, char* argv[]);
 int TestSceneImage(int argc, char* argv[]);
 int TestComicRegression(int argc, char* argv[]);
@@ -43,6 +44,7 @@ const Entry Tests[] = {
   { "TestLightCountNoRebuild", TestLightCountNoRebuild },
   { "TestLightingReference", TestLightingReference },
   { "TestLightingExtremes", TestLightingExtremes },
+  { "TestLightingModelSwitch", TestLightingModelSwitch },
   { "TestGBuffer", TestGBuffer },
   { "TestSceneImage", TestSceneImage },
   { "TestComicRegression", TestComicRegression },
