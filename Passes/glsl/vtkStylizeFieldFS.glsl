@@ -80,6 +80,19 @@ bool fieldSurfaceAt(ivec2 p, out float d, out vec3 n)
   return d > 0.0 && n4.a >= 0.5;
 }
 
+// This stage's pixel p with its linear depth d and normal n; off the surface the stage writes
+// "no direction" (zero) and the caller returns.
+bool fieldStageStart(out ivec2 p, out float d, out vec3 n)
+{
+  p = fieldPixel();
+  if (!fieldSurfaceAt(p, d, n))
+  {
+    gl_FragData[0] = vec4(0.0);
+    return false;
+  }
+  return true;
+}
+
 // The doubled-angle vector (x^2 - y^2, 2 x y) = |v|^2 (cos 2a, sin 2a): v and -v give the same.
 vec2 fieldDoubled(vec2 v)
 {
@@ -173,12 +186,11 @@ void fieldPair(vec2 u1, vec2 m1, bool ok1, vec2 u2, vec2 m2, bool ok2, inout vec
 
 void stylizeFieldMain()
 {
-  ivec2 p = fieldPixel();
+  ivec2 p;
   float d0;
   vec3 n;
-  if (!fieldSurfaceAt(p, d0, n))
+  if (!fieldStageStart(p, d0, n))
   {
-    gl_FragData[0] = vec4(0.0);
     return;
   }
 #ifdef FIELD_MODEL
@@ -307,12 +319,11 @@ uniform vec2 fieldScreenDirection; // the last resort: a fixed screen direction
 
 void stylizeFieldMain()
 {
-  ivec2 p = fieldPixel();
+  ivec2 p;
   float d0;
   vec3 n;
-  if (!fieldSurfaceAt(p, d0, n))
+  if (!fieldStageStart(p, d0, n))
   {
-    gl_FragData[0] = vec4(0.0);
     return;
   }
   vec4 c = texelFetch(fieldInput, p, 0);
