@@ -234,8 +234,15 @@ void vtkComicPass::RenderEdgeStage(const Frame& frame, const Plan& plan)
 //------------------------------------------------------------------------------
 void vtkComicPass::RenderCompositeStage(const Frame& frame, const Plan& plan)
 {
-  this->RenderStageToOutput(frame, COMPOSITE_STAGE, true, [&](vtkStylizeUniforms& u) {
-    this->SetStageUniforms(u, frame, plan);
-    u.Texture("comicEdgeTexture", this->TextureSlot(EDGE_TEXTURE));
-  });
+  // Away from the scene only the outline (within the edge stride of a surface) differs from
+  // the background, unless colour edges also find the background's own gradients.
+  const int stride =
+    std::max(1, static_cast<int>(std::lround(this->EdgeWidth * this->PointSize(frame))));
+  this->RenderStageToOutput(
+    frame, COMPOSITE_STAGE, true,
+    [&](vtkStylizeUniforms& u) {
+      this->SetStageUniforms(u, frame, plan);
+      u.Texture("comicEdgeTexture", this->TextureSlot(EDGE_TEXTURE));
+    },
+    plan.ColorEdges ? -1 : stride);
 }

@@ -570,5 +570,5 @@ void vtkSketchPass::RenderFinalStage(const Frame& frame, const Plan& p)
       .Float3("sketchPencil", this->PencilColor[0], this->PencilColor[1], this->PencilColor[2])
       .Float3("sketchPaper", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2]);
     this->SetSceneOutputUniforms(u, frame.Renderer);
-  });
+  }, 0); // the background keeps its colour: the stage runs where the scene is
 }

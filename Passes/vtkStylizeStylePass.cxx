@@ -1,11 +1,14 @@
 #include "vtkStylizeStylePass.h"
 
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -24,6 +27,7 @@
 #include "vtkMatrix4x4.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <utility>
 
@@ -40,6 +44,7 @@ public:
   std::string Defines;
   std::vector<std::string> Declarations; // one per stage
   std::vector<std::unique_ptr<vtkStylizeScreenQuad>> Quads;
+  vtkStylizeScreenQuad BackgroundQuad; // the background around the scene's rectangle
 
   vtkOpenGLRenderWindow* Window = nullptr; // of the frame being rendered
   vtkOpenGLFramebufferObject* Framebuffer = nullptr;
@@ -81,6 +86,54 @@ public:
       vtkStylizeShaderUtilities::FreeTexture(t, w);
     }
     this->FieldResolved = -1;
+  }
+
+  // Stage timing (StageTimingOn()): the last frame's stages as (name, milliseconds, runs).
+  struct StageTime
+  {
+    std::string Name;
+    double Milliseconds = 0.0;
+    int Runs = 0;
+  };
+  bool Timing = false;
+  bool Culling = true; // BackgroundCullingOn()
+  std::vector<StageTime> Times;
+  std::chrono::steady_clock::time_point TimingStart;
+
+  void TimeBegin()
+  {
+    if (this->Timing)
+    {
+      glFinish();
+      this->TimingStart = std::chrono::steady_clock::now();
+    }
+  }
+
+  void TimeEnd(const std::string& name)
+  {
+    if (!this->Timing)
+    {
+      return;
+    }
+    glFinish();
+    const double ms = std::chrono::duration<double, std::milli>(
+      std::chrono::steady_clock::now() - this->TimingStart)
+                        .count();
+    auto it = std::find_if(this->Times.begin(), this->Times.end(),
+      [&](const StageTime& t) { return t.Name == name; });
+    if (it == this->Times.end())
+    {
+      this->Times.push_back(StageTime{ name, 0.0, 0 });
+      it = this->Times.end() - 1;
+    }
+    it->Milliseconds += ms;
+    it->Runs++;
+  }
+
+  std::string StageName(int stage) const
+  {
+    const std::string& d = this->StageDefines[stage];
+    return d.empty() ? "OUTPUT" : d;
   }
 
   // Makes stage `stage`'s program current; nullptr (and StageFailed) when it does not build.
@@ -152,9 +205,75 @@ vtkStylizeGBufferPass* vtkStylizeStylePass::GetGBufferPass()
 }
 
 //------------------------------------------------------------------------------
+void vtkStylizeStylePass::StageTimingOn()
+{
+  this->Internals->Timing = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::StageTimingOff()
+{
+  this->Internals->Timing = false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStylePass::GetStageTiming()
+{
+  return this->Internals->Timing;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::BackgroundCullingOn()
+{
+  this->Internals->Culling = true;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::BackgroundCullingOff()
+{
+  this->Internals->Culling = false;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStylePass::GetBackgroundCulling()
+{
+  return this->Internals->Culling;
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeStylePass::GetNumberOfTimedStages()
+{
+  return static_cast<int>(this->Internals->Times.size());
+}
+
+//------------------------------------------------------------------------------
+const char* vtkStylizeStylePass::GetTimedStageName(int i)
+{
+  const auto& t = this->Internals->Times;
+  return i >= 0 && i < static_cast<int>(t.size()) ? t[i].Name.c_str() : nullptr;
+}
+
+//------------------------------------------------------------------------------
+double vtkStylizeStylePass::GetTimedStageMilliseconds(int i)
+{
+  const auto& t = this->Internals->Times;
+  return i >= 0 && i < static_cast<int>(t.size()) ? t[i].Milliseconds : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeStylePass::GetTimedStageRuns(int i)
+{
+  const auto& t = this->Internals->Times;
+  return i >= 0 && i < static_cast<int>(t.size()) ? t[i].Runs : 0;
+}
+
+//------------------------------------------------------------------------------
 bool vtkStylizeStylePass::BeginFrame(const vtkRenderState* s, Frame& frame)
 {
   vtkOpenGLClearErrorMacro();
+  this->Internals->Times.clear();
   this->NumberOfRenderedProps = 0;
   this->Internals->StageFailed = false;
   vtkRenderer* ren = s->GetRenderer();
@@ -200,7 +319,10 @@ bool vtkStylizeStylePass::RenderScene(const vtkRenderState* s, const SceneReques
   const double* t = request.ScreenTransform;
   gbuffer->SetGeometryScreenTransform(t[0], t[1], t[2], t[3]);
   gbuffer->SetAfterScreenShift(request.AfterShift[0], request.AfterShift[1]);
-  if (!gbuffer->RenderGeometry(s))
+  this->Internals->TimeBegin();
+  const bool rendered = gbuffer->RenderGeometry(s);
+  this->Internals->TimeEnd("SCENE");
+  if (!rendered)
   {
     this->EndFrame(s);
     return false;
@@ -212,7 +334,9 @@ bool vtkStylizeStylePass::RenderScene(const vtkRenderState* s, const SceneReques
 void vtkStylizeStylePass::EndFrame(const vtkRenderState* s)
 {
   vtkStylizeGBufferPass* gbuffer = this->Internals->GBuffer;
+  this->Internals->TimeBegin();
   gbuffer->RenderAfterGeometry(s);
+  this->Internals->TimeEnd("AFTER");
   this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
   if (this->Internals->StageFailed)
   {
@@ -250,7 +374,8 @@ void vtkStylizeStylePass::AddDefine(std::string& defines, bool on, const std::st
 
 //------------------------------------------------------------------------------
 bool vtkStylizeStylePass::RenderStage(int stage,
-  std::initializer_list<vtkTextureObject*> targets, int w, int h, const StageUniforms& uniforms)
+  std::initializer_list<vtkTextureObject*> targets, int w, int h, const StageUniforms& uniforms,
+  int coverage)
 {
   vtkInternals& in = *this->Internals;
   vtkOpenGLRenderWindow* renWin = in.Window;
@@ -279,12 +404,41 @@ bool vtkStylizeStylePass::RenderStage(int stage,
   fbo->ActivateDrawBuffers(n);
   ostate->vtkglViewport(0, 0, w, h);
   ostate->vtkglScissor(0, 0, w, h);
+  // Surface-only stages: the targets are cleared to zero, then an early depth test against the
+  // G-buffer's depth (the quad at the far plane, GL_GREATER, no depth writes) leaves the
+  // background's fragments unshaded. A renderer that shades in blocks (llvmpipe, GPUs) skips a
+  // block with no surface pixel instead of running the stage's branches masked.
+  vtkTextureObject* depth = in.GBuffer->GetDepthTexture();
+  const bool skipBackground = in.Culling && coverage == SURFACE_PIXELS && depth &&
+    static_cast<int>(depth->GetWidth()) == w && static_cast<int>(depth->GetHeight()) == h;
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+  GLdouble depthRange[2] = { 0.0, 1.0 };
+  in.TimeBegin();
+  if (skipBackground)
+  {
+    ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    fbo->AddDepthAttachment(depth);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_GREATER);
+    ostate->vtkglDepthMask(GL_FALSE);
+    glGetDoublev(GL_DEPTH_RANGE, depthRange);
+    glDepthRange(1.0, 1.0);
+  }
   vtkShaderProgram* program = in.Prepare(stage);
   if (program)
   {
     vtkStylizeUniforms u(program);
     uniforms(u);
     in.Quads[stage]->Render();
+  }
+  in.TimeEnd(in.StageName(stage));
+  if (skipBackground)
+  {
+    glDepthRange(depthRange[0], depthRange[1]);
+    fbo->RemoveDepthAttachment();
   }
   fbo->RemoveColorAttachments(n);
   fbo->UnBind();
@@ -293,8 +447,8 @@ bool vtkStylizeStylePass::RenderStage(int stage,
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeStylePass::RenderStageToOutput(
-  const Frame& frame, int stage, bool writeDepth, const StageUniforms& uniforms)
+bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, bool writeDepth,
+  const StageUniforms& uniforms, int margin)
 {
   vtkInternals& in = *this->Internals;
   vtkOpenGLState* ostate = in.Window->GetState();
@@ -321,14 +475,123 @@ bool vtkStylizeStylePass::RenderStageToOutput(
     ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
     ostate->vtkglDisable(GL_DEPTH_TEST);
   }
+
+  // Outside the scene's rectangle the background program writes the background (four strips
+  // around it); the stage runs inside it only.
+  int rect[4] = { 0, 0, frame.Size[0], frame.Size[1] };
+  const bool split = in.Culling && writeDepth && margin >= 0 && this->SceneRectangle(frame, margin, rect);
+  if (split)
+  {
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
+    in.TimeBegin();
+    vtkShaderProgram* background = in.BackgroundQuad.Prepare(in.Window,
+      std::string("#define STYLIZE_STAGE_BACKGROUND\n") + vtkStylizeCommonFS + vtkStylizeDepthFS +
+        vtkStylizeScreenFS,
+      "  stylizeBackgroundMain();\n");
+    in.StageFailed = in.StageFailed || !background;
+    if (background)
+    {
+      vtkStylizeUniforms u(background);
+      this->BindSceneTextures(u);
+      this->SetSceneOutputUniforms(u, frame.Renderer);
+      const int strips[4][4] = { { 0, 0, frame.Size[0], rect[1] },
+        { 0, rect[3], frame.Size[0], frame.Size[1] }, { 0, rect[1], rect[0], rect[3] },
+        { rect[2], rect[1], frame.Size[0], rect[3] } };
+      for (const auto& b : strips)
+      {
+        if (b[2] > b[0] && b[3] > b[1])
+        {
+          ostate->vtkglScissor(
+            frame.Origin[0] + b[0], frame.Origin[1] + b[1], b[2] - b[0], b[3] - b[1]);
+          in.BackgroundQuad.Render();
+        }
+      }
+    }
+    in.TimeEnd("BACKGROUND");
+    if (rect[2] <= rect[0] || rect[3] <= rect[1])
+    {
+      return background != nullptr; // nothing of the scene is in view
+    }
+    ostate->vtkglScissor(
+      frame.Origin[0] + rect[0], frame.Origin[1] + rect[1], rect[2] - rect[0], rect[3] - rect[1]);
+  }
   vtkShaderProgram* program = in.Prepare(stage);
   if (program)
   {
     vtkStylizeUniforms u(program);
     uniforms(u);
+    in.TimeBegin();
     in.Quads[stage]->Render();
+    in.TimeEnd(in.StageName(stage));
   }
   return program != nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStylePass::SceneRectangle(const Frame& frame, int margin, int rect[4])
+{
+  // A scene from an image (IceT's composited picture) holds more than the local props.
+  if (this->Internals->GBuffer->GetSceneFromImage() || !frame.Camera)
+  {
+    return false;
+  }
+  double b[6];
+  frame.Renderer->ComputeVisiblePropBounds(b);
+  if (!vtkMath::AreBoundsInitialized(b) ||
+    !std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
+  {
+    return false;
+  }
+  // Points and lines reach half their size beyond their vertices.
+  double extent = 0.0;
+  vtkActorCollection* actors = frame.Renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    if (actor->GetVisibility() && actor->GetProperty())
+    {
+      extent = std::max(extent,
+        static_cast<double>(
+          std::max(actor->GetProperty()->GetPointSize(), actor->GetProperty()->GetLineWidth())));
+    }
+  }
+  const double pad = margin + 2.0 +
+    std::ceil(extent * std::max(frame.TileScale[0], frame.TileScale[1]));
+  vtkMatrix4x4* m = frame.Camera->GetCompositeProjectionTransformMatrix(
+    frame.Renderer->GetTiledAspectRatio(), -1.0, 1.0);
+  double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, hi[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double x[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
+      1.0 };
+    double c[4];
+    m->MultiplyPoint(x, c);
+    if (!(c[3] > 1e-6 * (std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2]))) ||
+      !std::isfinite(c[3]))
+    {
+      return false; // a corner behind the eye: the projection does not bound the scene
+    }
+    for (int a = 0; a < 2; ++a)
+    {
+      const double pixel = (c[a] / c[3] + 1.0) * 0.5 * frame.Size[a];
+      lo[a] = std::min(lo[a], pixel);
+      hi[a] = std::max(hi[a], pixel);
+    }
+  }
+  for (int a = 0; a < 2; ++a)
+  {
+    const double l = std::floor(lo[a] - pad), h = std::ceil(hi[a] + pad);
+    if (!std::isfinite(l) || !std::isfinite(h))
+    {
+      return false;
+    }
+    rect[a] = static_cast<int>(std::max(0.0, std::min(l, static_cast<double>(frame.Size[a]))));
+    rect[a + 2] =
+      static_cast<int>(std::max(0.0, std::min(h, static_cast<double>(frame.Size[a]))));
+  }
+  // Worth it only when the rectangle leaves a part of the viewport out.
+  return rect[0] > 0 || rect[1] > 0 || rect[2] < frame.Size[0] || rect[3] < frame.Size[1];
 }
 
 //------------------------------------------------------------------------------
@@ -433,6 +696,7 @@ void vtkStylizeStylePass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   vtkInternals& in = *this->Internals;
+  in.BackgroundQuad.Release(w);
   for (auto& quad : in.Quads)
   {
     quad->Release(w);
@@ -523,6 +787,8 @@ vtkTextureObject* vtkStylizeStylePass::RenderDirectionField(
   const double fillRadius = s.FillRadius > 0.0 ? std::max(1.0, s.FillRadius * pointSize) : -1.0;
   const double fallback = vtkMath::RadiansFromDegrees(s.FallbackAngle);
 
+  // Every stage computes only the surface's pixels (SURFACE_PIXELS): the background is zero,
+  // "no direction", in every texture of the field.
   // 1. Raw directions.
   vtkTextureObject*& raw0 = in.FieldTextures[0];
   vtkStylizeShaderUtilities::EnsureScreenTexture(raw0, in.Window, w, h, GL_RGBA16F);
@@ -532,7 +798,7 @@ vtkTextureObject* vtkStylizeStylePass::RenderDirectionField(
       .Int("fieldMaxStride", maxStride)
       .Float("fieldPlanar", s.PlanarTolerance)
       .Float("fieldUmbilic", s.UmbilicTolerance);
-  });
+  }, SURFACE_PIXELS);
 
   // 2. Smoothing (all pixels, 3x3 at tap distances 1, 2, 4, ... points up to the smoothing
   // radius, then at distance 1 pixel), then filling (undefined pixels, distances 1, 2, 4, ...).
@@ -570,7 +836,8 @@ vtkTextureObject* vtkStylizeStylePass::RenderDirectionField(
         u.Texture("fieldInput", in.FieldTextures[current])
           .Int("fieldRadius", it.first)
           .Int("fieldFillOnly", it.second);
-      });
+      },
+      SURFACE_PIXELS);
     current = next;
   }
 
@@ -582,7 +849,7 @@ vtkTextureObject* vtkStylizeStylePass::RenderDirectionField(
     u.Texture("fieldInput", in.FieldTextures[current])
       .Int("fieldGradientStride", std::max(1, static_cast<int>(std::lround(2.0 * pointSize))))
       .Float2("fieldScreenDirection", std::cos(fallback), std::sin(fallback));
-  });
+  }, SURFACE_PIXELS);
   in.FieldResolved = 2;
   return resolved;
 }

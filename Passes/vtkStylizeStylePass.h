@@ -96,6 +96,43 @@ public:
   /** Frees the G-buffer, the stage programs, the intermediate textures and the framebuffer. */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  ///@{
+  /**
+   * Background culling (not a style setting: the picture is the same either way): stages that
+   * compute surface pixels only skip the background by an early depth test against the
+   * G-buffer, and the final stage runs only within the scene's screen rectangle, the base
+   * writing the background around it. On by default; off computes every pixel in every stage,
+   * for comparisons and tests.
+   */
+  void BackgroundCullingOn();
+  void BackgroundCullingOff();
+  bool GetBackgroundCulling();
+  ///@}
+
+  ///@{
+  /**
+   * Stage timing, for benchmarks and profiling (not a style setting): while on, every stage of a
+   * frame waits for the renderer to finish before and after it (glFinish), and its wall-clock
+   * time is recorded. The waits make the frame slower than an untimed one. Off by default.
+   */
+  void StageTimingOn();
+  void StageTimingOff();
+  bool GetStageTiming();
+  ///@}
+
+  ///@{
+  /**
+   * The last timed frame's stages, in the order they first ran: their number, their names (the
+   * stage's #define, e.g. FIELD_STAGE_SMOOTH; SCENE for the lighting and G-buffer render of the
+   * scene, AFTER for what follows the stylized image, OUTPUT for a final stage without a
+   * #define), the milliseconds summed over the stage's runs in that frame, and its runs.
+   */
+  int GetNumberOfTimedStages();
+  const char* GetTimedStageName(int i);
+  double GetTimedStageMilliseconds(int i);
+  int GetTimedStageRuns(int i);
+  ///@}
+
 protected:
   /**
    * `lightingModel`: the style's default lighting model (vtkStylizeLightingPass::Models).
@@ -173,21 +210,48 @@ protected:
   /** The uniforms a stage sets (textures, numbers), given the program's binder. */
   using StageUniforms = std::function<void(vtkStylizeUniforms&)>;
 
+  /** Which pixels a stage computes (RenderStage()). */
+  enum StageCoverage
+  {
+    /** every pixel */
+    ALL_PIXELS = 0,
+    /**
+     * The pixels the G-buffer's depth covers (surfaces, lines, points); the others keep zero in
+     * every target. Applies when the stage runs at the G-buffer's resolution (else: every
+     * pixel). The stage must not sample the G-buffer's window depth (stylizeDepthTexture),
+     * which is then its framebuffer's depth attachment; the linear depth is free to read.
+     */
+    SURFACE_PIXELS = 1
+  };
+
   /**
    * Runs stage `stage` into `targets` (colour attachments 0, 1, ... of the style's framebuffer),
-   * over w x h pixels, without blending or depth test. Returns false when its program does not
-   * build (reported once per frame by EndFrame()).
+   * over w x h pixels, without blending, for the pixels `coverage` (StageCoverage) names.
+   * Returns false when its program does not build (reported once per frame by EndFrame()).
    */
   bool RenderStage(int stage, std::initializer_list<vtkTextureObject*> targets, int w, int h,
-    const StageUniforms& uniforms);
+    const StageUniforms& uniforms, int coverage = ALL_PIXELS);
 
   /**
    * Runs stage `stage` into the output framebuffer over the frame's viewport. `writeDepth`:
    * the stage writes gl_FragDepth (depth test always passes); otherwise the viewport's depth is
-   * cleared to the far plane and not tested.
+   * cleared to the far plane and not tested. `margin` >= 0 (with `writeDepth`): the stage writes
+   * nothing but the background (stylizeBackgroundMain() in vtkStylizeScreenFS: the saturated
+   * colour, the background's alpha and depth, discarded in layered renderers) farther than
+   * `margin` pixels from the scene (SceneRectangle()); the base then writes the background
+   * there itself with that cheap program and runs the stage inside the rectangle only.
+   * < 0: the stage runs over the whole viewport.
    */
-  bool RenderStageToOutput(
-    const Frame& frame, int stage, bool writeDepth, const StageUniforms& uniforms);
+  bool RenderStageToOutput(const Frame& frame, int stage, bool writeDepth,
+    const StageUniforms& uniforms, int margin = -1);
+
+  /**
+   * The viewport's pixels where the scene can be: the screen rectangle of the visible props'
+   * bounds, grown by `margin` pixels plus the largest point size and line width, clipped to the
+   * viewport; rect = x0, y0, x1, y1 (x1, y1 exclusive; may be empty). False when it cannot be
+   * bounded (a scene from an image, no bounds, a corner behind the eye) or covers the viewport.
+   */
+  bool SceneRectangle(const Frame& frame, int margin, int rect[4]);
 
   /** Binds the G-buffer's textures of the last frame under their shared sampler names. */
   void BindSceneTextures(vtkStylizeUniforms& u);

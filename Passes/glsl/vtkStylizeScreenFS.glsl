@@ -67,3 +67,21 @@ float stylizeOutputAlpha(bool background, float imageAlpha, float ink)
 {
   return (background && stylizeSceneFromImage == 1) ? clamp(max(imageAlpha, ink), 0.0, 1.0) : 1.0;
 }
+
+#ifdef STYLIZE_STAGE_BACKGROUND
+// The background as every style's final stage writes it, for the pixels away from the scene
+// (vtkStylizeStylePass::RenderStageToOutput()): the saturated colour with the background's
+// alpha and depth; layered renderers keep the layer below.
+void stylizeBackgroundMain()
+{
+  ivec2 size = textureSize(stylizeColorTexture, 0);
+  ivec2 p = clamp(ivec2(texCoord * vec2(size)), ivec2(0), size - 1);
+  if (stylizeDiscardBackground == 1)
+  {
+    discard;
+  }
+  vec4 image = texelFetch(stylizeColorTexture, p, 0);
+  gl_FragData[0] = vec4(stylizeSaturateFinite(image.rgb), stylizeOutputAlpha(true, image.a, 0.0));
+  gl_FragDepth = stylizeWindowDepth(texelFetch(stylizeDepthTexture, p, 0).r);
+}
+#endif
