@@ -981,3 +981,16 @@ bool vtkStylizeGBufferPass::SetShaderParameters(
   }
   return true;
 }
+
+//------------------------------------------------------------------------------
+vtkIdType vtkStylizeGBufferPass::GetTextureBytes()
+{
+  vtkIdType total = 0;
+  for (vtkTextureObject* t : { this->ColorTexture, this->NormalTexture, this->PositionTexture,
+         this->LinearDepthTexture, this->DepthTexture, this->DirectionTexture,
+         this->ImageColorTexture, this->ImageDepthTexture })
+  {
+    total += vtkStylizeShaderUtilities::TextureBytes(t);
+  }
+  return total;
+}

@@ -195,6 +195,12 @@ public:
   vtkGetObjectMacro(LinearDepthTexture, vtkTextureObject);
   vtkGetObjectMacro(DepthTexture, vtkTextureObject);
   vtkGetObjectMacro(DirectionTexture, vtkTextureObject);
+
+  /**
+   * Bytes the G-buffer's textures hold on the device (channels, depth and, for a scene from an
+   * image, the image's colour and depth), for memory reports.
+   */
+  vtkIdType GetTextureBytes();
   ///@}
 
   /**

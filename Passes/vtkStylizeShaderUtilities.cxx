@@ -270,3 +270,51 @@ vtkStylizeUniforms& vtkStylizeUniforms::Texture(
   }
   return *this;
 }
+
+//------------------------------------------------------------------------------
+vtkIdType vtkStylizeShaderUtilities::TextureBytes(vtkTextureObject* t)
+{
+  if (!t || !t->GetHandle())
+  {
+    return 0;
+  }
+  int texel = 0;
+  // Depth textures (AllocateDepth(Float32)) keep their format, not an internal format.
+  const unsigned int format = t->GetFormat(VTK_FLOAT, 1, false) == GL_DEPTH_COMPONENT
+    ? GL_DEPTH_COMPONENT32F
+    : t->GetInternalFormat(VTK_FLOAT, 4, false);
+  switch (format)
+  {
+    case GL_RGBA32F:
+      texel = 16;
+      break;
+    case GL_RGBA16F:
+    case GL_RG32F:
+      texel = 8;
+      break;
+    case GL_RGB32F:
+      texel = 12;
+      break;
+    case GL_RGB16F:
+      texel = 6;
+      break;
+    case GL_R32F:
+    case GL_RG16F:
+    case GL_RGBA8:
+    case GL_DEPTH_COMPONENT32F:
+    case GL_DEPTH24_STENCIL8:
+      texel = 4;
+      break;
+    case GL_R16F:
+    case GL_RG8:
+      texel = 2;
+      break;
+    case GL_R8:
+      texel = 1;
+      break;
+    default:
+      texel = 16; // unknown: counted as the largest colour format
+  }
+  return static_cast<vtkIdType>(t->GetWidth()) * t->GetHeight() *
+    std::max(1, static_cast<int>(t->GetDepth())) * texel;
+}

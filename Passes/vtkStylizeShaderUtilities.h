@@ -49,6 +49,10 @@ public:
   /** Releases (when w is given) and deletes a texture; sets the pointer to nullptr. */
   static void FreeTexture(vtkTextureObject*& tex, vtkWindow* w);
 
+  /** Bytes a texture holds on the device (width x height x depth x texel size of its internal
+   * format); 0 for none or an unallocated one. */
+  static vtkIdType TextureBytes(vtkTextureObject* tex);
+
   /** The full image a renderer's viewport belongs to (vtkWindowToImageFilter tiles included). */
   struct FullImage
   {

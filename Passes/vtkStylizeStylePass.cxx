@@ -243,6 +243,22 @@ bool vtkStylizeStylePass::GetBackgroundCulling()
 }
 
 //------------------------------------------------------------------------------
+vtkIdType vtkStylizeStylePass::GetTextureBytes()
+{
+  vtkInternals& in = *this->Internals;
+  vtkIdType total = in.GBuffer->GetTextureBytes();
+  for (vtkTextureObject* t : in.Textures)
+  {
+    total += vtkStylizeShaderUtilities::TextureBytes(t);
+  }
+  for (vtkTextureObject* t : in.FieldTextures)
+  {
+    total += vtkStylizeShaderUtilities::TextureBytes(t);
+  }
+  return total;
+}
+
+//------------------------------------------------------------------------------
 int vtkStylizeStylePass::GetNumberOfTimedStages()
 {
   return static_cast<int>(this->Internals->Times.size());

@@ -96,6 +96,13 @@ public:
   /** Frees the G-buffer, the stage programs, the intermediate textures and the framebuffer. */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /**
+   * Bytes of device memory the style's textures hold after the last frame: the G-buffer's
+   * (vtkStylizeGBufferPass::GetTextureBytes()), the style's intermediate targets and the
+   * direction field's. Divide by the viewport's pixels for bytes per pixel.
+   */
+  vtkIdType GetTextureBytes();
+
   ///@{
   /**
    * Background culling (not a style setting: the picture is the same either way): stages that

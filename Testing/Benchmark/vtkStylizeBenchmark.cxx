@@ -39,6 +39,7 @@
 #include "vtkSphereSource.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
+#include "vtkStylizeStylePass.h"
 #include "vtkVersion.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -87,7 +88,8 @@ const std::vector<std::string>& AllConfigs()
     "light-standard", "light-comic", "light-pixelart", "gbuf-standard", "gbuf-comic",
     "gbuf-pixelart", "gbuf-standard-color", "gbuf-comic-lin", "comic", "comic-geometric", "pixel-fast-2",
     "pixel-fast-4", "pixel-fast-8", "pixel-faithful-2", "pixel-faithful-4", "pixel-faithful-8", "sketch-2", "sketch-4", "sketch-8",
-    "sketch-8-stage", "comic-image", "pixel-image", "sketch-image" };
+    "sketch-8-stage", "comic-image", "pixel-image", "sketch-image", "comic-nocull",
+    "sketch-8-nocull" };
   return configs;
 }
 
@@ -152,6 +154,8 @@ void PrintHelp(const char* argv0)
   }
   std::cout
     << "\n"
+    << "                    (NAME-nocull: the style NAME with background culling off);\n"
+    << "                    styles also report per-stage costs and memory per pixel\n"
     << "  --csv FILE        CSV output (default benchmark.csv)\n"
     << "  --markdown FILE   Markdown output (default benchmark.md), also printed to stdout\n"
     << "  --images DIR      also write the last frame of every case as DIR/<scene>-<lights>-<config>.png\n"
@@ -422,8 +426,30 @@ struct ConfigPasses
   std::string Description;
 };
 
+ConfigPasses MakeConfig(const std::string& name, double diagonal);
+
+/**
+ * NAME-nocull: configuration NAME (a style) with background culling off
+ * (vtkStylizeStylePass::BackgroundCullingOff(): every stage over every pixel, the styles' cost
+ * before issue 15's culling; the pictures are identical).
+ */
+ConfigPasses MakeNoCullConfig(const std::string& name, double diagonal)
+{
+  ConfigPasses c = MakeConfig(name.substr(0, name.size() - 7), diagonal);
+  if (auto* style = vtkStylizeStylePass::SafeDownCast(c.Root))
+  {
+    style->BackgroundCullingOff();
+    c.Description += "; background culling off (every stage over every pixel)";
+  }
+  return c;
+}
+
 ConfigPasses MakeConfig(const std::string& name, double diagonal)
 {
+  if (name.size() > 7 && name.compare(name.size() - 7, 7, "-nocull") == 0)
+  {
+    return MakeNoCullConfig(name, diagonal);
+  }
   ConfigPasses c;
   auto lighting = [&](const std::string& model) {
     auto pass = vtkSmartPointer<vtkStylizeLightingPass>::New();
@@ -582,6 +608,18 @@ ConfigPasses MakeConfig(const std::string& name, double diagonal)
 
 //------------------------------------------------------------------------------------------------
 // Measurements
+
+/** Per-stage milliseconds of a style (vtkStylizeStylePass::StageTimingOn()), medians. */
+struct StageResult
+{
+  std::string Scene;
+  int Lights = 0;
+  std::string Config;
+  std::vector<std::pair<std::string, double>> Stages; // name (with runs), median ms
+  double Frame = 0.0; // median of the timed frames' totals (waits between stages included)
+  double BytesPerPixel = 0.0; // the style's textures (GetTextureBytes()) per viewport pixel
+};
+std::vector<StageResult> StageResults;
 
 struct Result
 {
@@ -1241,6 +1279,51 @@ void RunAll(const Options& opt, const std::vector<vtkSmartPointer<vtkPolyData>>&
           b->Times.push_back(b->Frame());
         }
       }
+      // Per-stage costs: three more frames of each style with stage timing on (each stage
+      // then waits for the renderer, so these frames are a little slower than the timed ones).
+      for (auto& b : benches)
+      {
+        auto* style = vtkStylizeStylePass::SafeDownCast(b->Passes.Root);
+        if (!style)
+        {
+          continue;
+        }
+        style->StageTimingOn();
+        std::map<std::string, std::vector<double>> times;
+        std::vector<std::string> order;
+        std::vector<double> frames;
+        for (int i = 0; i < 3; ++i)
+        {
+          frames.push_back(b->Frame());
+          for (int k = 0; k < style->GetNumberOfTimedStages(); ++k)
+          {
+            std::string name = style->GetTimedStageName(k);
+            const int runs = style->GetTimedStageRuns(k);
+            if (runs > 1)
+            {
+              name += " x" + std::to_string(runs);
+            }
+            if (!times.count(name))
+            {
+              order.push_back(name);
+            }
+            times[name].push_back(style->GetTimedStageMilliseconds(k));
+          }
+        }
+        style->StageTimingOff();
+        StageResult sr;
+        sr.BytesPerPixel =
+          static_cast<double>(style->GetTextureBytes()) / (double(opt.Width) * opt.Height);
+        sr.Scene = scene.Name;
+        sr.Lights = lights;
+        sr.Config = b->Config;
+        sr.Frame = Median(frames);
+        for (const auto& name : order)
+        {
+          sr.Stages.emplace_back(name, Median(times[name]));
+        }
+        StageResults.push_back(sr);
+      }
       for (auto& b : benches)
       {
         Result r;
@@ -1392,6 +1475,31 @@ int main(int argc, char* argv[])
   Report report(opt, results);
   std::ostringstream md;
   report.Write(md, header.str());
+  if (!StageResults.empty())
+  {
+    md << "\n### Per-stage cost\n\n"
+       << "Median ms of each stage over 3 frames with stage timing on "
+          "(vtkStylizeStylePass::StageTimingOn(): glFinish before and after each stage). "
+          "SCENE: the lighting and G-buffer render of the geometry; BACKGROUND: the background "
+          "written around the scene's rectangle; OUTPUT: a final stage without a name; AFTER: "
+          "what follows the stylized image; xN: the stage ran N times (summed). Memory: bytes "
+          "per pixel of the style's textures (G-buffer, intermediate targets, direction field; "
+          "vtkStylizeStylePass::GetTextureBytes()).\n\n"
+       << "| scene | lights | configuration | frame (timed) | memory (B/pixel) | stages |\n"
+       << "| --- | ---: | --- | ---: | ---: | --- |\n";
+    for (const auto& sr : StageResults)
+    {
+      md << "| " << SceneLabel(sr.Scene) << " | " << sr.Lights << " | " << sr.Config << " | "
+         << Fixed(sr.Frame, 1) << " | " << Fixed(sr.BytesPerPixel, 1) << " |";
+      const char* sep = " ";
+      for (const auto& st : sr.Stages)
+      {
+        md << sep << st.first << " " << Fixed(st.second, 1);
+        sep = ", ";
+      }
+      md << " |\n";
+    }
+  }
 
   bool ok = true;
   {
