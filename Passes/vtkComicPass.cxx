@@ -99,9 +99,13 @@ void vtkComicPass::Render(const vtkRenderState* s)
 {
   // Black and white: the tone is the light alone; tinted: the lit colour keeps the data's hue.
   this->GetLightingPass()->SetMonochrome(!this->Tinted);
-  const Plan plan = this->PlanFrame();
   Frame frame;
-  if (!this->BeginFrame(s, frame) || !this->RenderScene(s, plan.Scene))
+  if (!this->BeginFrame(s, frame))
+  {
+    return;
+  }
+  const Plan plan = this->PlanFrame(frame.Interactive);
+  if (!this->RenderScene(s, plan.Scene))
   {
     return;
   }
@@ -127,18 +131,21 @@ void vtkComicPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-vtkComicPass::Plan vtkComicPass::PlanFrame() const
+vtkComicPass::Plan vtkComicPass::PlanFrame(bool interactive) const
 {
   Plan p;
   const double weightSum = this->EdgeWeights[0] + this->EdgeWeights[1] + this->EdgeWeights[2];
   const bool edges = this->Edges && weightSum > 0.0;
   p.WeightSum = weightSum > 0.0 ? weightSum : 1.0;
   p.DepthEdges = edges && this->EdgeWeights[0] > 0.0;
-  p.NormalEdges = edges && this->EdgeWeights[1] > 0.0;
-  p.ColorEdges = edges && this->EdgeWeights[2] > 0.0;
+  // The interactive variant draws the outline and the patterns only: no normal or colour edges
+  // (the normal channel is not rendered unless normal-directed hatching reads it) and hatching
+  // at the fixed angle (no direction field).
+  p.NormalEdges = edges && this->EdgeWeights[1] > 0.0 && !interactive;
+  p.ColorEdges = edges && this->EdgeWeights[2] > 0.0 && !interactive;
   const bool patterns = this->Dots || this->Hatching;
   p.ObjectAnchor = patterns && this->Anchor == OBJECT;
-  p.Principal = this->Hatching && this->HatchOrientation == PRINCIPAL;
+  p.Principal = this->Hatching && this->HatchOrientation == PRINCIPAL && !interactive;
   const bool normalHatch = this->Hatching && this->HatchDirections > 0;
 
   p.Scene.Channels = vtkStylizeGBufferPass::LINEAR_DEPTH;

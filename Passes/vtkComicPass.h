@@ -29,6 +29,10 @@
  * surface (OBJECT: a triplanar projection of the object-space position), which does not swim
  * when the camera orbits.
  *
+ * Interactive variant (while the window renders at InteractiveUpdateRate or faster, e.g. while
+ * the user drags): the depth outline and the patterns only, without normal and colour edges,
+ * hatching at HatchAngle (no direction field). The still frame is the full comic.
+ *
  * The 2D overlay, translucent geometry and volumes are drawn after the comic image, unstylized
  * but lit by the same lighting pass, and depth-tested against the comic image's depth.
  *
@@ -318,7 +322,7 @@ protected:
 
   /** What a frame computes (the enabled stages, their channels and defines). */
   struct Plan;
-  Plan PlanFrame() const;
+  Plan PlanFrame(bool interactive) const;
   /** The uniforms both stages read. */
   void SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, const Plan& plan);
   /** Pixels per point in this frame's full (possibly tiled, magnified) image. */

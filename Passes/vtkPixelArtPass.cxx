@@ -363,7 +363,7 @@ vtkPixelArtPass::Plan vtkPixelArtPass::PlanFrame(const vtkRenderState* s, const 
   this->PlanPalette(s, p);
 
   // What this frame computes.
-  p.Fast = this->Mode == FAST;
+  p.Fast = this->Mode == FAST || frame.Interactive; // the interactive variant is FAST
   p.WriteDepth = this->DepthOutput == DEPTH_ALWAYS;
   for (int i = 0; i < s->GetPropArrayCount() && !p.WriteDepth; ++i)
   {

@@ -18,6 +18,8 @@
  *      the block's surface samples (the background's otherwise): every surface pixel counts,
  *      thin features and shading are not aliased, silhouettes stay hard (no halo of background
  *      colour). Blocks larger than 16 x 16 pixels are reduced from 16 x 16 evenly spaced samples.
+ *    The interactive variant (while the window renders at InteractiveUpdateRate or faster,
+ *    e.g. while the user drags) is FAST; the still frame uses Mode.
  * 2. Edges on the art-pixel image (eq. 5-7): grayscale (mean of R, G, B), the paper's 3x3
  *    Gaussian (sigma = 1), Sobel, then either a plain threshold (SOBEL, the paper's first
  *    version, ragged) or Canny (CANNY: non-maximum suppression along the gradient, double

@@ -47,8 +47,13 @@
  *
  * Lengths (step, noise cell, neighbour spacing, blur radius, fill radius) are in points: 1 point
  * is one pixel of an image ReferenceHeight pixels tall; world lengths are taken at the camera's
- * focal distance. A NaN setting counts as its range's minimum. A magnified screenshot shows the same picture at higher detail (the blur and
- * the strokes stop at tile borders).
+ * focal distance. A NaN setting counts as its range's minimum. A magnified screenshot shows the
+ * same picture at higher detail (the blur and the strokes stop at tile borders).
+ *
+ * Interactive variant (while the window renders at InteractiveUpdateRate or faster, e.g. while
+ * the user drags): the raw directions, neither smoothed nor filled (undefined pixels take the
+ * isophote fallback), and strokes of at most 4 steps on each side, as long as `Steps` steps (the
+ * step grows). The still frame is the full sketch.
  *
  * @sa vtkStylizeGBufferPass vtkStylizeLightingPass vtkStylizePrincipalCurvatures
  */

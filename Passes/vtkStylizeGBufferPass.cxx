@@ -62,23 +62,15 @@ public:
     const bool erased = ren->GetRenderWindow()->GetErase() && ren->GetErase();
     const GLfloat zero[4] = { 0.f, 0.f, 0.f, 0.f };
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    float flat[4];
     if (ren->Transparent() || !erased)
     {
       glClearBufferfv(GL_COLOR, 0, zero);
     }
-    else if (!ren->GetGradientBackground() && !ren->GetTexturedBackground())
+    else if (vtkStylizeGBufferPass::GetFlatBackground(ren, flat))
     {
-      // A flat background as the 8-bit window shows it: the colour target is half-float, and a
-      // background such as 0.1 or 0.5 (255 c = k + 1/2) would otherwise come out one level
-      // darker than in a plain render, under the styles and the overlays drawn on them.
-      double c[3];
-      ren->GetBackground(c);
-      GLfloat snapped[4] = { 0.f, 0.f, 0.f, static_cast<GLfloat>(ren->GetBackgroundAlpha()) };
-      for (int i = 0; i < 3; ++i)
-      {
-        snapped[i] = static_cast<GLfloat>(std::round(std::min(1.0, std::max(0.0, c[i])) * 255.0) / 255.0);
-      }
-      glClearBufferfv(GL_COLOR, 0, snapped);
+      flat[3] = static_cast<float>(ren->GetBackgroundAlpha());
+      glClearBufferfv(GL_COLOR, 0, flat);
     }
     if (!erased)
     {
@@ -993,4 +985,27 @@ vtkIdType vtkStylizeGBufferPass::GetTextureBytes()
     total += vtkStylizeShaderUtilities::TextureBytes(t);
   }
   return total;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::GetFlatBackground(vtkRenderer* ren, float rgba[4])
+{
+  vtkRenderWindow* win = ren ? ren->GetRenderWindow() : nullptr;
+  if (!win || ren->Transparent() || !win->GetErase() || !ren->GetErase() ||
+    ren->GetGradientBackground() || ren->GetTexturedBackground())
+  {
+    return false;
+  }
+  // A flat background as the 8-bit window shows it: the colour target is half-float, and a
+  // background such as 0.1 or 0.5 (255 c = k + 1/2) would otherwise come out one level darker
+  // than in a plain render, under the styles and the overlays drawn on them.
+  double c[3];
+  ren->GetBackground(c);
+  for (int i = 0; i < 3; ++i)
+  {
+    const double v = std::isfinite(c[i]) ? std::min(1.0, std::max(0.0, c[i])) : 0.0;
+    rgba[i] = static_cast<float>(std::round(v * 255.0) / 255.0);
+  }
+  rgba[3] = 1.0f;
+  return true;
 }

@@ -197,6 +197,14 @@ public:
   vtkGetObjectMacro(DirectionTexture, vtkTextureObject);
 
   /**
+   * The colour the G-buffer clears a flat background to (the renderer's background snapped to
+   * the 8-bit level the window shows, alpha 1), for a renderer that erases, is opaque and has
+   * neither a gradient nor a textured background; false otherwise (the background is then
+   * whatever the G-buffer's colour channel holds).
+   */
+  static bool GetFlatBackground(vtkRenderer* ren, float rgba[4]);
+
+  /**
    * Bytes the G-buffer's textures hold on the device (channels, depth and, for a scene from an
    * image, the image's colour and depth), for memory reports.
    */

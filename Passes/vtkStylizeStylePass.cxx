@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <utility>
 
 class vtkStylizeStylePass::vtkInternals
@@ -188,6 +189,9 @@ void vtkStylizeStylePass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Scene: "
      << (this->DelegatePass ? "the delegate's image (colour and depth)" : "the geometry") << "\n";
+  os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
+  os << indent << "BackgroundCulling: " << (this->Internals->Culling ? "on" : "off") << "\n";
+  os << indent << "StageTiming: " << (this->Internals->Timing ? "on" : "off") << "\n";
   os << indent << "LightingPass:\n";
   this->Internals->Lighting->PrintSelf(os, indent.GetNextIndent());
 }
@@ -289,7 +293,10 @@ int vtkStylizeStylePass::GetTimedStageRuns(int i)
 bool vtkStylizeStylePass::BeginFrame(const vtkRenderState* s, Frame& frame)
 {
   vtkOpenGLClearErrorMacro();
-  this->Internals->Times.clear();
+  if (this->Internals->Timing)
+  {
+    this->Internals->Times.clear();
+  }
   this->NumberOfRenderedProps = 0;
   this->Internals->StageFailed = false;
   vtkRenderer* ren = s->GetRenderer();
@@ -318,6 +325,9 @@ bool vtkStylizeStylePass::BeginFrame(const vtkRenderState* s, Frame& frame)
   frame.Parallel = frame.Camera->GetParallelProjection() != 0;
   frame.PixelWorld =
     vtkStylizeShaderUtilities::PixelWorldSize(frame.Camera, frame.Size[0], frame.Size[1]);
+  const double rate = frame.Window->GetDesiredUpdateRate();
+  frame.Interactive = this->InteractiveUpdateRate > 0.0 && std::isfinite(rate) &&
+    rate >= this->InteractiveUpdateRate;
   return true;
 }
 
@@ -500,33 +510,59 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
   {
     ostate->vtkglEnable(GL_SCISSOR_TEST);
     in.TimeBegin();
-    vtkShaderProgram* background = in.BackgroundQuad.Prepare(in.Window,
-      std::string("#define STYLIZE_STAGE_BACKGROUND\n") + vtkStylizeCommonFS + vtkStylizeDepthFS +
-        vtkStylizeScreenFS,
-      "  stylizeBackgroundMain();\n");
-    in.StageFailed = in.StageFailed || !background;
+    const int strips[4][4] = { { 0, 0, frame.Size[0], rect[1] },
+      { 0, rect[3], frame.Size[0], frame.Size[1] }, { 0, rect[1], rect[0], rect[3] },
+      { rect[2], rect[1], frame.Size[0], rect[3] } };
+    // The background as the stage would write it: nothing in a layered renderer (discarded), a
+    // clear for a flat one (its snapped colour, alpha 1, the far plane), else the program.
+    float flat[4];
+    const bool layered = frame.Renderer->Transparent() != 0;
+    const bool clear = !layered && vtkStylizeGBufferPass::GetFlatBackground(frame.Renderer, flat);
+    vtkShaderProgram* background = nullptr;
+    if (!layered && !clear)
+    {
+      background = in.BackgroundQuad.Prepare(in.Window,
+        std::string("#define STYLIZE_STAGE_BACKGROUND\n") + vtkStylizeCommonFS +
+          vtkStylizeDepthFS + vtkStylizeScreenFS,
+        "  stylizeBackgroundMain();\n");
+      in.StageFailed = in.StageFailed || !background;
+    }
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+    std::unique_ptr<vtkStylizeUniforms> u;
     if (background)
     {
-      vtkStylizeUniforms u(background);
-      this->BindSceneTextures(u);
-      this->SetSceneOutputUniforms(u, frame.Renderer);
-      const int strips[4][4] = { { 0, 0, frame.Size[0], rect[1] },
-        { 0, rect[3], frame.Size[0], frame.Size[1] }, { 0, rect[1], rect[0], rect[3] },
-        { rect[2], rect[1], frame.Size[0], rect[3] } };
-      for (const auto& b : strips)
+      u.reset(new vtkStylizeUniforms(background));
+      this->BindSceneTextures(*u);
+      this->SetSceneOutputUniforms(*u, frame.Renderer);
+    }
+    if (clear)
+    {
+      ostate->vtkglClearColor(flat[0], flat[1], flat[2], flat[3]);
+      ostate->vtkglClearDepth(1.0);
+    }
+    for (const auto& b : strips)
+    {
+      if (layered || b[2] <= b[0] || b[3] <= b[1])
       {
-        if (b[2] > b[0] && b[3] > b[1])
-        {
-          ostate->vtkglScissor(
-            frame.Origin[0] + b[0], frame.Origin[1] + b[1], b[2] - b[0], b[3] - b[1]);
-          in.BackgroundQuad.Render();
-        }
+        continue;
+      }
+      ostate->vtkglScissor(
+        frame.Origin[0] + b[0], frame.Origin[1] + b[1], b[2] - b[0], b[3] - b[1]);
+      if (clear)
+      {
+        ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      }
+      else if (background)
+      {
+        in.BackgroundQuad.Render();
       }
     }
+    u.reset(); // releases the texture units
     in.TimeEnd("BACKGROUND");
     if (rect[2] <= rect[0] || rect[3] <= rect[1])
     {
-      return background != nullptr; // nothing of the scene is in view
+      return layered || clear || background; // nothing of the scene is in view
     }
     ostate->vtkglScissor(
       frame.Origin[0] + rect[0], frame.Origin[1] + rect[1], rect[2] - rect[0], rect[3] - rect[1]);

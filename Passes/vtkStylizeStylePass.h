@@ -96,6 +96,19 @@ public:
   /** Frees the G-buffer, the stage programs, the intermediate textures and the framebuffer. */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  ///@{
+  /**
+   * Interactive variant: while the render window's desired update rate is at least this many
+   * frames per second (VTK's interactors ask for 15 while the user drags and 0.0001 when still;
+   * ParaView's interactive renders for 5, its still renders for 0.002), the style renders its
+   * cheaper interactive variant (each style's class documents it); the still frame after the
+   * interaction is the full-quality image. 0 turns the interactive variant off: every frame is
+   * full quality. In frames per second, from 0 to 1000; default 1.
+   */
+  vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, 1000.0);
+  vtkGetMacro(InteractiveUpdateRate, double);
+  ///@}
+
   /**
    * Bytes of device memory the style's textures hold after the last frame: the G-buffer's
    * (vtkStylizeGBufferPass::GetTextureBytes()), the style's intermediate targets and the
@@ -170,6 +183,8 @@ protected:
     bool Parallel = false;
     /** World size of a pixel: times the depth in perspective, as is in parallel projection. */
     double PixelWorld = 1.0;
+    /** The window renders at an interactive rate (InteractiveUpdateRate): a cheaper variant. */
+    bool Interactive = false;
   };
 
   /**
@@ -346,6 +361,8 @@ protected:
 
   /** Frees everything a style made for its stages (ReleaseGraphicsResources() calls it). */
   virtual void ReleaseStyleResources(vtkWindow*) {}
+
+  double InteractiveUpdateRate = 1.0;
 
 private:
   vtkStylizeStylePass(const vtkStylizeStylePass&) = delete;

@@ -89,7 +89,7 @@ const std::vector<std::string>& AllConfigs()
     "gbuf-pixelart", "gbuf-standard-color", "gbuf-comic-lin", "comic", "comic-geometric", "pixel-fast-2",
     "pixel-fast-4", "pixel-fast-8", "pixel-faithful-2", "pixel-faithful-4", "pixel-faithful-8", "sketch-2", "sketch-4", "sketch-8",
     "sketch-8-stage", "comic-image", "pixel-image", "sketch-image", "comic-nocull",
-    "sketch-8-nocull" };
+    "sketch-8-nocull", "comic-interactive", "sketch-8-interactive", "pixel-faithful-4-interactive" };
   return configs;
 }
 
@@ -154,7 +154,8 @@ void PrintHelp(const char* argv0)
   }
   std::cout
     << "\n"
-    << "                    (NAME-nocull: the style NAME with background culling off);\n"
+    << "                    (NAME-nocull: the style NAME with background culling off;\n"
+    << "                    NAME-interactive: its interactive variant, window rate 15);\n"
     << "                    styles also report per-stage costs and memory per pixel\n"
     << "  --csv FILE        CSV output (default benchmark.csv)\n"
     << "  --markdown FILE   Markdown output (default benchmark.md), also printed to stdout\n"
@@ -444,11 +445,24 @@ ConfigPasses MakeNoCullConfig(const std::string& name, double diagonal)
   return c;
 }
 
+bool EndsWith(const std::string& s, const std::string& tail)
+{
+  return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
 ConfigPasses MakeConfig(const std::string& name, double diagonal)
 {
-  if (name.size() > 7 && name.compare(name.size() - 7, 7, "-nocull") == 0)
+  if (EndsWith(name, "-nocull"))
   {
     return MakeNoCullConfig(name, diagonal);
+  }
+  if (EndsWith(name, "-interactive"))
+  {
+    // NAME-interactive: the style NAME while the window asks for an interactive rate (15 frames
+    // per second, as VTK's interactors do while the user drags): its interactive variant.
+    ConfigPasses c = MakeConfig(name.substr(0, name.size() - 12), diagonal);
+    c.Description += "; the window's desired update rate 15 (the interactive variant)";
+    return c;
   }
   ConfigPasses c;
   auto lighting = [&](const std::string& model) {
@@ -1178,6 +1192,10 @@ struct Bench
     this->Window->SetOffScreenRendering(1);
     this->Window->SetMultiSamples(0);
     this->Window->SetSize(opt.Width, opt.Height);
+    if (EndsWith(config, "-interactive"))
+    {
+      this->Window->SetDesiredUpdateRate(15.0);
+    }
     this->Renderer = vtkSmartPointer<vtkRenderer>::New();
     this->Renderer->SetBackground(0.1, 0.1, 0.15);
     this->Window->AddRenderer(this->Renderer);

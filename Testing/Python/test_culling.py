@@ -5,9 +5,10 @@ field) run under an early depth test against the G-buffer, and the final stage r
 the scene's screen rectangle, the base writing the background around it. This test renders the
 same frames with culling on and off and requires identical colour, alpha and depth, in scenes
 that reach the rectangle's edges: a curved surface with an anisotropic field (a torus), wide
-lines and large points near the frame's border, a gradient background, a layered renderer (the
-background discarded), parallel projection, a camera inside the scene's bounds (no rectangle),
-a scene outside the view (an empty rectangle). It also requires that culling took effect where
+lines and large points near the frame's border, a gradient background (written by a program
+around the scene), a flat one (a clear), a layered renderer (the background discarded), parallel
+projection, a camera inside the scene's bounds (no rectangle), a scene outside the view (an empty
+rectangle). It also requires that culling took effect where
 it should (the timed stages show the base's BACKGROUND stage), so that it cannot pass vacuously.
 
 Run with the build's python folder on PYTHONPATH and a display (the suite does both).
@@ -63,9 +64,13 @@ def build(case):
         win.SetNumberOfLayers(2)
     ren = vtkRenderer()
     win.AddRenderer(ren)
-    ren.GradientBackgroundOn()
-    ren.SetBackground(0.9, 0.9, 0.85)
-    ren.SetBackground2(0.4, 0.5, 0.7)
+    if case.get("flat"):
+        # a flat background, written by a clear around the scene (0.1: 25.5 levels, snapped)
+        ren.SetBackground(0.1, 0.5, 0.3)
+    else:
+        ren.GradientBackgroundOn()
+        ren.SetBackground(0.9, 0.9, 0.85)
+        ren.SetBackground2(0.4, 0.5, 0.7)
 
     torus = vtkParametricTorus()
     torus.SetRingRadius(1.0)
@@ -193,6 +198,7 @@ STYLES = {"comic": comic, "comic-principal-tinted": comic_principal,
 # case name -> (scene, whether the final stage is split around the scene's rectangle)
 CASES = {
     "small": ({"zoom": 0.6}, True),
+    "flat": ({"zoom": 0.7, "flat": True}, True),
     "parallel": ({"zoom": 0.8, "parallel": True}, True),
     "border": ({"zoom": 1.6}, True),  # the scene crosses the frame's border
     "layered": ({"zoom": 0.7, "layered": True}, True),

@@ -1,0 +1,138 @@
+"""The styles' interactive variant (issue 15).
+
+While the render window asks for an interactive update rate (VTK's interactors set 15 frames per
+second while the user drags, ParaView's interactive renders 5), each style renders a cheaper
+variant; the still frame after it is the full-quality image. For each style this test requires:
+
+- an interactive frame (desired update rate 15) differs from the still frame of the same view
+  (the variant was taken), and its picture is of the same scene (a similar share of dark ink);
+- the still frame rendered after interactive frames is identical to a still frame rendered by a
+  fresh pass (nothing of the variant lingers);
+- with InteractiveUpdateRate 0 an interactive frame is identical to the still frame (the setting
+  turns the variant off), and at ParaView's still rate (0.002) nothing changes either.
+
+Run with the build's python folder on PYTHONPATH and a display (the suite does both).
+"""
+import sys
+
+import vtkstylize
+from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
+                                         vtkRenderWindow)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factories)
+
+failures = []
+
+
+def check(cond, message):
+    if not cond:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+def make_window():
+    win = vtkRenderWindow()
+    win.SetSize(300, 200)
+    win.SetMultiSamples(0)
+    win.OffScreenRenderingOn()
+    ren = vtkRenderer()
+    ren.SetBackground(1.0, 1.0, 1.0)
+    win.AddRenderer(ren)
+    torus = vtkParametricTorus()
+    torus.SetRingRadius(1.0)
+    torus.SetCrossSectionRadius(0.4)
+    src = vtkParametricFunctionSource()
+    src.SetParametricFunction(torus)
+    src.SetUResolution(120)
+    src.SetVResolution(60)
+    normals = vtkPolyDataNormals()
+    normals.SetInputConnection(src.GetOutputPort())
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(normals.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.RotateX(55.0)
+    ren.AddActor(actor)
+    ren.ResetCamera()
+    ren.GetActiveCamera().Azimuth(20.0)
+    return win, ren
+
+
+def frame(win, rate):
+    win.SetDesiredUpdateRate(rate)
+    win.Render()
+    rgba = vtkUnsignedCharArray()
+    w, h = win.GetSize()
+    win.GetRGBACharPixelData(0, 0, w - 1, h - 1, 0, rgba)
+    return [rgba.GetValue(i) for i in range(rgba.GetNumberOfTuples() * 4)]
+
+
+def ink(values):
+    """Share of pixels darker than mid-grey."""
+    n = len(values) // 4
+    dark = sum(1 for i in range(n) if sum(values[4 * i:4 * i + 3]) < 3 * 128)
+    return dark / n
+
+
+def comic():
+    return vtkstylize.vtkComicPass()
+
+
+def comic_principal():
+    p = vtkstylize.vtkComicPass()
+    p.SetHatchOrientation(vtkstylize.vtkComicPass.PRINCIPAL)
+    return p
+
+
+def sketch():
+    return vtkstylize.vtkSketchPass()
+
+
+def pixel_faithful():
+    p = vtkstylize.vtkPixelArtPass()
+    p.SetMode(vtkstylize.vtkPixelArtPass.FAITHFUL)
+    return p
+
+
+STILL, INTERACTIVE, PARAVIEW_STILL = 0.0001, 15.0, 0.002
+
+for name, make in (("comic", comic), ("comic-principal", comic_principal), ("sketch", sketch),
+                   ("pixel-faithful", pixel_faithful)):
+    win, ren = make_window()
+    style = make()
+    ren.SetPass(style)
+    still = frame(win, STILL)
+    interactive = frame(win, INTERACTIVE)
+    frame(win, INTERACTIVE)
+    after = frame(win, STILL)
+    paraview_still = frame(win, PARAVIEW_STILL)
+    style.SetInteractiveUpdateRate(0.0)
+    off = frame(win, INTERACTIVE)
+    ren.SetPass(None)
+    win.Finalize()
+
+    win2, ren2 = make_window()
+    fresh_style = make()
+    ren2.SetPass(fresh_style)
+    fresh = frame(win2, STILL)
+    ren2.SetPass(None)
+    win2.Finalize()
+
+    changed = sum(1 for a, b in zip(still, interactive) if a != b)
+    print("%-16s interactive frame differs at %d values; ink %.3f still, %.3f interactive" %
+          (name, changed, ink(still), ink(interactive)))
+    check(changed > 0, name + ": the interactive frame is the still one (no variant)")
+    check(abs(ink(still) - ink(interactive)) < 0.5 * ink(still) + 0.01,
+          name + ": the interactive variant draws another picture")
+    check(after == fresh, name + ": the still frame after interaction differs from a fresh one")
+    check(after == still, name + ": the still frame after interaction differs from the first")
+    check(paraview_still == still, name + ": ParaView's still rate took the variant")
+    check(off == still, name + ": InteractiveUpdateRate 0 did not turn the variant off")
+
+if failures:
+    print("%d failure(s)" % len(failures))
+    sys.exit(1)
+print("interactive: every style's variant is taken while interacting, and only then")
