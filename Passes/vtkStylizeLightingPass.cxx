@@ -351,14 +351,17 @@ void vtkStylizeLightingPass::RenderWithLighting(const vtkRenderState* s, vtkRend
     ren->CreateLight();
     enabled = 1;
   }
-  if (this->Model != this->ShaderModel)
-  {
-    // Each model is compiled alone: the mappers rebuild their shaders (GetShaderStageMTime()).
-    this->ShaderModel = this->Model;
-    this->ModelTime.Modified();
-  }
   this->UpdateLightGeometry(ren); // camera-following lights to their place for this frame
   this->UploadLights(ren, renWin);
+  if (this->Model != this->ShaderModel || this->HeadlightOnly != this->ShaderHeadlightOnly)
+  {
+    // One program per model and light class (VTK's single headlight, or any other set of
+    // lights): the mappers switch programs (GetShaderStageMTime()), each built once and then
+    // found in the window's shader cache; the light count never changes the program.
+    this->ShaderModel = this->Model;
+    this->ShaderHeadlightOnly = this->HeadlightOnly;
+    this->ModelTime.Modified();
+  }
 
   // Visible depth range, for the depth-dependent gray levels: the visible props' bounds in view
   // space, limited to the clipping range. Independent of how far the near plane is pushed.
@@ -484,7 +487,8 @@ bool vtkStylizeLightingPass::PostReplaceShaderValues(std::string&, std::string&,
   {
     vtkStylizeShaderUtilities::InjectCommon(fragmentShader);
     vtkShaderProgram::Substitute(fragmentShader, LightDecTag,
-      "#define STYLIZE_MODEL " + std::to_string(this->Model) + "\n" + vtkStylizeLightingDec,
+      "#define STYLIZE_MODEL " + std::to_string(this->Model) + "\n" +
+        (this->HeadlightOnly ? "#define STYLIZE_HEADLIGHT_ONLY\n" : "") + vtkStylizeLightingDec,
       false);
     vtkShaderProgram::Substitute(fragmentShader, LightImplTag,
       std::string(vtkStylizeLightingImpl) + "\n  //VTK::Light::Impl", false);
@@ -504,13 +508,12 @@ bool vtkStylizeLightingPass::PostReplaceShaderValues(std::string&, std::string&,
 bool vtkStylizeLightingPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
-  if (!program->IsUniformUsed("stylizeLightCount") || !this->LightTexture)
+  if (!program->IsUniformUsed("stylizeLights") || !this->LightTexture)
   {
     return true;
   }
   program->SetUniformi("stylizeLights", this->LightTexture->GetTextureUnit());
   program->SetUniformi("stylizeLightCount", this->NumberOfLights);
-  program->SetUniformi("stylizeHeadlightOnly", this->HeadlightOnly);
   program->SetUniformf("stylizeSubjectFactor",
     static_cast<float>(ActorValue(prop, SUBJECT_FACTOR(), this->SubjectFactor, 0.0, 1.0)));
   program->SetUniformf("stylizeLevelsNear",

@@ -87,7 +87,8 @@ public:
    * The lighting model, one of STANDARD, COMIC and PIXEL_ART. Default STANDARD. Each model is
    * compiled into the mappers' shaders alone (a #define, not a uniform branch: with the three
    * models in one program the lighting cost twice VTK's own at one light on llvmpipe), so
-   * changing it rebuilds those shaders once; the light count never does.
+   * changing it rebuilds those shaders once; the light count never does (VTK's single headlight
+   * has a program of its own per model, built once; docs/lighting.md).
    */
   vtkSetClampMacro(Model, int, STANDARD, PIXEL_ART);
   vtkGetMacro(Model, int);
@@ -244,7 +245,8 @@ protected:
   vtkRenderPass* DelegatePass = nullptr;
   int Model = STANDARD;
   int ShaderModel = -1;   // the model the mappers' shaders were last built for
-  vtkTimeStamp ModelTime; // when it changed: GetShaderStageMTime()
+  int ShaderHeadlightOnly = -1; // and the light class (1: VTK's single headlight)
+  vtkTimeStamp ModelTime; // when either changed: GetShaderStageMTime()
   double SubjectFactor = 0.35;
   double GrayLevelsNear = 6.0;
   double GrayLevelsFar = 6.0;

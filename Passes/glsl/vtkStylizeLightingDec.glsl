@@ -5,10 +5,11 @@
 //   texel 4i+1: direction the light shines along, unit (xyz), cone angle in degrees (a)
 //   texel 4i+2: position (xyz), spot exponent (a)
 //   texel 4i+3: attenuation constant, linear, quadratic (xyz), unused (a)
-// so the shader is the same for 0, 1 or 1000 lights and is never rebuilt when the count changes.
+// so a program serves 0, 1 or 1000 lights and is never rebuilt when the count changes. Two light
+// classes are compiled apart (STYLIZE_HEADLIGHT_ONLY: VTK's single headlight, its shortcut; the
+// general program for every other set), each once per model.
 uniform samplerBuffer stylizeLights;
 uniform int stylizeLightCount;      // number of enabled lights, >= 0
-uniform int stylizeHeadlightOnly;   // 1 when VTK would use its single-headlight shortcut
 // STYLIZE_MODEL (a #define the pass puts before this text): 0 Standard, 1 Comic, 2 PixelArt.
 // Comic (docs/algorithms.md section 2)
 uniform float stylizeSubjectFactor; // p1 in [0, 1]
@@ -31,6 +32,21 @@ struct stylizeLight
 
 // Fetches light i and evaluates direction and attenuation at view-space point P exactly as
 // VTK 9.1's vtkOpenGLPolyDataMapper does for positional, spot and directional lights.
+#ifdef STYLIZE_HEADLIGHT_ONLY
+// The light class of VTK's lighting complexity 1: one enabled light, a non-positional headlight
+// (this program is built for it; any other set of lights uses the general program below).
+#define STYLIZE_LIGHT_COUNT 1
+stylizeLight stylizeFetchLight(int i, vec3 P)
+{
+  stylizeLight l;
+  l.color = texelFetch(stylizeLights, 0).rgb;
+  l.incident = texelFetch(stylizeLights, 1).xyz;
+  l.atten = 1.0;
+  l.L = -l.incident;
+  return l;
+}
+#else
+#define STYLIZE_LIGHT_COUNT stylizeLightCount
 stylizeLight stylizeFetchLight(int i, vec3 P)
 {
   vec4 t0 = texelFetch(stylizeLights, 4 * i);
@@ -62,23 +78,25 @@ stylizeLight stylizeFetchLight(int i, vec3 P)
 }
 
 // VTK's own Phong model, term for term (vtkOpenGLPolyDataMapper::ReplaceShaderLight, 9.1).
+#endif
+
 vec3 stylizeStandard(vec3 N, vec3 P, vec3 ambientC, vec3 diffuseC, vec3 specularC, float specPow)
 {
+#ifdef STYLIZE_HEADLIGHT_ONLY
+  // VTK's shortcut for a single headlight (lighting complexity 1)
+  vec3 lc = texelFetch(stylizeLights, 0).rgb;
+  float df = max(0.0, N.z);
+  float sf = stylizeSafePow(df, specPow);
+  return ambientC + df * diffuseC * lc + sf * specularC * lc;
+#else
   if (stylizeLightCount == 0)
   {
     return ambientC + diffuseC; // VTK renders unlit when no light is on
   }
-  if (stylizeHeadlightOnly == 1)
-  {
-    vec3 lc = texelFetch(stylizeLights, 0).rgb;
-    float df = max(0.0, N.z);
-    float sf = stylizeSafePow(df, specPow);
-    return ambientC + df * diffuseC * lc + sf * specularC * lc;
-  }
   vec3 V = stylizeSafeNormalize(-P, vec3(0.0, 0.0, 1.0));
   vec3 diffuse = vec3(0.0);
   vec3 specular = vec3(0.0);
-  for (int i = 0; i < stylizeLightCount; ++i)
+  for (int i = 0; i < STYLIZE_LIGHT_COUNT; ++i)
   {
     stylizeLight l = stylizeFetchLight(i, P);
     float df = max(0.0, l.atten * dot(N, l.L));
@@ -87,6 +105,7 @@ vec3 stylizeStandard(vec3 N, vec3 P, vec3 ambientC, vec3 diffuseC, vec3 specular
     specular += sf * l.color;
   }
   return ambientC + diffuse * diffuseC + specular * specularC;
+#endif
 }
 
 // Comic model: La = p1 + I - 2 p1 I; Ld = floor(pd kd D) / pmax with pd interpolated from near to
@@ -112,7 +131,7 @@ vec3 stylizeComic(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 spe
 
   vec3 D = vec3(0.0);
   vec3 S = vec3(0.0);
-  for (int i = 0; i < stylizeLightCount; ++i)
+  for (int i = 0; i < STYLIZE_LIGHT_COUNT; ++i)
   {
     stylizeLight l = stylizeFetchLight(i, P);
     float ndl = dot(N, l.L);
@@ -133,7 +152,7 @@ vec3 stylizePixelArt(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 
 {
   vec3 D = vec3(0.0);
   vec3 S = vec3(0.0);
-  for (int i = 0; i < stylizeLightCount; ++i)
+  for (int i = 0; i < STYLIZE_LIGHT_COUNT; ++i)
   {
     stylizeLight l = stylizeFetchLight(i, P);
     float ndl = dot(N, l.L);

@@ -204,7 +204,8 @@ inline void SetupLights(vtkRenderer* ren, const std::string& setup, double scale
   ren->RemoveAllLights();
   if (setup == "headlight")
   {
-    return; // VTK creates it
+    ren->AutomaticLightCreationOn(); // VTK creates it (also after a set-up that turned it off)
+    return;
   }
   ren->AutomaticLightCreationOff();
   if (setup == "none")
