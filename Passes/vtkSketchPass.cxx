@@ -100,8 +100,6 @@ vtkSketchPass::vtkSketchPass()
       true)
   , Internals(new vtkInternals)
 {
-  // The estimate differentiates normals: half floats (3 digits) would dominate its error.
-  this->GetGBufferPass()->SetPrecision(vtkStylizeGBufferPass::FULL);
   this->SetDirectionArrayName("PrincipalDirectionMinAbs");
 }
 
@@ -438,6 +436,9 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   p.Contrast = tone && this->Contrast > 0.0;
   const bool cross = this->CrossHatching && this->Layer == SKETCH;
   p.Scene.Channels = vtkStylizeGBufferPass::LINEAR_DEPTH | vtkStylizeGBufferPass::NORMAL;
+  // The estimate differentiates normals: half floats (3 digits) would dominate its error. The
+  // lit colour needs no more than half floats (the G-buffer's Precision).
+  p.Scene.NormalPrecision = vtkStylizeGBufferPass::FULL;
   if (p.ObjectNoise)
   {
     p.Scene.Channels |= vtkStylizeGBufferPass::POSITION;

@@ -8,7 +8,8 @@
  *
  * 1. The opaque geometry is rendered once into the shared G-buffer (vtkStylizeGBufferPass)
  *    with a vtkStylizeLightingPass (Standard model by default). Channels: linear depth and
- *    normals always (full float precision by default: the estimate differentiates normals),
+ *    normals always (normals in full float precision: the estimate differentiates them; the
+ *    colour at the G-buffer's Precision, half floats by default),
  *    object-space positions for surface-fixed noise, the DIRECTION channel in model-space mode.
  * 2. Principal directions per pixel (the styles' base's direction field, vtkStylizeFieldFS),
  *    by focal surfaces (DirectionSource SCREEN): 2, 4 or 8 neighbours `Neighbors` in 1, 4 or

@@ -206,6 +206,8 @@ void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
      << ((this->Channels & LINEAR_DEPTH) ? "linear-depth " : "")
      << ((this->Channels & DIRECTION) ? "direction" : "") << "\n";
   os << indent << "Precision: " << (this->Precision == FULL ? "full" : "half") << "\n";
+  os << indent << "NormalPrecision: " << (this->NormalPrecision == FULL ? "full" : "half")
+     << "\n";
   os << indent << "PositionSpace: " << (this->PositionSpace == VIEW ? "view" : "object") << "\n";
   os << indent << "Viewport: " << this->Viewport[0] << " " << this->Viewport[1] << " "
      << this->Viewport[2] << " " << this->Viewport[3] << "\n";
@@ -262,20 +264,25 @@ void vtkStylizeGBufferPass::SetAfterScreenShift(double tx, double ty)
 //------------------------------------------------------------------------------
 void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int w, int h)
 {
-  const bool precisionChanged = this->AllocatedPrecision != this->Precision;
+  // Precision per channel: the colour at Precision, the normal and direction channels at the
+  // larger of Precision and NormalPrecision.
+  const int normalPrecision = std::max(this->Precision, this->NormalPrecision);
+  const bool colorChanged = this->AllocatedPrecision != this->Precision;
+  const bool normalChanged = this->AllocatedNormalPrecision != normalPrecision;
   this->AllocatedPrecision = this->Precision;
+  this->AllocatedNormalPrecision = normalPrecision;
   const int colorFormat = this->Precision == FULL ? GL_RGBA32F : GL_RGBA16F;
+  const int normalFormat = normalPrecision == FULL ? GL_RGBA32F : GL_RGBA16F;
   using Utilities = vtkStylizeShaderUtilities;
-  auto make = [&](vtkTextureObject*& tex, int internalFormat) {
-    Utilities::EnsureScreenTexture(tex, renWin, w, h, internalFormat,
-      precisionChanged && internalFormat == colorFormat);
+  auto make = [&](vtkTextureObject*& tex, int internalFormat, bool changed = false) {
+    Utilities::EnsureScreenTexture(tex, renWin, w, h, internalFormat, changed);
   };
   auto drop = [&](vtkTextureObject*& tex) { Utilities::FreeTexture(tex, renWin); };
-  make(this->ColorTexture, colorFormat);
+  make(this->ColorTexture, colorFormat, colorChanged);
   make(this->DepthTexture, GL_DEPTH_COMPONENT32F);
   if (this->Channels & NORMAL)
   {
-    make(this->NormalTexture, colorFormat);
+    make(this->NormalTexture, normalFormat, normalChanged);
   }
   else
   {
@@ -299,7 +306,7 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
   }
   if (this->Channels & DIRECTION)
   {
-    make(this->DirectionTexture, colorFormat);
+    make(this->DirectionTexture, normalFormat, normalChanged);
   }
   else
   {

@@ -131,7 +131,7 @@ public:
   vtkGetMacro(PositionSpace, int);
   ///@}
 
-  /** Precision of the colour and normal channels. */
+  /** Precision of the colour, normal and direction channels. */
   enum Precisions
   {
     HALF = 0,
@@ -140,12 +140,24 @@ public:
 
   ///@{
   /**
-   * Precision of the colour and normal textures: HALF (RGBA16F, the default: about 3 decimal
-   * digits, enough for 8-bit output) or FULL (RGBA32F: for measurement and numeric tests, at
-   * twice the memory traffic). Positions are always RGBA32F and depth DEPTH32F.
+   * Precision of the colour, normal and direction textures: HALF (RGBA16F, the default: about 3
+   * decimal digits, enough for 8-bit output) or FULL (RGBA32F: for measurement and numeric
+   * tests, at twice the memory traffic). A style may ask for more in the normal and direction
+   * textures alone (NormalPrecision). Positions are always RGBA32F and depth DEPTH32F.
    */
   vtkSetClampMacro(Precision, int, HALF, FULL);
   vtkGetMacro(Precision, int);
+  ///@}
+
+  ///@{
+  /**
+   * The least precision of the normal and direction textures, per channel: they are FULL when
+   * this or Precision is FULL, while the colour follows Precision alone. A style sets it at
+   * every render (the sketch asks for FULL: its curvature estimate differentiates normals, and
+   * its colour needs no more than HALF). HALF (default) or FULL.
+   */
+  vtkSetClampMacro(NormalPrecision, int, HALF, FULL);
+  vtkGetMacro(NormalPrecision, int);
   ///@}
 
   ///@{
@@ -290,7 +302,9 @@ protected:
   double DepthRange[2] = { 0.0, 1.0 };
   int PositionSpace = VIEW;
   int Precision = HALF;
+  int NormalPrecision = HALF;
   int AllocatedPrecision = -1;
+  int AllocatedNormalPrecision = -1;
   int Viewport[4] = { 0, 0, 0, 0 };
   int GeometryResolution[2] = { 0, 0 };
   int GeometrySize[2] = { 0, 0 };

@@ -337,6 +337,7 @@ bool vtkStylizeStylePass::RenderScene(const vtkRenderState* s, const SceneReques
   vtkStylizeGBufferPass* gbuffer = this->Internals->GBuffer;
   gbuffer->SetSceneImagePass(this->DelegatePass);
   gbuffer->SetChannels(request.Channels);
+  gbuffer->SetNormalPrecision(request.NormalPrecision);
   if (request.Channels & vtkStylizeGBufferPass::POSITION)
   {
     gbuffer->SetPositionSpace(request.PositionSpace);

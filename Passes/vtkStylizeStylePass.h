@@ -197,6 +197,8 @@ protected:
     int Channels = 0;
     /** vtkStylizeGBufferPass::PositionSpaces of the POSITION channel. */
     int PositionSpace = 0;
+    /** The least vtkStylizeGBufferPass::Precisions of the normal and direction channels. */
+    int NormalPrecision = 0;
     /** Geometry render resolution; 0 x 0: the viewport's. */
     int Resolution[2] = { 0, 0 };
     /** Screen transform of the geometry, x' = sx x + tx, y' = sy y + ty (NDC). */

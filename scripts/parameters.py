@@ -210,8 +210,11 @@ def class_settings(klass, skip):
 
 def enum_of(klass, name):
     """(type name, [(symbol, value, '')]) of the enumeration a setting takes: the class's enum
-    named after the setting in the plural (Anchor -> Anchors), as every enum of the project is."""
-    for type_name in (name + "s", name + "es", re.sub(r"s$", "", name) + "Bits"):
+    named after the setting in the plural (Anchor -> Anchors), as every enum of the project is,
+    or after its last word (NormalPrecision -> Precisions)."""
+    last = re.sub(r"^.*(?=[A-Z][a-z]+$)", "", name)
+    for type_name in (name + "s", name + "es", re.sub(r"s$", "", name) + "Bits", last + "s",
+                      last + "es"):
         t = getattr(klass, type_name, None)
         if isinstance(t, type) and issubclass(t, int):
             entries = sorted(((s, int(getattr(klass, s)), "") for s in dir(klass)
