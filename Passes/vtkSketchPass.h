@@ -26,9 +26,10 @@
  *    mapped to the G-buffer's DIRECTION channel; pixels without it fall back to the estimate.
  * 3. Sign-invariant smoothing (doubled angles over 3x3 pixels of the same surface, weighted by
  *    the estimate's confidence) with taps doubling up to `SmoothingRadius`, then
- *    `SmoothingIterations` passes of neighbouring pixels, then fill iterations for undefined
- *    (planar, umbilic) pixels from their surface's defined neighbours at distances doubling up
- *    to `FillRadius`; pixels still
+ *    `SmoothingIterations` passes of neighbouring pixels (the smoothing also fills undefined
+ *    pixels from their neighbours), then fill iterations for undefined (planar, umbilic)
+ *    pixels from their surface's defined neighbours at distances doubling beyond the pyramid's
+ *    up to `FillRadius`; pixels still
  *    undefined follow the isophotes of the lit image (structure tensor of its gradient), else a
  *    fixed screen direction: no surface pixel is left without a direction. `Direction` selects
  *    the direction drawn: MINIMUM or MAXIMUM curvature (by absolute value) or their BISECTOR.
@@ -267,7 +268,8 @@ public:
   ///@{
   /**
    * Farthest distance (points) from which an undefined pixel takes its surface's direction;
-   * iterations at distances 1, 2, 4, ... up to it. 0 disables filling. Range [0, 512],
+   * iterations at distances 1, 2, 4, ... up to it, those within the smoothing pyramid's reach
+   * skipped (its passes already fill as they smooth). 0 disables filling. Range [0, 512],
    * default 16.
    */
   vtkSetClampMacro(FillRadius, double, 0.0, 512.0);
