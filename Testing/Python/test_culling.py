@@ -18,20 +18,9 @@ import sys
 import vtkstylize
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkPoints, vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
-                                         vtkRenderWindow)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factories)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 
-failures = []
-
-
-def check(cond, message):
-    if not cond:
-        failures.append(message)
-        print("FAIL:", message)
+from stylize_test_scene import check, failures, offscreen_window, torus_actor
 
 
 def polyline_and_points():
@@ -55,10 +44,7 @@ def polyline_and_points():
 
 
 def build(case):
-    win = vtkRenderWindow()
-    win.SetSize(320, 200)
-    win.SetMultiSamples(0)
-    win.OffScreenRenderingOn()
+    win = offscreen_window(320, 200)
     layers = case.get("layered", False)
     if layers:
         win.SetNumberOfLayers(2)
@@ -72,20 +58,7 @@ def build(case):
         ren.SetBackground(0.9, 0.9, 0.85)
         ren.SetBackground2(0.4, 0.5, 0.7)
 
-    torus = vtkParametricTorus()
-    torus.SetRingRadius(1.0)
-    torus.SetCrossSectionRadius(0.35)
-    src = vtkParametricFunctionSource()
-    src.SetParametricFunction(torus)
-    src.SetUResolution(120)
-    src.SetVResolution(60)
-    normals = vtkPolyDataNormals()
-    normals.SetInputConnection(src.GetOutputPort())
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(normals.GetOutputPort())
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.RotateX(60.0)
+    actor = torus_actor(0.35, 60.0)
     ren.AddActor(actor)
 
     extra_mapper = vtkPolyDataMapper()

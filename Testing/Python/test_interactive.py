@@ -17,45 +17,17 @@ import sys
 
 import vtkstylize
 from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
-from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
-                                         vtkRenderWindow)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factories)
+from vtkmodules.vtkRenderingCore import vtkRenderer
 
-failures = []
-
-
-def check(cond, message):
-    if not cond:
-        failures.append(message)
-        print("FAIL:", message)
+from stylize_test_scene import check, failures, offscreen_window, torus_actor
 
 
 def make_window():
-    win = vtkRenderWindow()
-    win.SetSize(300, 200)
-    win.SetMultiSamples(0)
-    win.OffScreenRenderingOn()
+    win = offscreen_window(300, 200)
     ren = vtkRenderer()
     ren.SetBackground(1.0, 1.0, 1.0)
     win.AddRenderer(ren)
-    torus = vtkParametricTorus()
-    torus.SetRingRadius(1.0)
-    torus.SetCrossSectionRadius(0.4)
-    src = vtkParametricFunctionSource()
-    src.SetParametricFunction(torus)
-    src.SetUResolution(120)
-    src.SetVResolution(60)
-    normals = vtkPolyDataNormals()
-    normals.SetInputConnection(src.GetOutputPort())
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(normals.GetOutputPort())
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.RotateX(55.0)
-    ren.AddActor(actor)
+    ren.AddActor(torus_actor(0.4, 55.0))
     ren.ResetCamera()
     ren.GetActiveCamera().Azimuth(20.0)
     return win, ren

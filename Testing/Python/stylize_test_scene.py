@@ -1,0 +1,45 @@
+"""Shared pieces of the Python tests: failure bookkeeping and a torus test object (a curved
+surface whose principal directions are defined everywhere)."""
+from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factories)
+
+failures = []
+
+
+def check(cond, message):
+    """Records and prints a failure when cond is false."""
+    if not cond:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+def torus_actor(cross_section, tilt):
+    """A torus (ring radius 1, the given cross-section radius) with point normals, rotated by
+    `tilt` degrees about x."""
+    torus = vtkParametricTorus()
+    torus.SetRingRadius(1.0)
+    torus.SetCrossSectionRadius(cross_section)
+    src = vtkParametricFunctionSource()
+    src.SetParametricFunction(torus)
+    src.SetUResolution(120)
+    src.SetVResolution(60)
+    normals = vtkPolyDataNormals()
+    normals.SetInputConnection(src.GetOutputPort())
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(normals.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.RotateX(tilt)
+    return actor
+
+
+def offscreen_window(width, height):
+    """An offscreen window without multisampling."""
+    win = vtkRenderWindow()
+    win.SetSize(width, height)
+    win.SetMultiSamples(0)
+    win.OffScreenRenderingOn()
+    return win
