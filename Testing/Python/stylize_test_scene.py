@@ -1,5 +1,6 @@
-"""Shared pieces of the Python tests: failure bookkeeping and a torus test object (a curved
-surface whose principal directions are defined everywhere)."""
+"""Shared pieces of the Python tests: failure bookkeeping, styles by class and settings, and a
+torus test object (a curved surface whose principal directions are defined everywhere)."""
+import vtkstylize
 from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
@@ -14,6 +15,18 @@ def check(cond, message):
     if not cond:
         failures.append(message)
         print("FAIL:", message)
+
+
+def style_maker(class_name, **settings):
+    """A function that makes a new vtkstylize pass of class `class_name` with the settings given
+    by name (Set<Name>(value), a tuple for several arguments)."""
+    def make():
+        style = getattr(vtkstylize, class_name)()
+        for name, value in settings.items():
+            args = value if isinstance(value, tuple) else (value,)
+            getattr(style, "Set" + name)(*args)
+        return style
+    return make
 
 
 def torus_actor(cross_section, tilt):

@@ -20,7 +20,7 @@ from vtkmodules.vtkCommonCore import vtkFloatArray, vtkPoints, vtkUnsignedCharAr
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 
-from stylize_test_scene import check, failures, offscreen_window, torus_actor
+from stylize_test_scene import check, failures, offscreen_window, style_maker, torus_actor
 
 
 def polyline_and_points():
@@ -137,36 +137,14 @@ def render(case, make_pass, culling):
     return out, stages
 
 
-def comic():
-    return vtkstylize.vtkComicPass()
-
-
-def comic_principal():
-    p = vtkstylize.vtkComicPass()
-    p.SetHatchOrientation(vtkstylize.vtkComicPass.PRINCIPAL)
-    p.SetTinted(True)
-    return p
-
-
-def comic_color_edges():
-    p = vtkstylize.vtkComicPass()
-    p.SetEdgeWeights(0.3, 0.3, 0.4)
-    return p
-
-
-def sketch():
-    return vtkstylize.vtkSketchPass()
-
-
-def sketch_directions():
-    p = vtkstylize.vtkSketchPass()
-    p.SetLayer(vtkstylize.vtkSketchPass.DIRECTIONS)
-    return p
-
-
-STYLES = {"comic": comic, "comic-principal-tinted": comic_principal,
-          "comic-color-edges": comic_color_edges, "sketch": sketch,
-          "sketch-directions": sketch_directions}
+STYLES = {
+    "comic": style_maker("vtkComicPass"),
+    "comic-principal-tinted": style_maker(
+        "vtkComicPass", HatchOrientation=vtkstylize.vtkComicPass.PRINCIPAL, Tinted=True),
+    "comic-color-edges": style_maker("vtkComicPass", EdgeWeights=(0.3, 0.3, 0.4)),
+    "sketch": style_maker("vtkSketchPass"),
+    "sketch-directions": style_maker("vtkSketchPass", Layer=vtkstylize.vtkSketchPass.DIRECTIONS),
+}
 
 # case name -> (scene, whether the final stage is split around the scene's rectangle)
 CASES = {

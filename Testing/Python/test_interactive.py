@@ -19,7 +19,7 @@ import vtkstylize
 from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
 from vtkmodules.vtkRenderingCore import vtkRenderer
 
-from stylize_test_scene import check, failures, offscreen_window, torus_actor
+from stylize_test_scene import check, failures, offscreen_window, style_maker, torus_actor
 
 
 def make_window():
@@ -49,30 +49,17 @@ def ink(values):
     return dark / n
 
 
-def comic():
-    return vtkstylize.vtkComicPass()
-
-
-def comic_principal():
-    p = vtkstylize.vtkComicPass()
-    p.SetHatchOrientation(vtkstylize.vtkComicPass.PRINCIPAL)
-    return p
-
-
-def sketch():
-    return vtkstylize.vtkSketchPass()
-
-
-def pixel_faithful():
-    p = vtkstylize.vtkPixelArtPass()
-    p.SetMode(vtkstylize.vtkPixelArtPass.FAITHFUL)
-    return p
-
+STYLES = (
+    ("comic", style_maker("vtkComicPass")),
+    ("comic-principal",
+     style_maker("vtkComicPass", HatchOrientation=vtkstylize.vtkComicPass.PRINCIPAL)),
+    ("sketch", style_maker("vtkSketchPass")),
+    ("pixel-faithful", style_maker("vtkPixelArtPass", Mode=vtkstylize.vtkPixelArtPass.FAITHFUL)),
+)
 
 STILL, INTERACTIVE, PARAVIEW_STILL = 0.0001, 15.0, 0.002
 
-for name, make in (("comic", comic), ("comic-principal", comic_principal), ("sketch", sketch),
-                   ("pixel-faithful", pixel_faithful)):
+for name, make in STYLES:
     win, ren = make_window()
     style = make()
     ren.SetPass(style)

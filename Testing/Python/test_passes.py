@@ -11,13 +11,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRendere
                                          vtkRenderWindow, vtkWindowToImageFilter)
 from vtkmodules.vtkCommonCore import vtkFloatArray
 
-failures = []
-
-
-def check(cond, message):
-    if not cond:
-        failures.append(message)
-        print("FAIL:", message)
+from stylize_test_scene import check, failures
 
 
 def render(model, gbuffer):
