@@ -110,7 +110,7 @@ public:
     }
   }
 
-  void TimeEnd(const std::string& name)
+  void TimeEnd(const std::string& name) // no copy of the name when timing is off
   {
     if (!this->Timing)
     {
@@ -131,10 +131,11 @@ public:
     it->Runs++;
   }
 
-  std::string StageName(int stage) const
+  const std::string& StageName(int stage) const
   {
+    static const std::string output = "OUTPUT";
     const std::string& d = this->StageDefines[stage];
-    return d.empty() ? "OUTPUT" : d;
+    return d.empty() ? output : d;
   }
 
   // Makes stage `stage`'s program current; nullptr (and StageFailed) when it does not build.
@@ -522,10 +523,9 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
     vtkShaderProgram* background = nullptr;
     if (!layered && !clear)
     {
-      background = in.BackgroundQuad.Prepare(in.Window,
-        std::string("#define STYLIZE_STAGE_BACKGROUND\n") + vtkStylizeCommonFS +
-          vtkStylizeDepthFS + vtkStylizeScreenFS,
-        "  stylizeBackgroundMain();\n");
+      static const std::string source = std::string("#define STYLIZE_STAGE_BACKGROUND\n") +
+        vtkStylizeCommonFS + vtkStylizeDepthFS + vtkStylizeScreenFS; // assembled once
+      background = in.BackgroundQuad.Prepare(in.Window, source, "  stylizeBackgroundMain();\n");
       in.StageFailed = in.StageFailed || !background;
     }
     vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
