@@ -5,6 +5,7 @@
 #include "vtkFloatArray.h"
 #include "vtkHomogeneousTransform.h"
 #include "vtkLightsPass.h"
+#include "vtkMultiProcessController.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -39,6 +40,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -153,11 +155,18 @@ public:
   vtkNew<vtkMatrix4x4> InverseModel;
   vtkNew<vtkMatrix4x4> Product;
   vtkNew<vtkMatrix4x4> Upload; // a matrix on its way to a shader (transposed)
+
+  // The channel source's channels composited over the processes (on process 0): stored depth,
+  // normal, position, direction, inside the rectangle SourceRect (x, y, width, height).
+  vtkTextureObject* Composited[4] = { nullptr, nullptr, nullptr, nullptr };
+  int SourceRect[4] = { 0, 0, 0, 0 };
 };
 
 vtkStandardNewMacro(vtkStylizeGBufferPass);
 vtkCxxSetObjectMacro(vtkStylizeGBufferPass, LightingPass, vtkStylizeLightingPass);
 vtkCxxSetObjectMacro(vtkStylizeGBufferPass, SceneImagePass, vtkRenderPass);
+vtkCxxSetObjectMacro(vtkStylizeGBufferPass, ChannelSource, vtkStylizeGBufferPass);
+vtkCxxSetObjectMacro(vtkStylizeGBufferPass, Controller, vtkMultiProcessController);
 
 //------------------------------------------------------------------------------
 vtkStylizeGBufferPass::vtkStylizeGBufferPass()
@@ -190,6 +199,8 @@ vtkStylizeGBufferPass::~vtkStylizeGBufferPass()
 {
   this->SetLightingPass(nullptr);
   this->SetSceneImagePass(nullptr);
+  this->SetChannelSource(nullptr);
+  this->SetController(nullptr);
   this->FreeTextures(nullptr);
   this->GeometryCameraPass->Delete();
   this->GeometrySequence->Delete();
@@ -328,6 +339,10 @@ void vtkStylizeGBufferPass::FreeTextures(vtkWindow* w)
   {
     vtkStylizeShaderUtilities::FreeTexture(*tex, w);
   }
+  for (vtkTextureObject*& tex : this->Internals->Composited)
+  {
+    vtkStylizeShaderUtilities::FreeTexture(tex, w);
+  }
   for (vtkOpenGLFramebufferObject** fbo : { &this->FrameBufferObject, &this->ImageFrameBuffer })
   {
     if (*fbo)
@@ -417,6 +432,18 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   this->Internals->ClearPass->Attachments = n;
   fbo->AddDepthAttachment(this->DepthTexture);
   fbo->ActivateDrawBuffers(n);
+  // VTK's state cache compares the list with the first n entries of the last list set, whatever
+  // framebuffer that was: right after another G-buffer with as many attachments (this pass as
+  // ParaView's per-rank pass, under a style's G-buffer) it skips the call and this framebuffer
+  // keeps drawing into its first attachment alone. Set the list itself.
+  {
+    GLenum buffers[8];
+    for (unsigned int i = 0; i < n && i < 8; ++i)
+    {
+      buffers[i] = GL_COLOR_ATTACHMENT0 + i;
+    }
+    glDrawBuffers(static_cast<GLsizei>(std::min(n, 8u)), buffers);
+  }
   fbo->StartNonOrtho(w, h);
 
   this->Internals->View->DeepCopy(ren->GetActiveCamera()->GetModelViewTransformMatrix());
@@ -448,6 +475,7 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   }
   this->NumberOfRenderedProps += this->GeometryCameraPass->GetNumberOfRenderedProps();
   this->PostRender(&sfbo);
+  ++this->GeometryRenders;
 
   fbo->UnBind();
   fbo->RestorePreviousBindingsAndBuffers();
@@ -583,10 +611,49 @@ void vtkStylizeGBufferPass::RenderSceneImage(
   simage.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
   simage.SetFrameBuffer(image);
   simage.SetRequiredKeys(s->GetRequiredKeys());
+  // The channel source renders this process's geometry inside the image, at the image's size,
+  // with this pass's channels.
+  vtkStylizeGBufferPass* source = this->ChannelSource;
+  const vtkTypeUInt64 sourceRenders = source ? source->GeometryRenders : 0;
+  const int sourceChannels = this->Channels & (NORMAL | POSITION | DIRECTION);
+  if (source)
+  {
+    source->SetChannels(sourceChannels);
+    source->SetPositionSpace(this->PositionSpace);
+    source->SetNormalPrecision(this->Precision == FULL ? FULL : this->NormalPrecision);
+    source->SetGeometryResolution(0, 0);
+    source->SetGeometryScreenTransform(1.0, 1.0, 0.0, 0.0);
+  }
   this->SceneImagePass->Render(&simage);
   this->NumberOfRenderedProps += this->SceneImagePass->GetNumberOfRenderedProps();
   image->UnBind();
   image->RestorePreviousBindingsAndBuffers();
+  const bool sourceRendered = source && source->GeometryRenders != sourceRenders &&
+    source->GeometrySize[0] == w && source->GeometrySize[1] == h &&
+    source->Channels == sourceChannels;
+  this->ChannelSourceUsed = false;
+  if (source && this->Controller && this->Controller->GetNumberOfProcesses() > 1)
+  {
+    this->ChannelSourceUsed = this->CompositeChannelSource(renWin, sourceRendered, w, h);
+  }
+  else if (sourceRendered)
+  {
+    this->ChannelSourceUsed = true;
+    const int whole[4] = { 0, 0, w, h };
+    std::copy(whole, whole + 4, this->Internals->SourceRect);
+  }
+  // The textures the channels come from: the source's own (one process) or the composited ones.
+  vtkTextureObject* sourceTextures[4] = { nullptr, nullptr, nullptr, nullptr };
+  if (this->ChannelSourceUsed)
+  {
+    const bool composited = this->Controller && this->Controller->GetNumberOfProcesses() > 1;
+    vtkTextureObject* const own[4] = { source->DepthTexture, source->NormalTexture,
+      source->PositionTexture, source->DirectionTexture };
+    for (int i = 0; i < 4; ++i)
+    {
+      sourceTextures[i] = composited ? this->Internals->Composited[i] : own[i];
+    }
+  }
 
   // 2. The G-buffer from the image (the G-buffer's framebuffer is bound again).
   // The requested channels, in attachment order, with literal gl_FragData indices.
@@ -596,17 +663,28 @@ void vtkStylizeGBufferPass::RenderSceneImage(
   for (auto channel : { std::make_pair(this->NormalTexture, "stylizeOutNormal"),
          std::make_pair(this->PositionTexture, "stylizeOutPosition"),
          std::make_pair(this->LinearDepthTexture, "stylizeOutLinearDepth"),
-         std::make_pair(this->DirectionTexture, "vec4(0.0)") }) // no attribute: coherence 0
+         std::make_pair(this->DirectionTexture, "stylizeOutDirection") })
   {
     if (channel.first)
     {
       body << "  gl_FragData[" << index++ << "] = " << channel.second << ";\n";
     }
   }
-  const std::string defines =
-    this->PositionSpace == OBJECT ? "#define STYLIZE_POSITION_WORLD\n" : "";
+  std::string defines = this->PositionSpace == OBJECT ? "#define STYLIZE_POSITION_WORLD\n" : "";
+  if (this->ChannelSourceUsed)
+  {
+    defines += "#define STYLIZE_CHANNEL_SOURCE\n";
+    const char* const names[4] = { nullptr, "NORMAL", "POSITION", "DIRECTION" };
+    for (int i = 1; i < 4; ++i)
+    {
+      if (sourceTextures[i])
+      {
+        defines += std::string("#define STYLIZE_SOURCE_") + names[i] + "\n";
+      }
+    }
+  }
   vtkShaderProgram* program = this->Internals->ReconstructQuad.Prepare(
-    renWin, defines + vtkStylizeReconstructFS, body.str());
+    renWin, defines + vtkStylizeDepthFS + vtkStylizeReconstructFS, body.str());
   if (!program)
   {
     vtkErrorMacro("Could not build the G-buffer reconstruction shader.");
@@ -642,11 +720,21 @@ void vtkStylizeGBufferPass::RenderSceneImage(
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   const double* t = this->GeometryScreenTransform;
-  vtkStylizeUniforms(program)
-    .Texture("stylizeImageColor", this->ImageColorTexture)
+  vtkStylizeUniforms uniforms(program);
+  uniforms.Texture("stylizeImageColor", this->ImageColorTexture)
     .Texture("stylizeImageDepth", this->ImageDepthTexture)
     .Float4("stylizeScreenTransform", t[0], t[1], t[2], t[3])
     .Float2("stylizeImageSize", w, h);
+  if (this->ChannelSourceUsed)
+  {
+    const int* r = this->Internals->SourceRect;
+    uniforms.Texture("stylizeSourceDepth", sourceTextures[0])
+      .Texture("stylizeSourceNormal", sourceTextures[1])
+      .Texture("stylizeSourcePosition", sourceTextures[2])
+      .Texture("stylizeSourceDirection", sourceTextures[3])
+      .Float4("stylizeSourceRect", r[0], r[1], r[2], r[3]);
+    source->SetDepthMappingUniforms(program);
+  }
   this->Internals->ReconstructQuad.Render();
 }
 
@@ -681,44 +769,243 @@ bool vtkStylizeGBufferPass::DownloadChannel(int buffer, vtkFloatArray* out)
   {
     return false;
   }
-  const int w = static_cast<int>(tex->GetWidth());
-  const int h = static_cast<int>(tex->GetHeight());
+  const int rect[4] = { 0, 0, static_cast<int>(tex->GetWidth()),
+    static_cast<int>(tex->GetHeight()) };
   const int comps = (buffer == DEPTH_BUFFER || buffer == LINEAR_DEPTH_BUFFER) ? 1 : 4;
   out->SetNumberOfComponents(comps);
-  out->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  out->SetNumberOfTuples(static_cast<vtkIdType>(rect[2]) * rect[3]);
+  this->ReadBuffer(buffer, rect, out->GetPointer(0));
+  return true;
+}
 
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::ReadBuffer(int buffer, const int rect[4], float* out)
+{
   vtkOpenGLFramebufferObject* fbo = this->FrameBufferObject;
   fbo->SaveCurrentBindingsAndBuffers(GL_READ_FRAMEBUFFER);
   fbo->Bind(GL_READ_FRAMEBUFFER);
   if (buffer == DEPTH_BUFFER)
   {
-    glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, out->GetPointer(0));
+    glReadPixels(rect[0], rect[1], rect[2], rect[3], GL_DEPTH_COMPONENT, GL_FLOAT, out);
   }
   else
   {
+    // Attachments: the colour, then those allocated of normal, position, linear depth and
+    // direction, in this order.
+    vtkTextureObject* const order[5] = { this->ColorTexture, this->NormalTexture,
+      this->PositionTexture, this->LinearDepthTexture, this->DirectionTexture };
+    const int slot = buffer == COLOR_BUFFER ? 0
+      : buffer == NORMAL_BUFFER             ? 1
+      : buffer == POSITION_BUFFER           ? 2
+      : buffer == LINEAR_DEPTH_BUFFER       ? 3
+                                            : 4;
     unsigned int index = 0;
-    if (buffer == NORMAL_BUFFER)
+    for (int i = 0; i < slot; ++i)
     {
-      index = 1;
-    }
-    else if (buffer == POSITION_BUFFER)
-    {
-      index = this->NormalTexture ? 2 : 1;
-    }
-    else if (buffer == LINEAR_DEPTH_BUFFER)
-    {
-      index = 1 + (this->NormalTexture ? 1 : 0) + (this->PositionTexture ? 1 : 0);
-    }
-    else if (buffer == DIRECTION_BUFFER)
-    {
-      index = 1 + (this->NormalTexture ? 1 : 0) + (this->PositionTexture ? 1 : 0) +
-        (this->LinearDepthTexture ? 1 : 0);
+      index += order[i] ? 1 : 0;
     }
     glReadBuffer(GL_COLOR_ATTACHMENT0 + index);
-    glReadPixels(0, 0, w, h, comps == 1 ? GL_RED : GL_RGBA, GL_FLOAT, out->GetPointer(0));
+    glReadPixels(rect[0], rect[1], rect[2], rect[3],
+      buffer == LINEAR_DEPTH_BUFFER ? GL_RED : GL_RGBA, GL_FLOAT, out);
   }
   fbo->UnBind(GL_READ_FRAMEBUFFER);
   fbo->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// One process's part of the composited channels: the rectangle (x, y, width, height) where it
+// drew a surface and, inside it row by row, the stored depth and 4 floats per channel.
+struct ChannelPart
+{
+  int Rect[4] = { 0, 0, 0, 0 };
+  std::vector<float> Depth;
+  std::vector<float> Channels[3]; // normal, position, direction
+
+  vtkIdType Area() const { return static_cast<vtkIdType>(this->Rect[2]) * this->Rect[3]; }
+};
+
+const int ChannelTag = 735310; // and the next 4
+
+// Keeps in `own` the nearer of `own` and `in` at every pixel of their union (ties: `own`, the
+// lower process).
+void MergePart(ChannelPart& own, ChannelPart& in, const bool present[3])
+{
+  if (in.Area() == 0)
+  {
+    return;
+  }
+  if (own.Area() == 0)
+  {
+    own = std::move(in);
+    return;
+  }
+  ChannelPart u;
+  u.Rect[0] = std::min(own.Rect[0], in.Rect[0]);
+  u.Rect[1] = std::min(own.Rect[1], in.Rect[1]);
+  u.Rect[2] = std::max(own.Rect[0] + own.Rect[2], in.Rect[0] + in.Rect[2]) - u.Rect[0];
+  u.Rect[3] = std::max(own.Rect[1] + own.Rect[3], in.Rect[1] + in.Rect[3]) - u.Rect[1];
+  u.Depth.assign(u.Area(), 1.0f);
+  for (int c = 0; c < 3; ++c)
+  {
+    if (present[c])
+    {
+      u.Channels[c].assign(4 * u.Area(), 0.0f);
+    }
+  }
+  for (ChannelPart* part : { &own, &in })
+  {
+    for (int y = 0; y < part->Rect[3]; ++y)
+    {
+      for (int x = 0; x < part->Rect[2]; ++x)
+      {
+        const vtkIdType from = static_cast<vtkIdType>(y) * part->Rect[2] + x;
+        const vtkIdType to = static_cast<vtkIdType>(y + part->Rect[1] - u.Rect[1]) * u.Rect[2] +
+          (x + part->Rect[0] - u.Rect[0]);
+        if (part->Depth[from] < u.Depth[to])
+        {
+          u.Depth[to] = part->Depth[from];
+          for (int c = 0; c < 3; ++c)
+          {
+            if (present[c])
+            {
+              std::copy_n(&part->Channels[c][4 * from], 4, &u.Channels[c][4 * to]);
+            }
+          }
+        }
+      }
+    }
+  }
+  own = std::move(u);
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::CompositeChannelSource(
+  vtkOpenGLRenderWindow* renWin, bool rendered, int w, int h)
+{
+  vtkMultiProcessController* controller = this->Controller;
+  vtkStylizeGBufferPass* source = this->ChannelSource;
+  const int rank = controller->GetLocalProcessId();
+  const int size = controller->GetNumberOfProcesses();
+  // Every process asked its source for the same channels.
+  const int buffers[3] = { NORMAL_BUFFER, POSITION_BUFFER, DIRECTION_BUFFER };
+  const bool present[3] = { (source->Channels & NORMAL) != 0,
+    (source->Channels & POSITION) != 0, (source->Channels & DIRECTION) != 0 };
+
+  // 1. This process's part: where its source drew a surface.
+  ChannelPart own;
+  if (rendered && source->FrameBufferObject && source->DepthTexture)
+  {
+    std::vector<float> depth(static_cast<size_t>(w) * h);
+    const int whole[4] = { 0, 0, w, h };
+    source->ReadBuffer(DEPTH_BUFFER, whole, depth.data());
+    int lo[2] = { w, h }, hi[2] = { -1, -1 };
+    for (int y = 0; y < h; ++y)
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        if (depth[static_cast<size_t>(y) * w + x] < 1.0f)
+        {
+          lo[0] = std::min(lo[0], x);
+          lo[1] = std::min(lo[1], y);
+          hi[0] = std::max(hi[0], x);
+          hi[1] = std::max(hi[1], y);
+        }
+      }
+    }
+    if (hi[0] >= 0)
+    {
+      const int rect[4] = { lo[0], lo[1], hi[0] - lo[0] + 1, hi[1] - lo[1] + 1 };
+      std::copy(rect, rect + 4, own.Rect);
+      own.Depth.resize(own.Area());
+      for (int y = 0; y < rect[3]; ++y)
+      {
+        std::copy_n(&depth[static_cast<size_t>(y + rect[1]) * w + rect[0]], rect[2],
+          &own.Depth[static_cast<size_t>(y) * rect[2]]);
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        if (present[c])
+        {
+          own.Channels[c].resize(4 * own.Area());
+          source->ReadBuffer(buffers[c], rect, own.Channels[c].data());
+        }
+      }
+    }
+  }
+
+  // 2. A binary tree towards process 0: at step s, process r (r mod 2s = s) sends to r - s.
+  for (int step = 1; step < size; step *= 2)
+  {
+    if (rank % (2 * step) == step)
+    {
+      const int to = rank - step;
+      controller->Send(own.Rect, 4, to, ChannelTag);
+      if (own.Area() > 0)
+      {
+        controller->Send(own.Depth.data(), own.Area(), to, ChannelTag + 1);
+        for (int c = 0; c < 3; ++c)
+        {
+          if (present[c])
+          {
+            controller->Send(own.Channels[c].data(), 4 * own.Area(), to, ChannelTag + 2 + c);
+          }
+        }
+      }
+      return false;
+    }
+    if (rank + step < size)
+    {
+      const int from = rank + step;
+      ChannelPart in;
+      controller->Receive(in.Rect, 4, from, ChannelTag);
+      if (in.Rect[2] < 0 || in.Rect[3] < 0 || in.Rect[0] < 0 || in.Rect[1] < 0 ||
+        in.Rect[0] + in.Rect[2] > w || in.Rect[1] + in.Rect[3] > h)
+      {
+        vtkErrorMacro("Process " << from << " sent channels outside the image.");
+        std::fill(in.Rect, in.Rect + 4, 0);
+      }
+      if (in.Area() > 0)
+      {
+        in.Depth.resize(in.Area());
+        controller->Receive(in.Depth.data(), in.Area(), from, ChannelTag + 1);
+        for (int c = 0; c < 3; ++c)
+        {
+          if (present[c])
+          {
+            in.Channels[c].resize(4 * in.Area());
+            controller->Receive(in.Channels[c].data(), 4 * in.Area(), from, ChannelTag + 2 + c);
+          }
+        }
+      }
+      MergePart(own, in, present);
+    }
+  }
+
+  // 3. Process 0 keeps the result in textures.
+  if (own.Area() == 0)
+  {
+    return false;
+  }
+  std::copy(own.Rect, own.Rect + 4, this->Internals->SourceRect);
+  vtkTextureObject** textures = this->Internals->Composited;
+  for (int i = 0; i < 4; ++i)
+  {
+    if (i > 0 && !present[i - 1])
+    {
+      vtkStylizeShaderUtilities::FreeTexture(textures[i], renWin);
+      continue;
+    }
+    if (!textures[i])
+    {
+      textures[i] = vtkTextureObject::New();
+    }
+    textures[i]->SetContext(renWin);
+    float* data = i == 0 ? own.Depth.data() : own.Channels[i - 1].data();
+    textures[i]->Create2DFromRaw(own.Rect[2], own.Rect[3], i == 0 ? 1 : 4, VTK_FLOAT, data);
+  }
   return true;
 }
 
@@ -988,6 +1275,10 @@ vtkIdType vtkStylizeGBufferPass::GetTextureBytes()
   for (vtkTextureObject* t : { this->ColorTexture, this->NormalTexture, this->PositionTexture,
          this->LinearDepthTexture, this->DepthTexture, this->DirectionTexture,
          this->ImageColorTexture, this->ImageDepthTexture })
+  {
+    total += vtkStylizeShaderUtilities::TextureBytes(t);
+  }
+  for (vtkTextureObject* t : this->Internals->Composited)
   {
     total += vtkStylizeShaderUtilities::TextureBytes(t);
   }

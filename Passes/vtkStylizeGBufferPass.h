@@ -45,6 +45,17 @@
  * resolution and screen transform still apply: the image is sampled (nearest) at the shifted
  * pixel centres. This is how the styles run after a parallel compositor: see vtkStylizeStylePass.
  *
+ * **Channels from the processes' own G-buffers.** An image holds colour and depth only, and a
+ * normal rebuilt from depth is the facet's, not the interpolated one. When ChannelSource is set
+ * (a vtkStylizeGBufferPass that renders this process's geometry inside SceneImagePass:
+ * ParaView's per-rank render pass), the image path takes NORMAL, POSITION (in the requested
+ * space, object space included) and DIRECTION from it wherever its depth is the image's depth
+ * (the same surface), and reconstructs only where it is not (nothing of this process there).
+ * With a Controller of several processes (ParaView's render ranks under IceT), every process
+ * sends the source's channels where it drew a surface to process 0, which keeps at each pixel
+ * the nearest by depth: the depth test the compositor applies to the colour. The picture after
+ * compositing is then the one the geometry gives.
+ *
  * Renderers that do not start at the window origin, several renderers, layered renderers
  * (the background of a layer above 0 is left transparent), tiled rendering
  * (vtkWindowToImageFilter with a scale) and window resizes are handled. ReleaseGraphicsResources()
@@ -63,6 +74,7 @@
 
 class vtkCameraPass;
 class vtkFloatArray;
+class vtkMultiProcessController;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkRenderPass;
@@ -177,6 +189,37 @@ public:
   vtkGetObjectMacro(SceneImagePass, vtkRenderPass);
   virtual void SetSceneImagePass(vtkRenderPass* pass);
   ///@}
+
+  ///@{
+  /**
+   * The G-buffer pass that renders this process's geometry in the same frame, inside
+   * SceneImagePass (see the class description). Before the image is rendered, the source is set
+   * to this pass's NORMAL, POSITION and DIRECTION channels, position space and normal precision;
+   * in the image path its channels replace the reconstruction where its depth equals the
+   * image's. Ignored for a frame the source did not render, or rendered at another size (an
+   * interactive image reduction). Default nullptr: everything is reconstructed from the image.
+   */
+  vtkGetObjectMacro(ChannelSource, vtkStylizeGBufferPass);
+  virtual void SetChannelSource(vtkStylizeGBufferPass* source);
+  ///@}
+
+  ///@{
+  /**
+   * The processes whose channel sources each hold part of the scene (ParaView's render ranks).
+   * With more than one process, each sends its source's channels inside the rectangle where it
+   * drew a surface to process 0 (a binary tree, log2(N) steps), which keeps the nearest by depth
+   * at every pixel; every process must render each frame, as they do under IceT. Default
+   * nullptr: this process alone.
+   */
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  virtual void SetController(vtkMultiProcessController* controller);
+  ///@}
+
+  /**
+   * Whether the last image-path frame took its channels from ChannelSource (where its depth was
+   * the image's depth) rather than reconstructing them all.
+   */
+  vtkGetMacro(ChannelSourceUsed, bool);
 
   /** Whether the last RenderGeometry() took the scene from SceneImagePass. */
   vtkGetMacro(SceneFromImage, bool);
@@ -294,6 +337,14 @@ protected:
   /** RenderGeometry() for a scene from SceneImagePass; the G-buffer's FBO is bound. */
   void RenderSceneImage(const vtkRenderState* s, vtkOpenGLRenderWindow* renWin, int w, int h);
   void FreeTextures(vtkWindow* w);
+  /**
+   * Sends the channel source's channels of every process to process 0, nearest by depth, into
+   * the composited textures (a collective call). Returns, on process 0, whether any process
+   * drew a surface; false elsewhere.
+   */
+  bool CompositeChannelSource(vtkOpenGLRenderWindow* renWin, bool rendered, int w, int h);
+  /** glReadPixels of a buffer of the last frame inside rect (x, y, width, height), as floats. */
+  void ReadBuffer(int buffer, const int rect[4], float* out);
 
   int Channels = 0;
   double LogarithmicDepthRatio = 1.0e4;
@@ -318,6 +369,10 @@ protected:
   vtkStylizeLightingPass* LightingPass = nullptr;
   vtkRenderPass* SceneImagePass = nullptr;
   bool SceneFromImage = false; // the last RenderGeometry() used SceneImagePass
+  vtkStylizeGBufferPass* ChannelSource = nullptr;
+  vtkMultiProcessController* Controller = nullptr;
+  bool ChannelSourceUsed = false;
+  vtkTypeUInt64 GeometryRenders = 0; // RenderGeometry() calls that rendered geometry
   vtkOpenGLFramebufferObject* ImageFrameBuffer = nullptr;
   vtkTextureObject* ImageColorTexture = nullptr;
   vtkTextureObject* ImageDepthTexture = nullptr;

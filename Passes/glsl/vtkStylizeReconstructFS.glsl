@@ -3,12 +3,30 @@
 // hands over nothing else). stylizeReconstruct() computes every channel; the caller writes the
 // requested ones to gl_FragData (VTK needs literal indices there). STYLIZE_POSITION_WORLD asks
 // for world positions instead of view ones.
+// STYLIZE_CHANNEL_SOURCE: the processes' own G-buffers (vtkStylizeGBufferPass::ChannelSource,
+// composited by depth when there are several) hold the true channels inside stylizeSourceRect;
+// where their depth is the image's (the same surface) they replace the reconstruction:
+// STYLIZE_SOURCE_NORMAL, _POSITION and _DIRECTION say which they hold. Needs vtkStylizeDepthFS
+// (the source's depth may be logarithmic).
 uniform sampler2D stylizeImageColor;
 uniform sampler2D stylizeImageDepth;
 uniform mat4 stylizeInverseProjection; // normalized device coordinates -> view coordinates
 uniform mat4 stylizeInverseView;       // view coordinates -> world coordinates
 uniform vec4 stylizeScreenTransform;   // the G-buffer's x' = sx x + tx, y' = sy y + ty
 uniform vec2 stylizeImageSize;         // the image's size in pixels
+#ifdef STYLIZE_CHANNEL_SOURCE
+uniform sampler2D stylizeSourceDepth;  // stored depth (stylizeWindowDepth() maps it)
+uniform vec4 stylizeSourceRect;        // x, y, width, height of the source textures in the image
+#ifdef STYLIZE_SOURCE_NORMAL
+uniform sampler2D stylizeSourceNormal;
+#endif
+#ifdef STYLIZE_SOURCE_POSITION
+uniform sampler2D stylizeSourcePosition;
+#endif
+#ifdef STYLIZE_SOURCE_DIRECTION
+uniform sampler2D stylizeSourceDirection;
+#endif
+#endif
 
 // View-space position of the image pixel whose centre is at texture coordinates uv.
 vec3 stylizeImageViewPosition(vec2 uv, float depth)
@@ -72,6 +90,7 @@ vec4 stylizeOutColor;
 vec4 stylizeOutNormal;
 vec4 stylizeOutPosition;
 vec4 stylizeOutLinearDepth;
+vec4 stylizeOutDirection;
 
 void stylizeReconstruct()
 {
@@ -92,5 +111,27 @@ void stylizeReconstruct()
 #endif
   stylizeOutPosition = surface ? vec4(q, 1.0) : vec4(0.0);
   stylizeOutLinearDepth = vec4(surface ? max(-p.z, 0.0) : 0.0, 0.0, 0.0, 0.0);
+  stylizeOutDirection = vec4(0.0); // no direction attribute in an image: coherence 0
+#ifdef STYLIZE_CHANNEL_SOURCE
+  // The source's pixel holds the same surface when its depth is the image's (within what a
+  // 24-bit depth buffer between them rounds off).
+  ivec2 local = pixel - ivec2(stylizeSourceRect.xy);
+  bool inRect = surface && all(greaterThanEqual(local, ivec2(0))) &&
+    all(lessThan(local, ivec2(stylizeSourceRect.zw)));
+  ivec2 at = clamp(local, ivec2(0), max(ivec2(stylizeSourceRect.zw) - 1, ivec2(0)));
+  float sourceDepth = stylizeWindowDepth(texelFetch(stylizeSourceDepth, at, 0).r);
+  if (inRect && abs(sourceDepth - depth) <= 1.0e-6)
+  {
+#ifdef STYLIZE_SOURCE_NORMAL
+    stylizeOutNormal = texelFetch(stylizeSourceNormal, at, 0);
+#endif
+#ifdef STYLIZE_SOURCE_POSITION
+    stylizeOutPosition = texelFetch(stylizeSourcePosition, at, 0);
+#endif
+#ifdef STYLIZE_SOURCE_DIRECTION
+    stylizeOutDirection = texelFetch(stylizeSourceDirection, at, 0);
+#endif
+  }
+#endif
   gl_FragDepth = depth;
 }

@@ -2,6 +2,7 @@
 
 #include "vtkBoundingBox.h"
 #include "vtkComicPass.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
 #include "vtkPVSynchronizedRenderer.h"
@@ -9,6 +10,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSketchPass.h"
+#include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 
 vtkStandardNewMacro(vtkPVStylizeView);
@@ -23,6 +25,10 @@ vtkPVStylizeView::vtkPVStylizeView()
   // Per rank, the lighting pass renders what ParaView's default pass renders.
   this->LightingDelegate = vtkSmartPointer<vtkPVDefaultPass>::New();
   this->LightingPass->SetDelegatePass(this->LightingDelegate);
+  // Per rank, under a style, the G-buffer: lit colour and depth for IceT, and the channels the
+  // style reads (normals, positions, directions) kept for it.
+  this->RankGBuffer = vtkSmartPointer<vtkStylizeGBufferPass>::New();
+  this->RankGBuffer->SetLightingPass(this->LightingPass);
   this->RequestedFXAA = this->UseFXAA;
 }
 
@@ -60,6 +66,10 @@ void vtkPVStylizeView::SetLightingPass(vtkStylizeLightingPass* pass)
   this->LightingPass =
     pass ? pass : vtkSmartPointer<vtkStylizeLightingPass>::New().GetPointer();
   this->LightingPass->SetDelegatePass(this->LightingDelegate);
+  if (this->RankGBuffer)
+  {
+    this->RankGBuffer->SetLightingPass(this->LightingPass);
+  }
   this->Modified();
 }
 
@@ -127,6 +137,10 @@ void vtkPVStylizeView::ReleasePassResources(vtkStylizeStylePass* keep)
   {
     this->LightingPass->ReleaseGraphicsResources(window);
   }
+  if (!keep && this->RankGBuffer)
+  {
+    this->RankGBuffer->ReleaseGraphicsResources(window);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -150,11 +164,19 @@ void vtkPVStylizeView::ConfigurePasses()
   this->LightingPass->SetModel(model);
   const bool lighting = style || this->LightingModel != STYLE_DEFAULT;
   this->Superclass::SetUseFXAA(this->RequestedFXAA && !style);
-  this->SynchronizedRenderers->SetRenderPass(lighting ? this->LightingPass.GetPointer() : nullptr);
+  // Per rank: under a style the G-buffer (lit by the lighting pass), otherwise the lighting
+  // pass alone or ParaView's own pass.
+  vtkRenderPass* rankPass = style ? static_cast<vtkRenderPass*>(this->RankGBuffer)
+                                  : (lighting ? this->LightingPass.GetPointer() : nullptr);
+  this->SynchronizedRenderers->SetRenderPass(rankPass);
   if (style)
   {
     // The composited depth is needed (IceT pastes it back only when asked).
     this->SynchronizedRenderers->SetUseDepthBuffer(true);
+    // After compositing, the style takes the ranks' own normals, positions and directions
+    // (composited by depth across the ranks) instead of rebuilding them from the depth.
+    style->GetGBufferPass()->SetChannelSource(this->RankGBuffer);
+    style->GetGBufferPass()->SetController(vtkMultiProcessController::GetGlobalController());
   }
   this->SynchronizedRenderers->SetImageProcessingPass(style);
   // The sketch's object scale counts the data of all ranks (the style runs on the composited

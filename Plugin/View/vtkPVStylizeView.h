@@ -6,15 +6,19 @@
  * Comic, Pixel art or Sketch. It follows the design ParaView's eye-dome-lighting view uses, in
  * two stages, so that it works the same in the GUI, in pvbatch and under MPI with IceT:
  *
- * 1. **Per process, before compositing:** the lighting model (vtkStylizeLightingPass, the
- *    style's model unless LightingModel says otherwise) is the render pass: each rank lights
- *    its own part of the data, including per-representation settings
- *    (vtkStylizeSurfaceRepresentation: the comic subject factor, gray levels, specular gain).
+ * 1. **Per process, before compositing:** under a style, a vtkStylizeGBufferPass lit by the
+ *    lighting model (vtkStylizeLightingPass, the style's model unless LightingModel says
+ *    otherwise) is the render pass: each rank lights its own part of the data, including
+ *    per-representation settings (vtkStylizeSurfaceRepresentation: the comic subject factor,
+ *    gray levels, specular gain), writes colour and depth for IceT and keeps the normals,
+ *    positions and directions the style reads. With the style None and a lighting model, the
+ *    lighting pass alone is the render pass.
  * 2. **After compositing:** the style pass (a vtkStylizeStylePass) is the image-processing pass.
- *    It receives the composited colour and depth (IceT hands over nothing else) and runs its
- *    screen-space stages on them, with normals and positions reconstructed from the depth
- *    (vtkStylizeGBufferPass, SceneImagePass). With one process the same path is taken, so the
- *    image does not depend on the number of ranks beyond what compositing itself changes.
+ *    It receives the composited colour and depth and takes the other channels from the ranks'
+ *    G-buffers (vtkStylizeGBufferPass::SetChannelSource), composited by depth across the ranks
+ *    over the global controller; where none covers a pixel they are rebuilt from the depth.
+ *    With one process the same path is taken, so the image does not depend on the number of
+ *    ranks beyond what compositing itself changes.
  *
  * The passes are the view's sub-proxies (ComicPass, PixelArtPass, SketchPass, LightingPass);
  * their settings appear in the view's properties panel (generated from the pass headers by
@@ -32,6 +36,7 @@
 class vtkComicPass;
 class vtkPixelArtPass;
 class vtkSketchPass;
+class vtkStylizeGBufferPass;
 class vtkStylizeLightingPass;
 class vtkStylizeStylePass;
 class vtkRenderPass;
@@ -117,6 +122,7 @@ protected:
   vtkSmartPointer<vtkSketchPass> SketchPass;
   vtkSmartPointer<vtkStylizeLightingPass> LightingPass;
   vtkSmartPointer<vtkRenderPass> LightingDelegate;
+  vtkSmartPointer<vtkStylizeGBufferPass> RankGBuffer;
 
 private:
   vtkPVStylizeView(const vtkPVStylizeView&) = delete;

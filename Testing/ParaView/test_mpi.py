@@ -10,13 +10,16 @@ and depth. With 1 rank there is no compositing. Tolerances, from what differs an
 - none (ParaView's own rendering): at most 2 levels apart (IceT's blending over the background
   rounds differently by one level).
 - comic-subject: comic with a Stylized Surface's own subject factor 1 (per-representation
-  lighting, applied by each rank to its piece): as for the styles below, and it must change
+  lighting, applied by each rank to its piece): as for the comic below, and it must change
   the 2-rank image (at least 2000 pixels beyond 16 levels from the comic image).
-- comic, pixel art, sketch: SSIM >= 0.95 and at most 3% of the pixels more than 16 levels apart.
+- comic (and comic-subject): at most 0.5% of the pixels more than 16 levels apart. The ranks'
+  normals reach the style composited by depth (vtkStylizeGBufferPass::SetChannelSource), so
+  the picture is the one rank's (measured: 0 pixels).
+- pixel art, sketch: SSIM >= 0.95 and at most 3% of the pixels more than 16 levels apart.
   IceT leaves the background transparent black (ParaView paints the background colour after
   the image stage), while one rank sees the background colour: stages that look at colour
-  across the silhouette (colour edges, Canny, the sketch's tone blur) see a different
-  neighbour there, so a few pixels along the silhouettes differ.
+  across the silhouette (Canny, the sketch's tone blur) see a different neighbour there, so a
+  few pixels along the silhouettes differ (measured: 0.95% and 0.55%).
 
 With BASELINE_DIR, the 1-rank images are also regression images: each must match
 BASELINE_DIR/paraview.<style>.png with at most 0.2% of the pixels more than 2 levels apart and
@@ -82,6 +85,8 @@ for name in ["none", "comic", "pixel", "sketch", "comic-subject"]:
     if name == "none":
         if worst > 2:
             failures.append("none: 1 and 2 ranks differ (max %g)" % worst)
+    elif name.startswith("comic") and far > 0.005 * pixels:
+        failures.append("%s: %d pixels beyond 16 levels (at most 0.5%%)" % (name, far))
     elif ssim < 0.95 or far > 0.03 * pixels:
         failures.append("%s: SSIM %.4f or %d pixels beyond 16 levels" % (name, ssim, far))
     # each style must differ from ParaView's own image (the style ran after compositing)

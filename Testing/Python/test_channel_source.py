@@ -1,0 +1,139 @@
+"""realdata.channel_source: a style after a compositor reads the processes' own G-buffers.
+
+    test_channel_source.py DATADIR
+
+ParaView's path, in one process: the style stylizes its delegate's image (a camera pass around a
+per-process vtkStylizeGBufferPass, the "channel source"), as it does after IceT compositing.
+Without the source the G-buffer is rebuilt from the image's depth (facet normals, no model
+directions); with it the style reads the true channels. For each style on a scanned mesh, a CAD
+part and a coarse isosurface (and the sketch's model-space directions on the scan), the image is
+compared with the geometry path (the style rendering the geometry itself), same camera and
+lights: with the source at most 0.5% of the pixels may be more than 16 levels apart. The image
+path without the source is measured beside it (not asserted: it is what the source replaces).
+"""
+import os
+import sys
+import time
+
+import numpy as np
+import vtkstylize
+from vtkmodules.vtkFiltersCore import vtkContourFilter, vtkPolyDataNormals
+from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+from vtkmodules.vtkIOPLY import vtkPLYReader
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
+                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from stylize_test_scene import check, failures, offscreen_window, style_maker  # noqa: E402
+
+data = sys.argv[1]
+SIZE = (480, 360)
+
+
+def ply(name):
+    reader = vtkPLYReader()
+    reader.SetFileName(os.path.join(data, name + ".ply"))
+    normals = vtkPolyDataNormals()
+    normals.SetInputConnection(reader.GetOutputPort())
+    normals.Update()
+    return normals.GetOutput()
+
+
+def coarse_contour():
+    # A coarse isosurface of VTK's wavelet (about 3,000 triangles), as ParaView's Contour makes.
+    wavelet = vtkRTAnalyticSource()
+    wavelet.SetWholeExtent(-10, 10, -10, 10, -10, 10)
+    contour = vtkContourFilter()
+    contour.SetInputConnection(wavelet.GetOutputPort())
+    contour.SetValue(0, 157.0)
+    contour.ComputeNormalsOn()
+    contour.Update()
+    return contour.GetOutput()
+
+
+def with_directions(poly):
+    curvatures = vtkstylize.vtkStylizePrincipalCurvatures()
+    curvatures.SetInputData(poly)
+    curvatures.Update()
+    return curvatures.GetOutput()
+
+
+def render(poly, make_style, path):
+    """The frame of `path` ('geometry', 'image' or 'source') and the style; a fresh window."""
+    window = offscreen_window(*SIZE)
+    renderer = vtkRenderer()
+    renderer.SetBackground(0.32, 0.34, 0.43)
+    window.AddRenderer(renderer)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputData(poly)
+    mapper.ScalarVisibilityOff()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    renderer.AddActor(actor)
+    renderer.ResetCamera()
+    renderer.GetActiveCamera().Azimuth(30.0)
+    renderer.GetActiveCamera().Elevation(20.0)
+    renderer.ResetCameraClippingRange()
+    style = make_style()
+    keep = [style]
+    if path != "geometry":
+        camera = vtkCameraPass()
+        if path == "source":
+            source = vtkstylize.vtkStylizeGBufferPass()
+            source.SetLightingPass(style.GetLightingPass())
+            camera.SetDelegatePass(source)
+            style.GetGBufferPass().SetChannelSource(source)
+            keep.append(source)
+        else:
+            camera.SetDelegatePass(style.GetLightingPass())
+        style.SetDelegatePass(camera)
+        keep.append(camera)
+    renderer.SetPass(style)
+    window.Render()
+    times = []
+    for _ in range(3):
+        start = time.perf_counter()
+        window.Render()
+        window.WaitForCompletion()
+        times.append(1000.0 * (time.perf_counter() - start))
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    image = grab.GetOutput()
+    pixels = vtk_to_numpy(image.GetPointData().GetScalars())[:, :3].astype(int)
+    used = style.GetGBufferPass().GetChannelSourceUsed()
+    renderer.SetPass(None)
+    style.ReleaseGraphicsResources(window)
+    window.Finalize()
+    return pixels, sorted(times)[1], used
+
+
+def beyond16(a, b):
+    return 100.0 * float((np.abs(a - b).max(axis=1) > 16).sum()) / len(a)
+
+
+scenes = [("bunny (scan)", ply("bunny")), ("fandisk (CAD)", ply("fandisk")),
+          ("wavelet contour (coarse)", coarse_contour())]
+styles = [("comic", style_maker("vtkComicPass")), ("pixel art", style_maker("vtkPixelArtPass")),
+          ("sketch", style_maker("vtkSketchPass"))]
+cases = [(scene, poly, name, make) for scene, poly in scenes for name, make in styles]
+cases.append(("bunny (scan)", with_directions(scenes[0][1]), "sketch, model directions",
+              style_maker("vtkSketchPass", DirectionSource=1)))
+
+print("| scene | style | image path: pixels > 16 levels | with channel source | ms geometry "
+      "/ image / source |")
+print("|---|---|---:|---:|---|")
+for scene, poly, name, make in cases:
+    geometry, t_geometry, _ = render(poly, make, "geometry")
+    image, t_image, _ = render(poly, make, "image")
+    source, t_source, used = render(poly, make, "source")
+    d_image, d_source = beyond16(geometry, image), beyond16(geometry, source)
+    print("| %s | %s | %.2f%% | %.2f%% | %.0f / %.0f / %.0f |" % (
+        scene, name, d_image, d_source, t_geometry, t_image, t_source))
+    check(used, "%s, %s: the channel source was not used" % (scene, name))
+    check(d_source <= 0.5, "%s, %s: %.2f%% of the pixels differ from the geometry path "
+          "(at most 0.5%%)" % (scene, name, d_source))
+sys.exit(1 if failures else 0)
