@@ -5,8 +5,8 @@
 #include "vtkFloatArray.h"
 #include "vtkHomogeneousTransform.h"
 #include "vtkLightsPass.h"
-#include "vtkMultiProcessController.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
@@ -224,6 +224,9 @@ void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->Viewport[2] << " " << this->Viewport[3] << "\n";
   os << indent << "LightingPass: " << (this->LightingPass ? "set" : "(none: VTK lighting)")
      << "\n";
+  os << indent << "ChannelSource: " << (this->ChannelSource ? "set" : "(none)") << "\n";
+  os << indent << "Controller: "
+     << (this->Controller ? this->Controller->GetNumberOfProcesses() : 1) << " process(es)\n";
   os << indent << "SceneImagePass: "
      << (this->SceneImagePass ? this->SceneImagePass->GetClassName() : "(none: the geometry)")
      << "\n";
