@@ -166,6 +166,23 @@ vtkStandardNewMacro(vtkStylizeGBufferPass);
 vtkCxxSetObjectMacro(vtkStylizeGBufferPass, LightingPass, vtkStylizeLightingPass);
 vtkCxxSetObjectMacro(vtkStylizeGBufferPass, SceneImagePass, vtkRenderPass);
 vtkCxxSetObjectMacro(vtkStylizeGBufferPass, ChannelSource, vtkStylizeGBufferPass);
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::SetImageBackground(double r, double g, double b)
+{
+  const double in[3] = { r, g, b };
+  double rgb[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    rgb[i] = std::isnan(in[i]) ? 0.0 : std::min(1.0, std::max(0.0, in[i]));
+  }
+  if (rgb[0] != this->ImageBackground[0] || rgb[1] != this->ImageBackground[1] ||
+    rgb[2] != this->ImageBackground[2])
+  {
+    std::copy(rgb, rgb + 3, this->ImageBackground);
+    this->Modified();
+  }
+}
 vtkCxxSetObjectMacro(vtkStylizeGBufferPass, Controller, vtkMultiProcessController);
 
 //------------------------------------------------------------------------------
@@ -225,6 +242,9 @@ void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightingPass: " << (this->LightingPass ? "set" : "(none: VTK lighting)")
      << "\n";
   os << indent << "ChannelSource: " << (this->ChannelSource ? "set" : "(none)") << "\n";
+  os << indent << "ImageBackground: " << this->ImageBackground[0] << " " << this->ImageBackground[1]
+     << " " << this->ImageBackground[2] << (this->UseImageBackground ? " (used)" : " (off)")
+     << "\n";
   os << indent << "Controller: "
      << (this->Controller ? this->Controller->GetNumberOfProcesses() : 1) << " process(es)\n";
   os << indent << "SceneImagePass: "
@@ -366,6 +386,7 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   vtkOpenGLClearErrorMacro();
   this->NumberOfRenderedProps = 0;
   this->SceneFromImage = this->SceneImagePass != nullptr;
+  this->ImageBackgroundApplied = false; // set by RenderSceneImage()
   vtkRenderer* ren = s->GetRenderer();
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   if (!renWin)
@@ -728,6 +749,13 @@ void vtkStylizeGBufferPass::RenderSceneImage(
     .Texture("stylizeImageDepth", this->ImageDepthTexture)
     .Float4("stylizeScreenTransform", t[0], t[1], t[2], t[3])
     .Float2("stylizeImageSize", w, h);
+  const double* bg = this->ImageBackground;
+  const double* current = ren->GetBackground();
+  this->ImageBackgroundApplied = this->UseImageBackground &&
+    (std::abs(current[0] - bg[0]) > 1e-6 || std::abs(current[1] - bg[1]) > 1e-6 ||
+      std::abs(current[2] - bg[2]) > 1e-6);
+  uniforms.Float4(
+    "stylizeImageBackground", bg[0], bg[1], bg[2], this->ImageBackgroundApplied ? 1 : 0);
   if (this->ChannelSourceUsed)
   {
     const int* r = this->Internals->SourceRect;

@@ -215,6 +215,36 @@ public:
   virtual void SetController(vtkMultiProcessController* controller);
   ///@}
 
+  ///@{
+  /**
+   * The background that is painted under the image afterwards when a compositor renders the
+   * scene over another one (ParaView renders the ranks, and a server's picture for its client,
+   * over transparent black, then blends the styled result over the view's background). With
+   * UseImageBackground on, a frame of the image path whose renderer's background is not this
+   * colour (the compositor replaced it) takes this colour in the colour channel where the image
+   * has no surface (its alpha is kept), so that stages reading colour across a silhouette
+   * (edges, tone blurs) see the background the picture will have; the styles then write the
+   * background premultiplied against it (stylizeOutput() in vtkStylizeScreenFS). An RGB
+   * colour, each component in [0, 1] (clamped; NaN gives 0). Default (0, 0, 0).
+   */
+  void SetImageBackground(double r, double g, double b);
+  void SetImageBackground(const double rgb[3]) { this->SetImageBackground(rgb[0], rgb[1], rgb[2]); }
+  vtkGetVector3Macro(ImageBackground, double);
+  ///@}
+
+  ///@{
+  /**
+   * Whether ImageBackground is used (ParaView's view sets it for a flat background). Default
+   * off: the image's own colour.
+   */
+  vtkSetMacro(UseImageBackground, bool);
+  vtkGetMacro(UseImageBackground, bool);
+  vtkBooleanMacro(UseImageBackground, bool);
+  ///@}
+
+  /** Whether the last image-path frame replaced its background by ImageBackground. */
+  vtkGetMacro(ImageBackgroundApplied, bool);
+
   /**
    * Whether the last image-path frame took its channels from ChannelSource (where its depth was
    * the image's depth) rather than reconstructing them all.
@@ -361,6 +391,9 @@ protected:
   int GeometrySize[2] = { 0, 0 };
   double GeometryScreenTransform[4] = { 1.0, 1.0, 0.0, 0.0 };
   double AfterScreenShift[2] = { 0.0, 0.0 };
+  double ImageBackground[3] = { 0.0, 0.0, 0.0 };
+  bool UseImageBackground = false;
+  bool ImageBackgroundApplied = false;
   unsigned int NumberOfAttachments = 1;
   vtkTimeStamp ShaderStageTime;
   int BuiltChannels = -1;

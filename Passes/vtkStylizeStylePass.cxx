@@ -662,8 +662,11 @@ void vtkStylizeStylePass::BindSceneTextures(vtkStylizeUniforms& u)
 //------------------------------------------------------------------------------
 void vtkStylizeStylePass::SetSceneOutputUniforms(vtkStylizeUniforms& u, vtkRenderer* ren)
 {
+  vtkStylizeGBufferPass* gbuffer = this->Internals->GBuffer;
+  const double* bg = gbuffer->GetImageBackground();
   u.Int("stylizeDiscardBackground", ren->Transparent() ? 1 : 0)
-    .Int("stylizeSceneFromImage", this->Internals->GBuffer->GetSceneFromImage() ? 1 : 0);
+    .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0)
+    .Float4("stylizeImageBackground", bg[0], bg[1], bg[2], gbuffer->GetImageBackgroundApplied() ? 1 : 0);
   this->SetDepthMappingUniforms(u);
 }
 

@@ -318,8 +318,7 @@ void comicMain()
   {
     discard;
   }
-  gl_FragData[0] =
-    vec4(stylizeSaturateFinite(result), stylizeOutputAlpha(background, image.a, 1.0 - e));
+  gl_FragData[0] = stylizeOutput(background, result, image.a, 1.0 - e);
   gl_FragDepth = stylizeWindowDepth(depth);
 }
 

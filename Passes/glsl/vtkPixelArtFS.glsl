@@ -343,7 +343,7 @@ void pixelMain()
   {
     discard;
   }
-  gl_FragData[0] = vec4(art.rgb, stylizeOutputAlpha(art.a < 0.5, 0.0, art.a));
+  gl_FragData[0] = stylizeOutput(art.a < 0.5, art.rgb, 0.0, art.a);
 #ifdef PIXEL_WRITE_DEPTH
 #ifdef PIXEL_FAST
   float depth = texelFetch(stylizeDepthTexture, k, 0).r;

@@ -253,8 +253,7 @@ void sketchMain()
   {
     discard;
   }
-  gl_FragData[0] =
-    vec4(stylizeSaturateFinite(result), stylizeOutputAlpha(background, image.a, 0.0));
+  gl_FragData[0] = stylizeOutput(background, result, image.a, 0.0);
   gl_FragDepth = stylizeWindowDepth(depth);
 }
 #endif

@@ -14,6 +14,9 @@ uniform mat4 stylizeInverseProjection; // normalized device coordinates -> view 
 uniform mat4 stylizeInverseView;       // view coordinates -> world coordinates
 uniform vec4 stylizeScreenTransform;   // the G-buffer's x' = sx x + tx, y' = sy y + ty
 uniform vec2 stylizeImageSize;         // the image's size in pixels
+// rgb: the background painted under the image later (vtkStylizeGBufferPass::ImageBackground),
+// taken as the colour where there is no surface; a = 1 when set, 0 to keep the image's colour
+uniform vec4 stylizeImageBackground;
 #ifdef STYLIZE_CHANNEL_SOURCE
 uniform sampler2D stylizeSourceDepth;  // stored depth (stylizeWindowDepth() maps it)
 uniform vec4 stylizeSourceRect;        // x, y, width, height of the source textures in the image
@@ -103,6 +106,10 @@ void stylizeReconstruct()
   bool surface = depth < 1.0;
   vec3 p = surface ? stylizeImagePositionAt(pixel) : vec3(0.0);
   stylizeOutColor = inside ? texelFetch(stylizeImageColor, pixel, 0) : vec4(0.0);
+  if (!surface && stylizeImageBackground.a > 0.5)
+  {
+    stylizeOutColor.rgb = stylizeImageBackground.rgb;
+  }
   stylizeOutNormal = surface ? vec4(stylizeReconstructNormal(pixel, p, depth), 1.0) : vec4(0.0);
 #ifdef STYLIZE_POSITION_WORLD
   vec3 q = (stylizeInverseView * vec4(p, 1.0)).xyz;

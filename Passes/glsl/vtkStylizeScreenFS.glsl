@@ -62,10 +62,28 @@ uniform int stylizeDiscardBackground; // 1 for layered renderers: keep the layer
 // background transparent for the root to fill) keeps the image's alpha, plus the ink drawn
 // there (outlines); a scene rendered from geometry is opaque everywhere, as before.
 uniform int stylizeSceneFromImage;
+// rgb: the background painted under the image later (vtkStylizeGBufferPass::ImageBackground;
+// the G-buffer's colour holds it on the background); a = 1 when set
+uniform vec4 stylizeImageBackground;
 
 float stylizeOutputAlpha(bool background, float imageAlpha, float ink)
 {
   return (background && stylizeSceneFromImage == 1) ? clamp(max(imageAlpha, ink), 0.0, 1.0) : 1.0;
+}
+
+// A style's output pixel: `rgb` is what the pixel shows over the scene's background, finite and
+// saturated. Where the background is painted under the image afterwards (ImageBackground set)
+// and the pixel is not opaque, the colour is premultiplied against that background, so that
+// painting it under the pixel gives `rgb` back (0 where nothing is drawn on the background).
+vec4 stylizeOutput(bool background, vec3 rgb, float imageAlpha, float ink)
+{
+  float alpha = stylizeOutputAlpha(background, imageAlpha, ink);
+  vec3 colour = stylizeSaturateFinite(rgb);
+  if (background && stylizeSceneFromImage == 1 && stylizeImageBackground.a > 0.5)
+  {
+    colour = max(colour - (1.0 - alpha) * stylizeImageBackground.rgb, vec3(0.0));
+  }
+  return vec4(colour, alpha);
 }
 
 #ifdef STYLIZE_STAGE_BACKGROUND
@@ -81,7 +99,7 @@ void stylizeBackgroundMain()
     discard;
   }
   vec4 image = texelFetch(stylizeColorTexture, p, 0);
-  gl_FragData[0] = vec4(stylizeSaturateFinite(image.rgb), stylizeOutputAlpha(true, image.a, 0.0));
+  gl_FragData[0] = stylizeOutput(true, image.rgb, image.a, 0.0);
   gl_FragDepth = stylizeWindowDepth(texelFetch(stylizeDepthTexture, p, 0).r);
 }
 #endif

@@ -13,6 +13,8 @@
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 
+#include <algorithm>
+
 vtkStandardNewMacro(vtkPVStylizeView);
 
 //------------------------------------------------------------------------------
@@ -117,6 +119,13 @@ void vtkPVStylizeView::SetUseFXAA(bool use)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVStylizeView::SetBackgroundColorMode(int mode)
+{
+  this->Superclass::SetBackgroundColorMode(mode);
+  this->ColorMode = std::min(std::max(mode, static_cast<int>(DEFAULT)), static_cast<int>(STEREO_SKYBOX));
+}
+
+//------------------------------------------------------------------------------
 void vtkPVStylizeView::ReleasePassResources(vtkStylizeStylePass* keep)
 {
   vtkRenderWindow* window = this->GetRenderWindow();
@@ -177,6 +186,19 @@ void vtkPVStylizeView::ConfigurePasses()
     // (composited by depth across the ranks) instead of rebuilding them from the depth.
     style->GetGBufferPass()->SetChannelSource(this->RankGBuffer);
     style->GetGBufferPass()->SetController(vtkMultiProcessController::GetGlobalController());
+    // ParaView renders over transparent black where it composites (several ranks, or a server
+    // rendering for its client) and paints the view's background under the result afterwards:
+    // the style is told which flat background that will be (a gradient, an image or a skybox
+    // leaves the image's own colour).
+    this->UpdateBackground();
+    vtkRenderer* ren = this->GetRenderer();
+    const bool flat = ren && !ren->GetGradientBackground() && !ren->GetTexturedBackground() &&
+      this->ColorMode != vtkPVRenderView::SKYBOX && this->ColorMode != vtkPVRenderView::STEREO_SKYBOX;
+    style->GetGBufferPass()->SetUseImageBackground(flat);
+    if (flat)
+    {
+      style->GetGBufferPass()->SetImageBackground(ren->GetBackground());
+    }
   }
   this->SynchronizedRenderers->SetImageProcessingPass(style);
   // The sketch's object scale counts the data of all ranks (the style runs on the composited

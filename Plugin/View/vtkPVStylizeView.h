@@ -97,6 +97,12 @@ public:
   /** FXAA as the user asked; applied only while the style is None. */
   void SetUseFXAA(bool use) override;
 
+  /**
+   * The background mode as vtkPVRenderView takes it, remembered (vtkPVRenderView keeps it
+   * private): the styles are told the flat background ParaView paints under a composited image.
+   */
+  void SetBackgroundColorMode(int mode) override;
+
   /** The style pass in use (nullptr for the style None). */
   vtkStylizeStylePass* GetActiveStylePass();
 
@@ -116,6 +122,7 @@ protected:
   int Style = NONE;
   int LightingModel = STYLE_DEFAULT;
   bool RequestedFXAA = false;
+  int ColorMode = DEFAULT;
   vtkStylizeStylePass* LastStylePass = nullptr;
   vtkSmartPointer<vtkComicPass> ComicPass;
   vtkSmartPointer<vtkPixelArtPass> PixelArtPass;
