@@ -7,7 +7,8 @@
 # its .deb is downloaded (apt-get download, no root needed) and unpacked into this build tree,
 # and a copy of ParaView's CMake package is pointed at it (cmake/stylize_paraview_overlay.py).
 # Nothing outside the build tree changes; pvbatch and paraview then run with PYTHONPATH at
-# the unpacked package (the wrappers bin/pvbatch-stylize and bin/paraview-stylize do that).
+# the unpacked package (the wrappers bin/pvbatch-stylize, paraview-stylize, pvserver-stylize
+# and pvpython-stylize do that).
 
 set(VTKSTYLIZE_PARAVIEW_SYSTEM_DIR
   "/usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/paraview-5.11"
@@ -71,12 +72,22 @@ paraview_plugin_build(
   TARGET               VTKStylize::paraview_plugins
   INSTALL_HEADERS      OFF)
 
-# Wrappers that run ParaView with the plugin loaded and ParaView's Python found, from the build
-# tree and from the install tree.
+# Wrappers that run ParaView's programs with the plugin available and ParaView's Python found,
+# from the build tree and from the install tree (Plugin/paraview-wrapper.sh.in says how).
 set(_plugin_dir_build "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}/paraview-5.11/plugins")
-foreach (_pv_program pvbatch paraview)
+set(_pv_python_install "${CMAKE_INSTALL_LIBDIR}/vtkstylize/python3-paraview")
+foreach (_pv_program pvbatch paraview pvserver pvpython)
+  set(_system_program "/usr/bin/${_pv_program}")
+  set(_build_program "${_system_program}")
+  set(_install_program "${_system_program}")
+  if (_pv_program STREQUAL "pvpython" AND VTKSTYLIZE_PARAVIEW_PYTHONPATH)
+    # pvpython ships in python3-paraview: the unpacked copy (it finds its modules beside itself)
+    set(_build_program "${VTKSTYLIZE_PARAVIEW_PYTHON_ROOT}/usr/bin/pvpython")
+    set(_install_program "\${prefix}/${_pv_python_install}/bin/pvpython")
+  endif ()
   set(VTKSTYLIZE_PLUGIN_DIR "${_plugin_dir_build}")
   set(VTKSTYLIZE_WRAPPER_PYTHONPATH "${VTKSTYLIZE_PARAVIEW_PYTHONPATH}")
+  set(VTKSTYLIZE_WRAPPER_EXECUTABLE "${_build_program}")
   configure_file("${CMAKE_SOURCE_DIR}/Plugin/paraview-wrapper.sh.in"
     "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_BINDIR}/${_pv_program}-stylize" @ONLY
     FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ
@@ -84,15 +95,18 @@ foreach (_pv_program pvbatch paraview)
   set(VTKSTYLIZE_PLUGIN_DIR "\${prefix}/${CMAKE_INSTALL_LIBDIR}/paraview-5.11/plugins")
   set(VTKSTYLIZE_WRAPPER_PYTHONPATH "")
   if (VTKSTYLIZE_PARAVIEW_PYTHONPATH)
-    set(VTKSTYLIZE_WRAPPER_PYTHONPATH "\${prefix}/${CMAKE_INSTALL_LIBDIR}/vtkstylize/paraview-python")
+    set(VTKSTYLIZE_WRAPPER_PYTHONPATH "\${prefix}/${_pv_python_install}/lib/python3/dist-packages")
   endif ()
+  set(VTKSTYLIZE_WRAPPER_EXECUTABLE "${_install_program}")
   configure_file("${CMAKE_SOURCE_DIR}/Plugin/paraview-wrapper.sh.in"
     "${CMAKE_BINARY_DIR}/install-wrappers/${_pv_program}-stylize" @ONLY)
   install(PROGRAMS "${CMAKE_BINARY_DIR}/install-wrappers/${_pv_program}-stylize"
     DESTINATION "${CMAKE_INSTALL_BINDIR}")
 endforeach ()
 if (VTKSTYLIZE_PARAVIEW_PYTHONPATH)
-  # The unpacked python3-paraview travels with the install (the installed wrappers use it).
+  # The unpacked python3-paraview (its modules and pvpython) travels with the install.
   install(DIRECTORY "${VTKSTYLIZE_PARAVIEW_PYTHONPATH}/"
-    DESTINATION "${CMAKE_INSTALL_LIBDIR}/vtkstylize/paraview-python" USE_SOURCE_PERMISSIONS)
+    DESTINATION "${_pv_python_install}/lib/python3/dist-packages" USE_SOURCE_PERMISSIONS)
+  install(DIRECTORY "${VTKSTYLIZE_PARAVIEW_PYTHON_ROOT}/usr/bin/"
+    DESTINATION "${_pv_python_install}/bin" USE_SOURCE_PERMISSIONS)
 endif ()

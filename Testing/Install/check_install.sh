@@ -5,7 +5,8 @@
 #   - bin/vtkstylize renders a comic PNG (the program finds the project's libraries through
 #     its RUNPATH, $ORIGIN/../lib);
 #   - the Python package renders a comic image (check_python.py);
-#   - bin/pvbatch-stylize loads the installed plugin and renders (when the plugin is built).
+#   - bin/pvbatch-stylize and bin/pvpython-stylize load the installed plugin and render (when the
+#     plugin is built); bin/pvserver-stylize is there.
 # It also fails when anything test-only or build-only is installed.
 #
 #   check_install.sh CMAKE BUILD_DIR SOURCE_DIR WORK_DIR WITH_PYTHON WITH_PLUGIN
@@ -51,6 +52,13 @@ if [ "$with_plugin" = ON ]; then
   grep -q "plugin loaded from $prefix/" "$work/plugin.log" ||
     fail "the plugin was not loaded from $prefix: $(cat "$work/plugin.log")"
   [ -s "$work/plugin.png" ] || fail "pvbatch-stylize wrote no image"
-  echo "plugin from the moved prefix: $work/plugin.png"
+  # pvpython-stylize (ParaView's Python before Debian's VTK 9.1 modules), in its built-in session
+  clean "$prefix/bin/pvpython-stylize" "$source/Testing/ParaView/check_load.py" \
+    "$work/pvpython.png" >"$work/pvpython.log" 2>&1 ||
+    fail "the installed pvpython-stylize did not load the plugin (see $work/pvpython.log)"
+  grep -q "plugin loaded from $prefix/" "$work/pvpython.log" ||
+    fail "pvpython-stylize did not load the plugin from $prefix: $(cat "$work/pvpython.log")"
+  [ -x "$prefix/bin/pvserver-stylize" ] || fail "no pvserver-stylize in $prefix/bin"
+  echo "plugin from the moved prefix: $work/plugin.png, $work/pvpython.png"
 fi
 echo "install.fresh_prefix: passed"

@@ -1,6 +1,11 @@
 """Renders a scene in the VTK Stylize view, once per style, with pvbatch (one or more ranks).
 
     pvbatch-stylize render_styles.py OUTPUT_PREFIX [WIDTH HEIGHT]
+    pvpython-stylize render_styles.py OUTPUT_PREFIX WIDTH HEIGHT HOST:PORT remote|local
+
+With HOST:PORT it connects to a pvserver (pvserver-stylize) first: "remote" forces remote
+rendering (the server renders and composites, the client receives the image), "local" makes
+the client render the delivered geometry itself.
 
 Writes OUTPUT_PREFIX-none.png, -comic.png, -pixel.png and -sketch.png, then -comic-subject.png
 (comic with the display as a Stylized Surface whose own subject factor is 1: per-representation
@@ -14,12 +19,19 @@ from paraview.simple import *  # noqa: F401,F403
 
 prefix = sys.argv[1]
 size = [int(sys.argv[2]), int(sys.argv[3])] if len(sys.argv) > 3 else [400, 300]
+server = sys.argv[4] if len(sys.argv) > 4 else None
+if server:
+    host, port = server.rsplit(":", 1)
+    Connect(host, int(port))
 
 view = CreateView("StylizeView")
 view.ViewSize = size
 view.OrientationAxesVisibility = 0
 view.UseColorPaletteForBackground = 0
 view.Background = [0.32, 0.34, 0.43]
+if server:
+    # threshold in MB of geometry: 0 always renders on the server, a huge one never does
+    view.RemoteRenderThreshold = 0.0 if sys.argv[5] == "remote" else 1.0e9
 
 wavelet = Wavelet()
 contour = Contour(Input=wavelet, ContourBy=["POINTS", "RTData"], Isosurfaces=[157.0])
@@ -27,8 +39,8 @@ ids = (globals().get("GenerateProcessIds") or globals().get("ProcessIdScalars"))
 ids.UpdatePipeline()
 array = ids.PointData.GetArray("ProcessId")
 low, high = array.GetRange() if array else (0, 0)
-print("ranks %d pieces %d points %d" % (servermanager.vtkProcessModule.GetProcessModule()
-      .GetNumberOfLocalPartitions(), int(high - low) + 1, ids.GetDataInformation().GetNumberOfPoints()))
+print("ranks %d pieces %d points %d" % (servermanager.ActiveConnection.GetNumberOfDataPartitions(),
+      int(high - low) + 1, ids.GetDataInformation().GetNumberOfPoints()))
 
 display = Show(contour, view)
 ColorBy(display, None)
