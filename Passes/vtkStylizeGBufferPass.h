@@ -217,14 +217,16 @@ public:
 
   ///@{
   /**
-   * The background that is painted under the image afterwards when a compositor renders the
-   * scene over another one (ParaView renders the ranks, and a server's picture for its client,
-   * over transparent black, then blends the styled result over the view's background). With
+   * The background the picture stands for when the image was rendered over another one:
+   * ParaView renders the ranks, and a server's picture for its client, over transparent black
+   * and blends the styled result over the view's background afterwards; a transparent-background
+   * screenshot renders over white and over black and keeps what both show. With
    * UseImageBackground on, a frame of the image path whose renderer's background is not this
    * colour (the compositor replaced it) takes this colour in the colour channel where the image
    * has no surface (its alpha is kept), so that stages reading colour across a silhouette
-   * (edges, tone blurs) see the background the picture will have; the styles then write the
-   * background premultiplied against it (stylizeOutput() in vtkStylizeScreenFS). An RGB
+   * (edges, tone blurs) see the background the picture stands for; on the background the styles
+   * then give that background's share of each pixel back to the renderer's (stylizeOutput() in
+   * vtkStylizeScreenFS: premultiplied under compositing). An RGB
    * colour, each component in [0, 1] (clamped; NaN gives 0). Default (0, 0, 0).
    */
   void SetImageBackground(double r, double g, double b);

@@ -666,7 +666,9 @@ void vtkStylizeStylePass::SetSceneOutputUniforms(vtkStylizeUniforms& u, vtkRende
   const double* bg = gbuffer->GetImageBackground();
   u.Int("stylizeDiscardBackground", ren->Transparent() ? 1 : 0)
     .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0)
-    .Float4("stylizeImageBackground", bg[0], bg[1], bg[2], gbuffer->GetImageBackgroundApplied() ? 1 : 0);
+    .Float4("stylizeImageBackground", bg[0], bg[1], bg[2], gbuffer->GetImageBackgroundApplied() ? 1 : 0)
+    .Float3("stylizeRendererBackground", ren->GetBackground()[0], ren->GetBackground()[1],
+      ren->GetBackground()[2]);
   this->SetDepthMappingUniforms(u);
 }
 

@@ -62,9 +62,12 @@ uniform int stylizeDiscardBackground; // 1 for layered renderers: keep the layer
 // background transparent for the root to fill) keeps the image's alpha, plus the ink drawn
 // there (outlines); a scene rendered from geometry is opaque everywhere, as before.
 uniform int stylizeSceneFromImage;
-// rgb: the background painted under the image later (vtkStylizeGBufferPass::ImageBackground;
-// the G-buffer's colour holds it on the background); a = 1 when set
+// rgb: the background the picture stands for (vtkStylizeGBufferPass::ImageBackground; the
+// G-buffer's colour holds it on the background); a = 1 when set. stylizeRendererBackground: the
+// renderer's background in this frame (what the image shows there: transparent black under
+// compositing, the colour a transparent-background screenshot renders over).
 uniform vec4 stylizeImageBackground;
+uniform vec3 stylizeRendererBackground;
 
 float stylizeOutputAlpha(bool background, float imageAlpha, float ink)
 {
@@ -72,16 +75,19 @@ float stylizeOutputAlpha(bool background, float imageAlpha, float ink)
 }
 
 // A style's output pixel: `rgb` is what the pixel shows over the scene's background, finite and
-// saturated. Where the background is painted under the image afterwards (ImageBackground set)
-// and the pixel is not opaque, the colour is premultiplied against that background, so that
-// painting it under the pixel gives `rgb` back (0 where nothing is drawn on the background).
+// saturated. Where the style computed over ImageBackground instead of the renderer's own
+// background, the background's share of a pixel that is not opaque goes back to the renderer's:
+// under compositing (transparent black) the colour is premultiplied, so that painting the
+// background under it later gives `rgb`; in a transparent-background screenshot the pixel shows
+// the colour it renders over, with the same ink.
 vec4 stylizeOutput(bool background, vec3 rgb, float imageAlpha, float ink)
 {
   float alpha = stylizeOutputAlpha(background, imageAlpha, ink);
   vec3 colour = stylizeSaturateFinite(rgb);
   if (background && stylizeSceneFromImage == 1 && stylizeImageBackground.a > 0.5)
   {
-    colour = max(colour - (1.0 - alpha) * stylizeImageBackground.rgb, vec3(0.0));
+    colour = clamp(colour + (1.0 - alpha) * (stylizeRendererBackground - stylizeImageBackground.rgb),
+      0.0, 1.0);
   }
   return vec4(colour, alpha);
 }

@@ -126,6 +126,35 @@ void vtkPVStylizeView::SetBackgroundColorMode(int mode)
 }
 
 //------------------------------------------------------------------------------
+bool vtkPVStylizeView::GetFlatBackground(double rgb[3])
+{
+  this->UpdateBackground();
+  vtkRenderer* ren = this->GetRenderer();
+  if (!ren || ren->GetGradientBackground() || ren->GetTexturedBackground() ||
+    this->ColorMode == vtkPVRenderView::SKYBOX || this->ColorMode == vtkPVRenderView::STEREO_SKYBOX)
+  {
+    return false;
+  }
+  ren->GetBackground(rgb);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::SetFreezeBackground(int freeze)
+{
+  if ((freeze != 0) == this->BackgroundFrozen)
+  {
+    return;
+  }
+  if (freeze)
+  {
+    this->FrozenFlat = this->GetFlatBackground(this->FrozenBackground);
+  }
+  this->BackgroundFrozen = freeze != 0;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkPVStylizeView::ReleasePassResources(vtkStylizeStylePass* keep)
 {
   vtkRenderWindow* window = this->GetRenderWindow();
@@ -190,14 +219,14 @@ void vtkPVStylizeView::ConfigurePasses()
     // rendering for its client) and paints the view's background under the result afterwards:
     // the style is told which flat background that will be (a gradient, an image or a skybox
     // leaves the image's own colour).
-    this->UpdateBackground();
-    vtkRenderer* ren = this->GetRenderer();
-    const bool flat = ren && !ren->GetGradientBackground() && !ren->GetTexturedBackground() &&
-      this->ColorMode != vtkPVRenderView::SKYBOX && this->ColorMode != vtkPVRenderView::STEREO_SKYBOX;
+    // While a transparent-background screenshot renders, the background frozen before it.
+    double background[3];
+    const bool flat = this->BackgroundFrozen ? this->FrozenFlat : this->GetFlatBackground(background);
     style->GetGBufferPass()->SetUseImageBackground(flat);
     if (flat)
     {
-      style->GetGBufferPass()->SetImageBackground(ren->GetBackground());
+      style->GetGBufferPass()->SetImageBackground(
+        this->BackgroundFrozen ? this->FrozenBackground : background);
     }
   }
   this->SynchronizedRenderers->SetImageProcessingPass(style);

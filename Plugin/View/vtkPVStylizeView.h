@@ -103,6 +103,15 @@ public:
    */
   void SetBackgroundColorMode(int mode) override;
 
+  /**
+   * While on, the styles take the background the view had when it was switched on as the one
+   * the picture stands for (vtkStylizeGBufferPass::SetImageBackground), whatever the view
+   * renders over meanwhile. vtkSMStylizeViewProxy switches it on for the two renders of a
+   * transparent-background screenshot (over white, then over black), so that the style's ink
+   * is the same in both and only the true background becomes transparent. Default off.
+   */
+  void SetFreezeBackground(int freeze);
+
   /** The style pass in use (nullptr for the style None). */
   vtkStylizeStylePass* GetActiveStylePass();
 
@@ -116,6 +125,12 @@ protected:
   /** Puts the lighting pass and the style pass into ParaView's render and image slots. */
   void ConfigurePasses();
 
+  /**
+   * The view's background as ParaView will paint it (vtkPVRenderView::UpdateBackground()), when
+   * it is one flat colour: false for a gradient, a texture or a skybox.
+   */
+  bool GetFlatBackground(double rgb[3]);
+
   /** Frees the graphics resources of the style passes other than keep (all when nullptr). */
   void ReleasePassResources(vtkStylizeStylePass* keep);
 
@@ -123,6 +138,9 @@ protected:
   int LightingModel = STYLE_DEFAULT;
   bool RequestedFXAA = false;
   int ColorMode = DEFAULT;
+  bool BackgroundFrozen = false;
+  bool FrozenFlat = false;
+  double FrozenBackground[3] = { 0.0, 0.0, 0.0 };
   vtkStylizeStylePass* LastStylePass = nullptr;
   vtkSmartPointer<vtkComicPass> ComicPass;
   vtkSmartPointer<vtkPixelArtPass> PixelArtPass;

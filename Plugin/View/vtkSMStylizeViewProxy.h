@@ -6,8 +6,14 @@
  * class (`<StylizeViewProxy>` in StylizeView.xml) that only a process with the plugin can make.
  * A client without the plugin, connected to a server that has it, then refuses to create the
  * view ("Creation of new proxy vtkSMStylizeViewProxy failed", and CreateView raises) instead of
- * aborting when its own process cannot make vtkPVStylizeView. It behaves as
- * vtkSMRenderViewProxy in every other way.
+ * aborting when its own process cannot make vtkPVStylizeView.
+ *
+ * A transparent-background screenshot (SaveScreenshot(..., TransparentBackground=1)) renders the
+ * view over white and over black and makes transparent what differs. ParaView saves the
+ * background properties first (SaveXMLState with a property iterator) and restores them after
+ * (LoadXMLState): between the two, this proxy switches the view's FreezeBackground on, so that
+ * the style draws the same ink in both renders, computed over the view's own background.
+ * It behaves as vtkSMRenderViewProxy in every other way.
  */
 
 #ifndef vtkSMStylizeViewProxy_h
@@ -23,9 +29,20 @@ public:
   vtkTypeMacro(vtkSMStylizeViewProxy, vtkSMRenderViewProxy);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  using Superclass::SaveXMLState;
+  /** As vtkSMProxy; before a transparent-background capture, also freezes the background. */
+  vtkPVXMLElement* SaveXMLState(vtkPVXMLElement* root, vtkSMPropertyIterator* iter) override;
+  /** As vtkSMProxy; after a transparent-background capture, also releases the background. */
+  int LoadXMLState(vtkPVXMLElement* element, vtkSMProxyLocator* locator) override;
+
 protected:
   vtkSMStylizeViewProxy() = default;
   ~vtkSMStylizeViewProxy() override = default;
+
+  /** Sets the view's FreezeBackground and pushes it at once. */
+  void PushFreezeBackground(bool freeze);
+
+  bool BackgroundFrozen = false;
 
 private:
   vtkSMStylizeViewProxy(const vtkSMStylizeViewProxy&) = delete;
