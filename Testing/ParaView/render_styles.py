@@ -16,6 +16,7 @@ The data is a contour of ParaView's Wavelet source, which ParaView splits across
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
+from stylize_pv_scene import make_contour, make_view, show_framed
 
 prefix = sys.argv[1]
 size = [int(sys.argv[2]), int(sys.argv[3])] if len(sys.argv) > 3 else [400, 300]
@@ -25,16 +26,12 @@ if server:
     Connect(host, int(port))
 
 view = CreateView("StylizeView")
-view.ViewSize = size
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.32, 0.34, 0.43]
+make_view(view, size)
 if server:
     # threshold in MB of geometry: 0 always renders on the server, a huge one never does
     view.RemoteRenderThreshold = 0.0 if sys.argv[5] == "remote" else 1.0e9
 
-wavelet = Wavelet()
-contour = Contour(Input=wavelet, ContourBy=["POINTS", "RTData"], Isosurfaces=[157.0])
+contour = make_contour()
 ids = (globals().get("GenerateProcessIds") or globals().get("ProcessIdScalars"))(Input=contour)
 ids.UpdatePipeline()
 array = ids.PointData.GetArray("ProcessId")
@@ -42,12 +39,7 @@ low, high = array.GetRange() if array else (0, 0)
 print("ranks %d pieces %d points %d" % (servermanager.ActiveConnection.GetNumberOfDataPartitions(),
       int(high - low) + 1, ids.GetDataInformation().GetNumberOfPoints()))
 
-display = Show(contour, view)
-ColorBy(display, None)
-view.CameraPosition = [30.0, -45.0, 25.0]
-view.CameraFocalPoint = [0.0, 0.0, 0.0]
-view.CameraViewUp = [0.0, 0.0, 1.0]
-view.ResetCamera()
+display = show_framed(contour, view)
 
 for style, name in enumerate(["none", "comic", "pixel", "sketch"]):
     view.Style = style

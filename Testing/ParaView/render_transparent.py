@@ -9,21 +9,13 @@ sketch, 400x300, the scene of render_styles.py (a Wavelet contour) on a coloured
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
+from stylize_pv_scene import make_contour, make_view, show_framed
 
 prefix = sys.argv[1]
 size = [400, 300]
 view = CreateView("StylizeView")
-view.ViewSize = size
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.32, 0.34, 0.43]
-contour = Contour(Input=Wavelet(), ContourBy=["POINTS", "RTData"], Isosurfaces=[157.0])
-display = Show(contour, view)
-ColorBy(display, None)
-view.CameraPosition = [30.0, -45.0, 25.0]
-view.CameraFocalPoint = [0.0, 0.0, 0.0]
-view.CameraViewUp = [0.0, 0.0, 1.0]
-view.ResetCamera()
+make_view(view, size)
+show_framed(make_contour(), view)
 for style, name in [(1, "comic"), (2, "pixel"), (3, "sketch"), (3, "sketch-tinted")]:
     view.Style = style
     view.SketchTinted = 1 if name == "sketch-tinted" else 0

@@ -44,7 +44,7 @@ def load(path):
     return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1).astype(float)
 
 
-background = np.array([0.32, 0.34, 0.43]) * 255.0
+background = np.array([0.32, 0.34, 0.43]) * 255.0  # stylize_pv_scene.BACKGROUND
 failures = []
 print("| style | composited vs opaque, pixels > 16 levels | transparent | background in the opaque image | partly transparent |")
 print("|---|---:|---:|---:|---:|")
