@@ -14,8 +14,8 @@ uniform mat4 stylizeInverseProjection; // normalized device coordinates -> view 
 uniform mat4 stylizeInverseView;       // view coordinates -> world coordinates
 uniform vec4 stylizeScreenTransform;   // the G-buffer's x' = sx x + tx, y' = sy y + ty
 uniform vec2 stylizeImageSize;         // the image's size in pixels
-// rgb: the background painted under the image later (vtkStylizeGBufferPass::ImageBackground),
-// taken as the colour where there is no surface; a = 1 when set, 0 to keep the image's colour
+// rgb: the background the picture stands for (vtkStylizeGBufferPass::ImageBackground), taken as
+// the colour where there is no surface; a = 1 when applied this frame, 0 to keep the image's
 uniform vec4 stylizeImageBackground;
 #ifdef STYLIZE_CHANNEL_SOURCE
 uniform sampler2D stylizeSourceDepth;  // stored depth (stylizeWindowDepth() maps it)
