@@ -7,9 +7,12 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
+#include "vtkMultiProcessController.h"
+#include "vtkCommunicator.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkTriangleFilter.h"
@@ -87,6 +90,69 @@ void vtkStylizePrincipalCurvatures::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNeighbors: " << this->MaximumNeighbors << "\n";
   os << indent << "PlanarTolerance: " << this->PlanarTolerance << "\n";
   os << indent << "UmbilicTolerance: " << this->UmbilicTolerance << "\n";
+  os << indent << "TangentDirection: " << this->TangentDirection << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkCxxSetObjectMacro(vtkStylizePrincipalCurvatures, Controller, vtkMultiProcessController);
+
+//------------------------------------------------------------------------------
+vtkStylizePrincipalCurvatures::vtkStylizePrincipalCurvatures()
+{
+  this->SetController(vtkMultiProcessController::GetGlobalController());
+}
+
+//------------------------------------------------------------------------------
+vtkStylizePrincipalCurvatures::~vtkStylizePrincipalCurvatures()
+{
+  this->SetController(nullptr);
+}
+
+//------------------------------------------------------------------------------
+double vtkStylizePrincipalCurvatures::DataDiagonal(vtkPolyData* input)
+{
+  // Low corner and the negated high corner, so that one minimum reduces both.
+  double corners[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  if (input->GetNumberOfPoints() > 0)
+  {
+    double b[6];
+    input->GetBounds(b);
+    for (int i = 0; i < 3; ++i)
+    {
+      corners[i] = b[2 * i];
+      corners[3 + i] = -b[2 * i + 1];
+    }
+  }
+  if (this->Controller && this->Controller->GetNumberOfProcesses() > 1)
+  {
+    double all[6];
+    this->Controller->AllReduce(corners, all, 6, vtkCommunicator::MIN_OP);
+    std::copy(all, all + 6, corners);
+  }
+  if (corners[0] == VTK_DOUBLE_MAX)
+  {
+    return 0.0;
+  }
+  double squared = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double side = -corners[3 + i] - corners[i];
+    squared += side * side;
+  }
+  return std::sqrt(squared);
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizePrincipalCurvatures::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* in = inputVector[0]->GetInformationObject(0);
+  vtkInformation* out = outputVector->GetInformationObject(0);
+  const int ghosts = out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS());
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), ghosts + 1);
+  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -101,6 +167,9 @@ int vtkStylizePrincipalCurvatures::RequestData(
   }
   output->ShallowCopy(input);
   const vtkIdType np = input->GetNumberOfPoints();
+  // The object's size, over every process's piece (a collective call: before any return), so
+  // that the smoothing radius and the planar test do not depend on how the data is split.
+  const double diagonal = this->DataDiagonal(input);
 
   // Triangles of the polygons and strips (the points are unchanged).
   vtkNew<vtkPolyData> surface;
@@ -320,12 +389,6 @@ int vtkStylizePrincipalCurvatures::RequestData(
     weight[i] = ok ? weight[i] : 0.0;
   }
 
-  // The object's size: the smoothing radius and the planar test are fractions of it.
-  double bounds[6];
-  input->GetBounds(bounds);
-  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
   const double smoothing =
     np > 0 && std::isfinite(diagonal) ? this->SmoothingRadius * diagonal : 0.0;
   if (smoothing > 0.0)
@@ -341,13 +404,21 @@ int vtkStylizePrincipalCurvatures::RequestData(
     a->Fill(0.0);
     return a;
   };
+  auto makeDirections = [np](const char* name) {
+    vtkNew<vtkFloatArray> a;
+    a->SetName(name);
+    a->SetNumberOfComponents(3);
+    a->SetNumberOfTuples(np);
+    a->Fill(0.0);
+    return a;
+  };
   auto kMax = makeArray("PrincipalCurvatureMax", 1);
   auto kMin = makeArray("PrincipalCurvatureMin", 1);
-  auto dMax = makeArray("PrincipalDirectionMax", 3);
-  auto dMin = makeArray("PrincipalDirectionMin", 3);
-  auto bisector = makeArray("PrincipalDirectionBisector", 3);
-  auto dMinAbs = makeArray("PrincipalDirectionMinAbs", 3);
-  auto dMaxAbs = makeArray("PrincipalDirectionMaxAbs", 3);
+  auto dMax = makeDirections("PrincipalDirectionMax");
+  auto dMin = makeDirections("PrincipalDirectionMin");
+  auto bisector = makeDirections("PrincipalDirectionBisector");
+  auto dMinAbs = makeDirections("PrincipalDirectionMinAbs");
+  auto dMaxAbs = makeDirections("PrincipalDirectionMaxAbs");
   auto mean = makeArray("MeanCurvature", 1);
   auto gauss = makeArray("GaussianCurvature", 1);
   for (vtkIdType i = 0; i < np; ++i)
@@ -389,10 +460,18 @@ int vtkStylizePrincipalCurvatures::RequestData(
     }
   }
   vtkPointData* pd = output->GetPointData();
-  for (vtkDoubleArray* a : { kMax.Get(), kMin.Get(), dMax.Get(), dMin.Get(), bisector.Get(),
-         dMinAbs.Get(), dMaxAbs.Get(), mean.Get(), gauss.Get() })
+  for (vtkDataArray* a : { static_cast<vtkDataArray*>(kMax), static_cast<vtkDataArray*>(kMin),
+         static_cast<vtkDataArray*>(dMax), static_cast<vtkDataArray*>(dMin),
+         static_cast<vtkDataArray*>(bisector), static_cast<vtkDataArray*>(dMinAbs),
+         static_cast<vtkDataArray*>(dMaxAbs), static_cast<vtkDataArray*>(mean),
+         static_cast<vtkDataArray*>(gauss) })
   {
     pd->AddArray(a);
+  }
+  vtkFloatArray* const tangents[] = { nullptr, dMinAbs, dMaxAbs, dMin, dMax, bisector };
+  if (tangents[this->TangentDirection])
+  {
+    pd->SetTangents(tangents[this->TangentDirection]);
   }
   return 1;
 }

@@ -24,6 +24,15 @@
  *   times the input's diagonal below PlanarTolerance) and umbilic points (|k1 - k2|
  *   below UmbilicTolerance times |k1| + |k2|); the sketch pass estimates those in screen space.
  * - "MeanCurvature" (k1 + k2) / 2 and "GaussianCurvature" k1 k2.
+ * The direction arrays are single-precision (vtkFloatArray: unit vectors, as the GPU reads them),
+ * the curvatures double. One direction array is also the point data's active tangents
+ * (TangentDirection): that is how a direction reaches the GPU through VTK's composite data mapper,
+ * and so in ParaView (vtkSketchPass's model mode reads it there).
+ *
+ * Pieces: the filter asks its input for one more ghost level, so each point of a piece has its
+ * whole ring of faces, and takes the object's size over all processes (Controller): a piece
+ * gives the values the whole mesh gives, except that smoothing beyond the ghost ring is
+ * one-sided at a piece's boundary.
  *
  * Scale: with a SmoothingRadius above 0, each point's tensor is the average of the tensors of
  * the points around it (reached through the mesh's edges, within the radius), transported into
@@ -50,6 +59,8 @@
 
 #include <array>  // for std::array
 #include <vector> // for std::vector
+
+class vtkMultiProcessController;
 
 class VTKSTYLIZEFILTERS_EXPORT vtkStylizePrincipalCurvatures : public vtkPolyDataAlgorithm
 {
@@ -104,10 +115,53 @@ public:
   vtkGetMacro(UmbilicTolerance, double);
   ///@}
 
-protected:
-  vtkStylizePrincipalCurvatures() = default;
-  ~vtkStylizePrincipalCurvatures() override = default;
+  /** Principal direction arrays that can be the output's tangents (TangentDirection). */
+  enum TangentDirections
+  {
+    NONE = 0,
+    MIN_ABS = 1,
+    MAX_ABS = 2,
+    MIN = 3,
+    MAX = 4,
+    BISECTOR = 5
+  };
 
+  ///@{
+  /**
+   * Which direction array the output's point data also marks as its active tangents
+   * (vtkDataSetAttributes::SetTangents): NONE, MIN_ABS ("PrincipalDirectionMinAbs"), MAX_ABS,
+   * MIN, MAX or BISECTOR (the arrays of the same names). VTK's composite data mapper
+   * (vtkCompositePolyDataMapper2, which every ParaView representation uses) sends a mesh's
+   * tangents to the GPU but no other array, so vtkSketchPass's model mode (DirectionSource
+   * MODEL) reads the tangents of composite data: with MIN_ABS the sketch's Direction MINIMUM
+   * draws along the smaller |curvature| there. Default MIN_ABS.
+   */
+  vtkSetClampMacro(TangentDirection, int, NONE, BISECTOR);
+  vtkGetMacro(TangentDirection, int);
+  ///@}
+
+  ///@{
+  /**
+   * The processes whose pieces make up the data (vtkMultiProcessController): the bounding box
+   * that SmoothingRadius and PlanarTolerance are fractions of is the whole data's, so a piece
+   * gives the values the whole mesh gives (with one ghost level requested, its boundary points
+   * see their neighbours across it). Default the global controller (none outside MPI).
+   */
+  virtual void SetController(vtkMultiProcessController* controller);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+protected:
+  vtkStylizePrincipalCurvatures();
+  ~vtkStylizePrincipalCurvatures() override;
+
+  /**
+   * The bounding-box diagonal of the data on all processes (Controller), 0 for no points.
+   * Collective: every process calls it once per execution.
+   */
+  double DataDiagonal(vtkPolyData* input);
+
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /**
@@ -127,6 +181,8 @@ protected:
   int MaximumNeighbors = 2000;
   double PlanarTolerance = 1.0;
   double UmbilicTolerance = 0.05;
+  int TangentDirection = MIN_ABS;
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkStylizePrincipalCurvatures(const vtkStylizePrincipalCurvatures&) = delete;

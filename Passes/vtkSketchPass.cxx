@@ -3,6 +3,8 @@
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
 #include "vtkDataSet.h"
 #include "vtkFloatArray.h"
@@ -14,6 +16,7 @@
 #include "vtkPointData.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeShaderUtilities.h"
@@ -72,6 +75,8 @@ public:
 
   // Mappers given the direction attribute, and the array name they were given.
   std::vector<std::pair<vtkWeakPointer<vtkOpenGLPolyDataMapper>, std::string>> Mapped;
+  // MODEL found no direction data in the last frame, and said so.
+  bool ModelInertWarned = false;
 };
 
 /** What a frame computes: the enabled stages, their channels and defines, lengths in pixels. */
@@ -348,18 +353,52 @@ void vtkSketchPass::MapDirectionArrays(vtkRenderer* ren)
                    return m.first == nullptr;
                  }),
     mapped.end());
+  auto directions = [&name](vtkDataSet* data) {
+    vtkDataArray* a = data->GetPointData()->GetArray(name.c_str());
+    return a && a->GetNumberOfComponents() == 3;
+  };
+  // The helpers of VTK's composite data mapper upload the tangents, no mapped array.
+  auto tangents = [](vtkDataSet* data) {
+    vtkDataArray* t = data->GetPointData()->GetTangents();
+    return vtkFloatArray::SafeDownCast(t) && t->GetNumberOfComponents() == 3;
+  };
+  bool anyData = false, anyDirections = false;
   vtkActorCollection* actors = ren->GetActors();
   vtkCollectionSimpleIterator it;
   actors->InitTraversal(it);
   while (vtkActor* actor = actors->GetNextActor(it))
   {
     auto* mapper = vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper());
-    vtkDataSet* input = mapper ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
-    if (!input || !input->GetPointData()->GetArray(name.c_str()) ||
-      input->GetPointData()->GetArray(name.c_str())->GetNumberOfComponents() != 3)
+    if (!mapper || !actor->GetVisibility())
     {
       continue;
     }
+    vtkDataObject* object = mapper->GetInputDataObject(0, 0);
+    if (auto* composite = vtkCompositeDataSet::SafeDownCast(object))
+    {
+      vtkSmartPointer<vtkCompositeDataIterator> leaf;
+      leaf.TakeReference(composite->NewIterator());
+      for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
+      {
+        if (auto* data = vtkDataSet::SafeDownCast(leaf->GetCurrentDataObject()))
+        {
+          anyData = anyData || data->GetNumberOfPoints() > 0;
+          anyDirections = anyDirections || (data->GetNumberOfPoints() > 0 && tangents(data));
+        }
+      }
+      continue;
+    }
+    auto* input = vtkDataSet::SafeDownCast(object);
+    if (!input)
+    {
+      continue;
+    }
+    anyData = anyData || input->GetNumberOfPoints() > 0;
+    if (!directions(input))
+    {
+      continue;
+    }
+    anyDirections = anyDirections || input->GetNumberOfPoints() > 0;
     auto found = std::find_if(mapped.begin(), mapped.end(),
       [&](const std::pair<vtkWeakPointer<vtkOpenGLPolyDataMapper>, std::string>& m) {
         return m.first == mapper;
@@ -379,6 +418,19 @@ void vtkSketchPass::MapDirectionArrays(vtkRenderer* ren)
       mapped.emplace_back(mapper, name);
     }
   }
+  // Said once while it lasts: MODEL with nothing to read is the SCREEN estimate everywhere.
+  const bool inert = anyData && !anyDirections;
+  if (inert && !this->Internals->ModelInertWarned)
+  {
+    vtkWarningMacro(<< "DirectionSource is MODEL, but no visible data has the 3-component point "
+                       "array \""
+                    << name
+                    << "\" (DirectionArrayName) or, for composite data (ParaView), 3-component "
+                       "float tangents: the directions are estimated on screen. "
+                       "vtkStylizePrincipalCurvatures (ParaView: the Principal Curvatures "
+                       "filter) computes them.");
+  }
+  this->Internals->ModelInertWarned = inert;
 }
 
 //------------------------------------------------------------------------------

@@ -153,7 +153,10 @@ public:
    * and around a cylinder, convex or concave). Default "PrincipalDirectionMinAbs"
    * (vtkStylizePrincipalCurvatures: the direction of the smaller |curvature|, zero where the
    * surface is planar or umbilic; such pixels take the SCREEN estimate). The pass maps it on
-   * each actor's vtkOpenGLPolyDataMapper that has it.
+   * each actor's vtkOpenGLPolyDataMapper that has it. Composite data (vtkCompositePolyDataMapper2,
+   * every ParaView representation) gives its point data's tangents instead, whatever this name
+   * (vtkStylizePrincipalCurvatures marks PrincipalDirectionMinAbs as the tangents). With no
+   * visible data holding either, MODEL warns once and draws the SCREEN estimate.
    */
   vtkSetStringMacro(DirectionArrayName);
   vtkGetStringMacro(DirectionArrayName);

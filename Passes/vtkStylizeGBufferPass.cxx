@@ -39,12 +39,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <vector>
 
 namespace
 {
 const char* const GBufferTag = "//VTK::StylizeGBuffer::Impl";
+// The DIRECTION channel's attribute on the helpers of VTK's composite data mapper.
+const char* const TangentDeclaration = "in vec3 tangentMC; // the DIRECTION channel's source\n";
 
 /**
  * First step inside the camera pass: clears what vtkRenderer::Clear() leaves alone in the
@@ -1075,13 +1078,18 @@ bool vtkStylizeGBufferPass::PreReplaceShaderValues(std::string& vertexShader, st
     if (this->Channels & DIRECTION)
     {
       // The direction attribute's outer product, in view coordinates (sign-free interpolation),
-      // of the unit direction: a zero vector (no direction there) weighs nothing.
+      // of the unit direction: a zero vector (no direction there) weighs nothing. The helpers of
+      // VTK's composite data mapper upload no mapped array, only the standard attributes: there
+      // the direction is the point data's tangents (VTK's tangentMC).
+      const bool tangents = mapper->IsA("vtkCompositeMapperHelper2") != 0;
+      const std::string attribute = tangents ? "tangentMC" : "stylizeDirectionMC";
       vtkShaderProgram::Substitute(vertexShader, "//VTK::System::Dec",
-        "//VTK::System::Dec\nin vec3 stylizeDirectionMC;\nuniform mat3 stylizeDirectionMCVC;\n"
-        "out vec3 stylizeDirDiagVSOutput;\nout vec3 stylizeDirOffVSOutput;\n",
+        "//VTK::System::Dec\n" + (tangents ? std::string(TangentDeclaration) : "in vec3 stylizeDirectionMC;\n") +
+          "uniform mat3 stylizeDirectionMCVC;\n"
+          "out vec3 stylizeDirDiagVSOutput;\nout vec3 stylizeDirOffVSOutput;\n",
         false);
       vtkShaderProgram::Substitute(vertexShader, "//VTK::Normal::Impl",
-        "//VTK::Normal::Impl\n  vec3 stylizeDirVC = stylizeDirectionMCVC * stylizeDirectionMC;\n"
+        "//VTK::Normal::Impl\n  vec3 stylizeDirVC = stylizeDirectionMCVC * " + attribute + ";\n"
         "  float stylizeDirLength = length(stylizeDirVC);\n"
         "  stylizeDirVC = stylizeDirLength > 0.0 && !isinf(stylizeDirLength) ?\n"
         "    stylizeDirVC / stylizeDirLength : vec3(0.0);\n"
@@ -1099,6 +1107,12 @@ bool vtkStylizeGBufferPass::PreReplaceShaderValues(std::string& vertexShader, st
 bool vtkStylizeGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
   std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
+  // The mapper declares tangentMC itself when it maps normals from a texture: not twice.
+  const std::size_t own = vertexShader.find(TangentDeclaration);
+  if (own != std::string::npos && vertexShader.find("in vec3 tangentMC;\n") != std::string::npos)
+  {
+    vertexShader.erase(own, std::strlen(TangentDeclaration));
+  }
   if (fragmentShader.find(GBufferTag) == std::string::npos)
   {
     return true;

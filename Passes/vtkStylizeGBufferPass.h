@@ -15,7 +15,8 @@
  * | LINEAR_DEPTH | request | R32F               | distance along the view axis (-z in view space) |
  * |          |         |                        | in world units, 0 where there is no surface     |
  * | DIRECTION | request | RGBA16F (or 32F)      | view-space unit tangent direction from the      |
- * |          |         |                        | vertex attribute stylizeDirectionMC, a = its    |
+ * |          |         |                        | vertex attribute stylizeDirectionMC (composite  |
+ * |          |         |                        | data: the point data's tangents), a = its       |
  * |          |         |                        | confidence: 1 where the vertices' unit          |
  * |          |         |                        | directions agree, 0: none (zero vectors)        |
  *
@@ -124,7 +125,10 @@ public:
    *
    * DIRECTION carries a per-vertex tangent direction field (for example a principal direction
    * of vtkStylizePrincipalCurvatures) to the screen. Map the point array to the vertex attribute
-   * `stylizeDirectionMC` (vtkOpenGLPolyDataMapper::MapDataArrayToVertexAttribute). Directions are
+   * `stylizeDirectionMC` (vtkOpenGLPolyDataMapper::MapDataArrayToVertexAttribute); VTK's
+   * composite data mapper (vtkCompositePolyDataMapper2, ParaView's) uploads no mapped array, so
+   * for composite data the direction is the point data's tangents (vtkDataSetAttributes::
+   * SetTangents, a vtkFloatArray: vtkStylizePrincipalCurvatures sets them). Directions are
    * unsigned (d and -d are the same), so the vertex shader interpolates the outer product d d^T,
    * not d; the fragment shader projects it onto the tangent plane and writes its principal
    * eigenvector and coherence (eigenvalue gap / trace, 0..1). Actors without the attribute

@@ -9,7 +9,8 @@ the client render the delivered geometry itself.
 
 Writes OUTPUT_PREFIX-none.png, -comic.png, -pixel.png and -sketch.png, then -comic-subject.png
 (comic with the display as a Stylized Surface whose own subject factor is 1: per-representation
-lighting, which every rank must apply to its piece), and prints one line
+lighting, which every rank must apply to its piece) and -sketch-model.png (the sketch along the
+Principal Curvatures filter's directions, DirectionSource Model), and prints one line
 "ranks N pieces P points M" (P: how many ranks hold part of the data) for the caller to check.
 The data is a contour of ParaView's Wavelet source, which ParaView splits across ranks.
 """
@@ -51,5 +52,14 @@ display.StylizeOverrideLighting = 1
 display.StylizeSubjectFactor = 1.0
 Render(view)
 SaveScreenshot("%s-comic-subject.png" % prefix, view, ImageResolution=size)
+# the sketch along model directions: the Principal Curvatures filter's tangents, per rank
+display.SetRepresentationType("Surface")
+curvatures = PrincipalCurvatures(Input=contour)
+Hide(contour, view)
+show_framed(curvatures, view)
+view.Style = 3
+view.SketchDirectionSource = 1
+Render(view)
+SaveScreenshot("%s-sketch-model.png" % prefix, view, ImageResolution=size)
 Delete(view)
 print("rendered")

@@ -6,10 +6,17 @@ ParaView's path, in one process: the style stylizes its delegate's image (a came
 per-process vtkStylizeGBufferPass, the "channel source"), as it does after IceT compositing.
 Without the source the G-buffer is rebuilt from the image's depth (facet normals, no model
 directions); with it the style reads the true channels. For each style on a scanned mesh, a CAD
-part and a coarse isosurface (and the sketch's model-space directions on the scan), the image is
-compared with the geometry path (the style rendering the geometry itself), same camera and
-lights: with the source at most 0.5% of the pixels may be more than 16 levels apart. The image
-path without the source is measured beside it (not asserted: it is what the source replaces).
+part, a coarse isosurface and simulation output (the surface of an Exodus II hexahedral mesh),
+and for the sketch's model-space directions on the scan, the image is compared with the geometry
+path (the style rendering the geometry itself), same camera and lights: with the source at most
+0.5% of the pixels may be more than 16 levels apart. The image path without the source is
+measured beside it (not asserted: it is what the source replaces).
+
+Composite data (ParaView's mapper, vtkCompositePolyDataMapper2, uploads no mapped array): the
+sketch's model directions are the point data's tangents, which vtkStylizePrincipalCurvatures
+sets. On the CAD part, the composite mapper's model sketch (geometry path and channel source)
+must be the plain mapper's within 0.5%, and differ from the screen estimate (the option acts);
+with no tangents (TangentDirection NONE) model mode warns and draws the screen estimate.
 """
 import os
 import sys
@@ -19,9 +26,14 @@ import numpy as np
 import vtkstylize
 from vtkmodules.vtkFiltersCore import vtkContourFilter, vtkPolyDataNormals
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+from vtkmodules.vtkFiltersGeometry import vtkCompositeDataGeometryFilter
+from vtkmodules.vtkIOExodus import vtkExodusIIReader
 from vtkmodules.vtkIOPLY import vtkPLYReader
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
+from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
                                          vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingOpenGL2 import vtkCompositePolyDataMapper2
 from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -41,6 +53,20 @@ def ply(name):
     return normals.GetOutput()
 
 
+def exodus(name):
+    # Simulation output: the outer surface of an Exodus II hexahedral mesh, with normals.
+    reader = vtkExodusIIReader()
+    reader.SetFileName(os.path.join(data, name + ".ex2"))
+    reader.UpdateInformation()
+    reader.SetAllArrayStatus(vtkExodusIIReader.ELEM_BLOCK, 1)
+    surface = vtkCompositeDataGeometryFilter()
+    surface.SetInputConnection(reader.GetOutputPort())
+    normals = vtkPolyDataNormals()
+    normals.SetInputConnection(surface.GetOutputPort())
+    normals.Update()
+    return normals.GetOutput()
+
+
 def coarse_contour():
     # A coarse isosurface of VTK's wavelet (about 3,000 triangles), as ParaView's Contour makes.
     wavelet = vtkRTAnalyticSource()
@@ -53,21 +79,29 @@ def coarse_contour():
     return contour.GetOutput()
 
 
-def with_directions(poly):
+def with_directions(poly, tangents=1):
     curvatures = vtkstylize.vtkStylizePrincipalCurvatures()
     curvatures.SetInputData(poly)
+    curvatures.SetTangentDirection(tangents)
     curvatures.Update()
     return curvatures.GetOutput()
 
 
-def render(poly, make_style, path):
-    """The frame of `path` ('geometry', 'image' or 'source') and the style; a fresh window."""
+def render(poly, make_style, path, composite=False, warnings=None):
+    """The frame of `path` ('geometry', 'image' or 'source') and the style; a fresh window.
+    composite: the data as the one block of a multiblock, drawn by VTK's composite mapper."""
     window = offscreen_window(*SIZE)
     renderer = vtkRenderer()
     renderer.SetBackground(0.32, 0.34, 0.43)
     window.AddRenderer(renderer)
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputData(poly)
+    if composite:
+        blocks = vtkMultiBlockDataSet()
+        blocks.SetBlock(0, poly)
+        mapper = vtkCompositePolyDataMapper2()
+        mapper.SetInputDataObject(blocks)
+    else:
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputData(poly)
     mapper.ScalarVisibilityOff()
     actor = vtkActor()
     actor.SetMapper(mapper)
@@ -78,6 +112,11 @@ def render(poly, make_style, path):
     renderer.ResetCameraClippingRange()
     style = make_style()
     keep = [style]
+    if warnings is not None:
+        def warned(caller, event, text):
+            warnings.append(text)
+        warned.CallDataType = VTK_STRING
+        style.AddObserver(vtkCommand.WarningEvent, warned)
     if path != "geometry":
         camera = vtkCameraPass()
         if path == "source":
@@ -116,7 +155,8 @@ def beyond16(a, b):
 
 
 scenes = [("bunny (scan)", ply("bunny")), ("fandisk (CAD)", ply("fandisk")),
-          ("wavelet contour (coarse)", coarse_contour())]
+          ("wavelet contour (coarse)", coarse_contour()),
+          ("vessel (Exodus, simulation)", exodus("vessel"))]
 styles = [("comic", style_maker("vtkComicPass")), ("pixel art", style_maker("vtkPixelArtPass")),
           ("sketch", style_maker("vtkSketchPass"))]
 cases = [(scene, poly, name, make) for scene, poly in scenes for name, make in styles]
@@ -136,4 +176,33 @@ for scene, poly, name, make in cases:
     check(used, "%s, %s: the channel source was not used" % (scene, name))
     check(d_source <= 0.5, "%s, %s: %.2f%% of the pixels differ from the geometry path "
           "(at most 0.5%%)" % (scene, name, d_source))
+
+# Composite data: the model directions are the tangents.
+fandisk = scenes[1][1]
+model = style_maker("vtkSketchPass", DirectionSource=1)
+screen = style_maker("vtkSketchPass")
+plain, _, _ = render(with_directions(fandisk), model, "geometry")
+comp_geometry, _, _ = render(with_directions(fandisk), model, "geometry", composite=True)
+comp_source, _, _ = render(with_directions(fandisk), model, "source", composite=True)
+comp_screen, _, _ = render(with_directions(fandisk), screen, "source", composite=True)
+warned = []
+inert, _, _ = render(with_directions(fandisk, 0), model, "source", composite=True, warnings=warned)
+rows = [("composite, geometry path", beyond16(plain, comp_geometry)),
+        ("composite, channel source", beyond16(plain, comp_source)),
+        ("composite, screen estimate", beyond16(plain, comp_screen)),
+        ("composite, no tangents", beyond16(plain, inert))]
+print("")
+print("| fandisk (CAD), sketch, model directions, against the plain mapper | pixels > 16 levels |")
+print("|---|---:|")
+for name, value in rows:
+    print("| %s | %.2f%% |" % (name, value))
+check(rows[0][1] <= 0.5, "composite geometry path: %.2f%% differ (at most 0.5%%)" % rows[0][1])
+check(rows[1][1] <= 0.5, "composite channel source: %.2f%% differ (at most 0.5%%)" % rows[1][1])
+check(rows[2][1] >= 2.0, "model directions change the composite sketch: %.2f%% differ from the "
+      "screen estimate (at least 2%%)" % rows[2][1])
+d_inert = beyond16(comp_screen, inert)
+check(d_inert == 0.0, "model mode with no tangents draws the screen estimate (%.3f%% differ)"
+      % d_inert)
+check(len(warned) == 1 and "DirectionSource is MODEL" in warned[0],
+      "model mode with no tangents warns once (%d warnings)" % len(warned))
 sys.exit(1 if failures else 0)

@@ -6,9 +6,15 @@ scanned models, CAD parts, animal models; see /usr/share/doc/libcgal-dev/copyrig
 them is committed to this repository: this script reads them from the package's data.tar.gz and
 converts them from OFF (which VTK 9.1 has no reader for) to binary PLY with VTK's writer.
 
+It also writes simulation output of its own, as an Exodus II file (VTK's writer): vessel.ex2, a
+hexahedral mesh of a thick-walled vessel whose wall bulges in three lobes (the kind of curved
+surface a solver's mesh has: quadrilateral faces, coarse around, fine along), with a nodal
+temperature. The geometry is defined here, so it carries no licence of others.
+
 usage: prepare.py OUTDIR [--archive data.tar.gz]
 """
 import argparse
+import math
 import os
 import sys
 import tarfile
@@ -70,6 +76,49 @@ def parse_off(text, name):
     return mesh
 
 
+def write_vessel(path):
+    """A hollow vessel of hexahedra (radius 0.5 to 2, height 4) with three lobes, as Exodus II."""
+    nr, nt, nz = 4, 48, 32
+    points = vtk.vtkPoints()
+    temperature = vtk.vtkDoubleArray()
+    temperature.SetName("Temp")
+    for k in range(nz + 1):
+        z = 4.0 * k / nz
+        for j in range(nt):
+            theta = 2.0 * math.pi * j / nt
+            lobe = 1.0 + 0.18 * math.sin(3.0 * theta) * math.sin(math.pi * z / 4.0)
+            for i in range(nr + 1):
+                r = (0.5 + 1.5 * i / nr) * lobe
+                points.InsertNextPoint(r * math.cos(theta), r * math.sin(theta), z)
+                temperature.InsertNextValue(300.0 + 50.0 * z + 20.0 * r)
+    grid = vtk.vtkUnstructuredGrid()
+    grid.SetPoints(points)
+    grid.GetPointData().AddArray(temperature)
+
+    def pid(i, j, k):
+        return (k * nt + j % nt) * (nr + 1) + i
+    for k in range(nz):
+        for j in range(nt):
+            for i in range(nr):
+                ids = [pid(i, j, k), pid(i + 1, j, k), pid(i + 1, j + 1, k), pid(i, j + 1, k),
+                       pid(i, j, k + 1), pid(i + 1, j, k + 1), pid(i + 1, j + 1, k + 1),
+                       pid(i, j + 1, k + 1)]
+                grid.InsertNextCell(vtk.VTK_HEXAHEDRON, 8, ids)
+    blocks = vtk.vtkIntArray()
+    blocks.SetName("ElementBlockIds")
+    blocks.SetNumberOfTuples(grid.GetNumberOfCells())
+    blocks.Fill(1)
+    grid.GetCellData().AddArray(blocks)
+    writer = vtk.vtkExodusIIWriter()
+    writer.SetFileName(path[:-4] + ".part.ex2")
+    writer.SetInputData(grid)
+    writer.WriteAllTimeStepsOff()
+    if not writer.Write():
+        sys.exit("prepare.py: cannot write " + path)
+    os.replace(path[:-4] + ".part.ex2", path)
+    print(path, grid.GetNumberOfPoints(), "points", grid.GetNumberOfCells(), "hexahedra")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("outdir")
@@ -95,6 +144,9 @@ def main():
                 sys.exit("prepare.py: cannot write " + out)
             os.replace(out[:-4] + ".part.ply", out)
             print(out, mesh.GetNumberOfPoints(), "points", mesh.GetNumberOfCells(), "faces")
+    vessel = os.path.join(args.outdir, "vessel.ex2")
+    if not os.path.exists(vessel):
+        write_vessel(vessel)
 
 
 if __name__ == "__main__":
