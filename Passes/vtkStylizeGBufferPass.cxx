@@ -1083,8 +1083,10 @@ bool vtkStylizeGBufferPass::PreReplaceShaderValues(std::string& vertexShader, st
       // the direction is the point data's tangents (VTK's tangentMC).
       const bool tangents = mapper->IsA("vtkCompositeMapperHelper2") != 0;
       const std::string attribute = tangents ? "tangentMC" : "stylizeDirectionMC";
+      const std::string declaration =
+        tangents ? std::string(TangentDeclaration) : "in vec3 stylizeDirectionMC;\n";
       vtkShaderProgram::Substitute(vertexShader, "//VTK::System::Dec",
-        "//VTK::System::Dec\n" + (tangents ? std::string(TangentDeclaration) : "in vec3 stylizeDirectionMC;\n") +
+        "//VTK::System::Dec\n" + declaration +
           "uniform mat3 stylizeDirectionMCVC;\n"
           "out vec3 stylizeDirDiagVSOutput;\nout vec3 stylizeDirOffVSOutput;\n",
         false);
