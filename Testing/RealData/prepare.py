@@ -110,13 +110,20 @@ def write_vessel(path):
     blocks.Fill(1)
     grid.GetCellData().AddArray(blocks)
     writer = vtk.vtkExodusIIWriter()
-    writer.SetFileName(path[:-4] + ".part.ex2")
-    writer.SetInputData(grid)
     writer.WriteAllTimeStepsOff()
+    write(writer, grid, path)
+    print(path, grid.GetNumberOfPoints(), "points", grid.GetNumberOfCells(), "hexahedra")
+
+
+def write(writer, data, path):
+    """Writes data with writer to a temporary name next to path, then renames it: an interrupted
+    run leaves no partial file that a later run would take as done."""
+    stem, ext = os.path.splitext(path)
+    writer.SetFileName(stem + ".part" + ext)
+    writer.SetInputData(data)
     if not writer.Write():
         sys.exit("prepare.py: cannot write " + path)
-    os.replace(path[:-4] + ".part.ex2", path)
-    print(path, grid.GetNumberOfPoints(), "points", grid.GetNumberOfCells(), "hexahedra")
+    os.replace(stem + ".part" + ext, path)
 
 
 def main():
@@ -137,12 +144,8 @@ def main():
             text = tar.extractfile("data/meshes/" + member).read().decode("latin-1")
             mesh = parse_off(text, member)
             writer = vtk.vtkPLYWriter()
-            writer.SetFileName(out[:-4] + ".part.ply")
-            writer.SetInputData(mesh)
             writer.SetFileTypeToBinary()
-            if not writer.Write():
-                sys.exit("prepare.py: cannot write " + out)
-            os.replace(out[:-4] + ".part.ply", out)
+            write(writer, mesh, out)
             print(out, mesh.GetNumberOfPoints(), "points", mesh.GetNumberOfCells(), "faces")
     vessel = os.path.join(args.outdir, "vessel.ex2")
     if not os.path.exists(vessel):
