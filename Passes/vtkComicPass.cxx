@@ -230,6 +230,21 @@ double vtkComicPass::PointSize(const Frame& frame) const
 }
 
 //------------------------------------------------------------------------------
+double vtkComicPass::GetReach(const Frame& frame)
+{
+  const Plan plan = this->PlanFrame(frame.Interactive);
+  const double pointSize = this->PointSize(frame);
+  const double stride = std::max(1.0, std::round(this->EdgeWidth * pointSize));
+  // Colour edges: the composite stage's taps read the edge stage's, which read their own.
+  double reach = (plan.ColorEdges ? 2.0 : 1.0) * stride + 1.0;
+  if (plan.Principal)
+  {
+    reach = std::max(reach, FieldReach(frame, plan.Field, pointSize) + 1.0);
+  }
+  return reach;
+}
+
+//------------------------------------------------------------------------------
 void vtkComicPass::RenderEdgeStage(const Frame& frame, const Plan& plan)
 {
   const int w = frame.Size[0], h = frame.Size[1];

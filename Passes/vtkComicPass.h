@@ -327,6 +327,8 @@ protected:
   void SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, const Plan& plan);
   /** Pixels per point in this frame's full (possibly tiled, magnified) image. */
   double PointSize(const Frame& frame) const;
+  /** The edge taps (twice the stride for colour edges) and the principal field's reach. */
+  double GetReach(const Frame& frame) override;
   /** Stage 1 (colour edges only): luminance of f_normal, k1 and k2 into the edge texture. */
   void RenderEdgeStage(const Frame& frame, const Plan& plan);
   /** Stage 2: edges, pattern and ink into the output framebuffer, with the scene's depth. */

@@ -462,19 +462,35 @@ void vtkPixelArtPass::PlanGrid(const Frame& frame, Plan& p) const
   // The grid: art columns i0 .. i1 of the full image cover this viewport. FAITHFUL renders the
   // full-resolution extent of these blocks (clipped to the full image), so that an art pixel
   // that straddles two tiles of a magnified screenshot averages the same pixels in both.
+  // A tile's side that borders another tile gets a guard band of art pixels as far as the
+  // outline stages read (the 3x3 Gaussian, Sobel, non-maximum suppression, one more for each
+  // hysteresis step, one for the depth and normal classes), so that the outlines are those of
+  // a direct render at the full size. (A scene from a delegate's image holds nothing beyond
+  // the tile.)
+  const long long guard = this->DelegatePass ? 0 : 4 + this->HysteresisIterations;
+  long long first[2];
   for (int a = 0; a < 2; ++a)
   {
     const int block = p.Block[a];
-    const long long i0 = FloorDiv(offset[a], block);
-    const long long i1 = FloorDiv(offset[a] + size[a] - 1, block);
+    const long long full = std::llround(frame.FullSize[a]);
+    long long i0 = FloorDiv(offset[a], block);
+    long long i1 = FloorDiv(offset[a] + size[a] - 1, block);
+    if (offset[a] > 0)
+    {
+      i0 = std::max(0LL, i0 - guard);
+    }
+    if (offset[a] + size[a] < full)
+    {
+      i1 = std::min(FloorDiv(full - 1, block), i1 + guard);
+    }
+    first[a] = i0;
     p.Grid[a] = static_cast<int>(i1 - i0 + 1);
     p.Origin[a] = static_cast<int>(i0 * block - offset[a]);
     const long long lo = std::max(i0 * block, 0LL);
-    const long long hi = std::max(std::min((i1 + 1) * block,
-      static_cast<long long>(std::llround(frame.FullSize[a]))), offset[a] + size[a]);
+    const long long hi = std::max(std::min((i1 + 1) * block, full), offset[a] + size[a]);
     p.ExtentOrigin[a] = static_cast<int>(std::min(lo, offset[a]) - offset[a]);
     p.Extent[a] = static_cast<int>(hi - offset[a] - p.ExtentOrigin[a]);
-    if (p.Extent[a] > 3 * size[a])
+    if (p.Extent[a] > std::max(3 * size[a], 4096))
     {
       // Art pixels far larger than a tile: reduce the tile's own pixels only (a seam is
       // possible) rather than render a texture many times the tile's size.
@@ -509,8 +525,7 @@ void vtkPixelArtPass::PlanGrid(const Frame& frame, Plan& p) const
   }
   for (int a = 0; a < 2; ++a)
   {
-    const long long firstArt = FloorDiv(offset[a], p.Block[a]);
-    const long long index = this->DitherAnchor == SCREEN ? firstArt : firstArt - gridOrigin[a];
+    const long long index = this->DitherAnchor == SCREEN ? first[a] : first[a] - gridOrigin[a];
     p.DitherOrigin[a] = PositiveMod(index, 8LL * this->DitherSize);
   }
 }

@@ -440,6 +440,31 @@ bool vtkSketchPass::DownloadDirections(vtkFloatArray* out)
 }
 
 //------------------------------------------------------------------------------
+double vtkSketchPass::GetReach(const Frame& frame)
+{
+  const Plan p = this->PlanFrame(frame);
+  double reach = FieldReach(frame, p.Field, p.PointSize) + 1.0;
+  if (p.Strokes)
+  {
+    // A stroke's steps are StepLength points where it starts; in perspective a surface that
+    // turns toward the camera lengthens them on the screen: twice the length bounds them here.
+    const double factor = this->LicMode == SCREEN_2D ? 1.0 : 2.0;
+    reach += factor * p.Steps * p.StepLength * p.PointSize + 1.0;
+  }
+  if (p.Contrast)
+  {
+    reach = std::max(reach, p.BlurRadius + 2.0 * this->BlurStride);
+  }
+  return reach;
+}
+
+//------------------------------------------------------------------------------
+int vtkSketchPass::GetGuardAlignment(const Frame&)
+{
+  return this->BlurStride;
+}
+
+//------------------------------------------------------------------------------
 void vtkSketchPass::Render(const vtkRenderState* s)
 {
   Frame frame;
@@ -624,6 +649,8 @@ void vtkSketchPass::RenderFinalStage(const Frame& frame, const Plan& p)
     this->SetFieldUniforms(u, frame);
     u.Texture("sketchField", this->GetDirectionFieldTexture())
       .Texture("sketchBlur", this->TextureSlot(BLUR_Y))
+      .Float2("sketchBlurExtent", p.BlurSize[0] * this->BlurStride,
+        p.BlurSize[1] * this->BlurStride)
       .Texture("sketchNoise", this->TextureSlot(NOISE))
       .Float2("sketchNoiseStats", in.NoiseStats[0], in.NoiseStats[1])
       .Float("sketchNoiseScale", 1.0 / (p.NoiseUnit * NoiseTextureSize))

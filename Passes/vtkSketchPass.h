@@ -50,7 +50,8 @@
  * Lengths (step, noise cell, neighbour spacing, blur radius, fill radius) are in points: 1 point
  * is one pixel of an image ReferenceHeight pixels tall; world lengths are taken at the camera's
  * focal distance. A NaN setting counts as its range's minimum. A magnified screenshot shows the
- * same picture at higher detail (the blur and the strokes stop at tile borders).
+ * same picture at higher detail: each tile computes a guard band of its neighbours' pixels as
+ * far as the field, the strokes and the blur read (vtkStylizeStylePass::GetReach()).
  *
  * Interactive variant (while the window renders at InteractiveUpdateRate or faster, e.g. while
  * the user drags): the raw directions, neither smoothed nor filled (undefined pixels take the
@@ -479,6 +480,10 @@ protected:
   /** What a frame computes: stages, channels, defines, and the settings' lengths in pixels. */
   struct Plan;
   Plan PlanFrame(const Frame& frame) const;
+  /** The strokes' length on top of the field's reach, or the blur's, whichever is larger. */
+  double GetReach(const Frame& frame) override;
+  /** The blur's grid: BlurStride. */
+  int GetGuardAlignment(const Frame& frame) override;
   /** The noise texture of the current kind, made when the kind changes. */
   void UpdateNoise(const Frame& frame);
   // 1-3: the direction field (vtkStylizeStylePass::RenderDirectionField()).

@@ -98,6 +98,11 @@ public:
   };
   bool Timing = false;
   bool Culling = true; // BackgroundCullingOn()
+
+  // This frame's guard band (PlanGuardBand()): the stages' size and the screen transform.
+  bool Guarded = false;
+  int GuardSize[2] = { 0, 0 };
+  double GuardTransform[4] = { 1.0, 1.0, 0.0, 0.0 };
   std::vector<StageTime> Times;
   std::chrono::steady_clock::time_point TimingStart;
 
@@ -191,10 +196,24 @@ void vtkStylizeStylePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Scene: "
      << (this->DelegatePass ? "the delegate's image (colour and depth)" : "the geometry") << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
+  os << indent << "WindowScale: " << this->WindowScale[0] << " " << this->WindowScale[1] << "\n";
   os << indent << "BackgroundCulling: " << (this->Internals->Culling ? "on" : "off") << "\n";
   os << indent << "StageTiming: " << (this->Internals->Timing ? "on" : "off") << "\n";
   os << indent << "LightingPass:\n";
   this->Internals->Lighting->PrintSelf(os, indent.GetNextIndent());
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::SetWindowScale(int x, int y)
+{
+  x = std::max(1, std::min(64, x));
+  y = std::max(1, std::min(64, y));
+  if (x != this->WindowScale[0] || y != this->WindowScale[1])
+  {
+    this->WindowScale[0] = x;
+    this->WindowScale[1] = y;
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -320,7 +339,7 @@ bool vtkStylizeStylePass::BeginFrame(const vtkRenderState* s, Frame& frame)
   {
     frame.FullSize[a] = full.Size[a];
     frame.FullOffset[a] = full.Offset[a];
-    frame.TileScale[a] = full.TileScale[a];
+    frame.TileScale[a] = full.TileScale[a] * this->WindowScale[a];
   }
   frame.Camera = ren->GetActiveCamera();
   frame.Parallel = frame.Camera->GetParallelProjection() != 0;
@@ -329,7 +348,67 @@ bool vtkStylizeStylePass::BeginFrame(const vtkRenderState* s, Frame& frame)
   const double rate = frame.Window->GetDesiredUpdateRate();
   frame.Interactive = this->InteractiveUpdateRate > 0.0 && std::isfinite(rate) &&
     rate >= this->InteractiveUpdateRate;
+  this->PlanGuardBand(frame);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::PlanGuardBand(Frame& frame)
+{
+  vtkInternals& in = *this->Internals;
+  in.Guarded = false;
+  // A tile's borders inside the full image (an untiled render has none); a scene from an
+  // image (IceT's tile) holds nothing beyond the tile.
+  const double before[2] = { frame.FullOffset[0], frame.FullOffset[1] };
+  const double after[2] = { frame.FullSize[0] - frame.FullOffset[0] - frame.Size[0],
+    frame.FullSize[1] - frame.FullOffset[1] - frame.Size[1] };
+  const bool tile = before[0] >= 1.0 || before[1] >= 1.0 || after[0] >= 1.0 || after[1] >= 1.0;
+  if (this->DelegatePass || !tile)
+  {
+    return;
+  }
+  const double reach = this->GetReach(frame);
+  if (!(reach > 0.0))
+  {
+    return;
+  }
+  const int align = std::max(1, this->GetGuardAlignment(frame));
+  // At most this many pixels per side in all (a larger reach leaves a seam possible rather
+  // than render textures many times the tile's size).
+  constexpr double MaxSize = 8192.0;
+  const int band = static_cast<int>(std::ceil(std::min(reach, MaxSize)));
+  int guard[4], size[2];
+  for (int a = 0; a < 2; ++a)
+  {
+    // The band stays inside the full image; its lower corner on the alignment grid.
+    const long long offset = std::llround(before[a]);
+    long long lo = std::min<long long>(band, offset);
+    lo = offset - (offset - lo) / align * align;
+    const long long hi = std::max(0LL, std::min<long long>(band, std::llround(after[a])));
+    const long long total = frame.Size[a] + lo + hi;
+    if (total > MaxSize)
+    {
+      return;
+    }
+    guard[a] = static_cast<int>(lo);
+    guard[a + 2] = static_cast<int>(hi);
+    size[a] = static_cast<int>(total);
+  }
+  for (int a = 0; a < 2; ++a)
+  {
+    // The viewport's NDC [-1, 1] onto its pixels inside the band.
+    const double lo = guard[a], hi = guard[a + 2];
+    frame.Guard[a] = guard[a];
+    frame.Guard[a + 2] = guard[a + 2];
+    frame.GuardTransform[a] = frame.Size[a] / static_cast<double>(size[a]);
+    frame.GuardTransform[a + 2] = (lo - hi) / size[a];
+    frame.Origin[a] -= frame.Guard[a];
+    frame.FullOffset[a] -= frame.Guard[a];
+    frame.Size[a] = size[a];
+    in.GuardSize[a] = size[a];
+  }
+  std::copy(frame.GuardTransform, frame.GuardTransform + 4, in.GuardTransform);
+  in.Guarded = true;
 }
 
 //------------------------------------------------------------------------------
@@ -343,9 +422,21 @@ bool vtkStylizeStylePass::RenderScene(const vtkRenderState* s, const SceneReques
   {
     gbuffer->SetPositionSpace(request.PositionSpace);
   }
-  gbuffer->SetGeometryResolution(request.Resolution[0], request.Resolution[1]);
   const double* t = request.ScreenTransform;
-  gbuffer->SetGeometryScreenTransform(t[0], t[1], t[2], t[3]);
+  vtkInternals& in = *this->Internals;
+  if (in.Guarded && request.Resolution[0] <= 0)
+  {
+    // The guard band: the viewport's geometry, and its neighbours', on the stages' pixels.
+    const double* g = in.GuardTransform;
+    gbuffer->SetGeometryResolution(in.GuardSize[0], in.GuardSize[1]);
+    gbuffer->SetGeometryScreenTransform(
+      g[0] * t[0], g[1] * t[1], g[0] * t[2] + g[2], g[1] * t[3] + g[3]);
+  }
+  else
+  {
+    gbuffer->SetGeometryResolution(request.Resolution[0], request.Resolution[1]);
+    gbuffer->SetGeometryScreenTransform(t[0], t[1], t[2], t[3]);
+  }
   gbuffer->SetAfterScreenShift(request.AfterShift[0], request.AfterShift[1]);
   this->Internals->TimeBegin();
   const bool rendered = gbuffer->RenderGeometry(s);
@@ -488,8 +579,21 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
   vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  // The quad covers the stages' pixels (the guard band included); the scissor keeps the
+  // viewport's. `scissor` clips a box of the stages' pixels to the viewport.
+  const int* g = frame.Guard;
+  const int view[4] = { g[0], g[1], frame.Size[0] - g[2], frame.Size[1] - g[3] };
+  auto scissor = [&](int x0, int y0, int x1, int y1) {
+    x0 = std::max(x0, view[0]);
+    y0 = std::max(y0, view[1]);
+    x1 = std::min(x1, view[2]);
+    y1 = std::min(y1, view[3]);
+    ostate->vtkglScissor(frame.Origin[0] + x0, frame.Origin[1] + y0, std::max(0, x1 - x0),
+      std::max(0, y1 - y0));
+  };
   ostate->vtkglViewport(frame.Origin[0], frame.Origin[1], frame.Size[0], frame.Size[1]);
-  ostate->vtkglScissor(frame.Origin[0], frame.Origin[1], frame.Size[0], frame.Size[1]);
+  scissor(view[0], view[1], view[2], view[3]);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglDepthMask(GL_TRUE);
   if (writeDepth)
   {
@@ -498,7 +602,6 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
   }
   else
   {
-    ostate->vtkglEnable(GL_SCISSOR_TEST);
     ostate->vtkglClearDepth(1.0);
     ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
     ostate->vtkglDisable(GL_DEPTH_TEST);
@@ -510,7 +613,6 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
   const bool split = in.Culling && writeDepth && margin >= 0 && this->SceneRectangle(frame, margin, rect);
   if (split)
   {
-    ostate->vtkglEnable(GL_SCISSOR_TEST);
     in.TimeBegin();
     const int strips[4][4] = { { 0, 0, frame.Size[0], rect[1] },
       { 0, rect[3], frame.Size[0], frame.Size[1] }, { 0, rect[1], rect[0], rect[3] },
@@ -548,8 +650,7 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
       {
         continue;
       }
-      ostate->vtkglScissor(
-        frame.Origin[0] + b[0], frame.Origin[1] + b[1], b[2] - b[0], b[3] - b[1]);
+      scissor(b[0], b[1], b[2], b[3]);
       if (clear)
       {
         ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -565,8 +666,7 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
     {
       return layered || clear || background; // nothing of the scene is in view
     }
-    ostate->vtkglScissor(
-      frame.Origin[0] + rect[0], frame.Origin[1] + rect[1], rect[2] - rect[0], rect[3] - rect[1]);
+    scissor(rect[0], rect[1], rect[2], rect[3]);
   }
   vtkShaderProgram* program = in.Prepare(stage);
   if (program)
@@ -627,7 +727,8 @@ bool vtkStylizeStylePass::SceneRectangle(const Frame& frame, int margin, int rec
     }
     for (int a = 0; a < 2; ++a)
     {
-      const double pixel = (c[a] / c[3] + 1.0) * 0.5 * frame.Size[a];
+      const double ndc = frame.GuardTransform[a] * c[a] / c[3] + frame.GuardTransform[a + 2];
+      const double pixel = (ndc + 1.0) * 0.5 * frame.Size[a];
       lo[a] = std::min(lo[a], pixel);
       hi[a] = std::max(hi[a], pixel);
     }
@@ -786,28 +887,40 @@ double vtkStylizeStylePass::FocalPixelWorld(const Frame& frame)
 //------------------------------------------------------------------------------
 void vtkStylizeStylePass::SetFieldUniforms(vtkStylizeUniforms& u, const Frame& frame)
 {
-  vtkMatrix4x4* projection = frame.Camera->GetProjectionTransformMatrix(frame.Renderer);
+  // The projection onto the stages' pixels: the guard band's screen transform after the
+  // camera's (row a becomes s_a row a + t_a row 3). (Not GetProjectionTransformMatrix(ren),
+  // which returns a new matrix, transposed: a tile's off-centre terms were read as zero.)
+  vtkMatrix4x4* projection = frame.Camera->GetProjectionTransformMatrix(
+    frame.Renderer->GetTiledAspectRatio(), -1.0, 1.0);
+  auto element = [&](int row, int column) {
+    return frame.GuardTransform[row] * projection->GetElement(row, column) +
+      frame.GuardTransform[row + 2] * projection->GetElement(3, column);
+  };
   this->BindSceneTextures(u);
   u.Int2("fieldSize", frame.Size[0], frame.Size[1])
     .Float2("fieldPixelOffset", frame.FullOffset[0], frame.FullOffset[1])
     .Int("fieldParallel", frame.Parallel ? 1 : 0)
     .Float("fieldPixelWorld", frame.PixelWorld)
-    .Float4("fieldProjection", projection->GetElement(0, 0), projection->GetElement(1, 1),
-      projection->GetElement(0, 2), projection->GetElement(1, 2))
-    .Float2("fieldProjOffset", projection->GetElement(0, 3), projection->GetElement(1, 3));
+    .Float4("fieldProjection", element(0, 0), element(1, 1), element(0, 2), element(1, 2))
+    .Float2("fieldProjOffset", element(0, 3), element(1, 3));
   this->SetDepthMappingUniforms(u);
 }
 
 //------------------------------------------------------------------------------
-vtkTextureObject* vtkStylizeStylePass::RenderDirectionField(
+struct vtkStylizeStylePass::FieldPlan
+{
+  double SpacingWorld = 0.0; // the estimate's neighbour spacing, world units
+  int MaxStride = 1;         // the estimate's largest neighbour distance, pixels
+  int GradientStride = 1;    // the lighting-gradient fallback's tap distance, pixels
+  // The smoothing and fill passes: tap distance (pixels), fill only.
+  std::vector<std::pair<int, int>> Iterations;
+};
+
+//------------------------------------------------------------------------------
+vtkStylizeStylePass::FieldPlan vtkStylizeStylePass::PlanField(
   const Frame& frame, const FieldSettings& s, double pointSize)
 {
-  vtkInternals& in = *this->Internals;
-  if (in.FieldStage < 0)
-  {
-    return nullptr;
-  }
-  const int w = frame.Size[0], h = frame.Size[1];
+  FieldPlan plan;
   const double focalPixel = FocalPixelWorld(frame);
 
   // The estimate's neighbour spacing in world units: NeighborSpacing points at the focal
@@ -840,9 +953,64 @@ vtkTextureObject* vtkStylizeStylePass::RenderDirectionField(
       }
     }
   }
+  plan.SpacingWorld = spacingWorld;
   const double smoothingRadius = std::min(s.SmoothingRadius * scale, 256.0) * pointSize;
-  const int maxStride = std::max(1, static_cast<int>(std::lround(s.MaxStride * pointSize)));
+  plan.MaxStride = std::max(1, static_cast<int>(std::lround(s.MaxStride * pointSize)));
+  plan.GradientStride = std::max(1, static_cast<int>(std::lround(2.0 * pointSize)));
   const double fillRadius = s.FillRadius > 0.0 ? std::max(1.0, s.FillRadius * pointSize) : -1.0;
+
+  // Smoothing (all pixels, 3x3 at tap distances 1, 2, 4, ... points up to the smoothing
+  // radius, then at distance 1 pixel), then filling (undefined pixels, distances 1, 2, 4, ...).
+  // The taps are in points (at least a pixel), so that a magnified image is smoothed over the
+  // same part of the picture.
+  // A smoothing pass fills undefined pixels as it smooths (they take their neighbours'
+  // directions), so the fill iterations start beyond the pyramid's largest tap distance: the
+  // ones below it would repeat it (fill-only passes at those distances changed at most 0.1% of
+  // the directions on the real-data meshes, and cost as much as a smoothing pass).
+  int pyramid = 0;
+  for (double pt = 1.0; pt <= smoothingRadius / pointSize; pt *= 2.0)
+  {
+    pyramid = std::max(1, static_cast<int>(std::lround(pt * pointSize)));
+    plan.Iterations.emplace_back(pyramid, 0);
+  }
+  for (int i = 0; i < s.SmoothingIterations; ++i)
+  {
+    plan.Iterations.emplace_back(1, 0);
+  }
+  for (int r = 1; fillRadius > 0.0 && r <= fillRadius; r *= 2)
+  {
+    if (r > pyramid)
+    {
+      plan.Iterations.emplace_back(r, 1);
+    }
+  }
+  return plan;
+}
+
+//------------------------------------------------------------------------------
+double vtkStylizeStylePass::FieldReach(
+  const Frame& frame, const FieldSettings& s, double pointSize)
+{
+  const FieldPlan plan = PlanField(frame, s, pointSize);
+  double reach = plan.MaxStride + plan.GradientStride;
+  for (const auto& it : plan.Iterations)
+  {
+    reach += it.first;
+  }
+  return reach;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkStylizeStylePass::RenderDirectionField(
+  const Frame& frame, const FieldSettings& s, double pointSize)
+{
+  vtkInternals& in = *this->Internals;
+  if (in.FieldStage < 0)
+  {
+    return nullptr;
+  }
+  const int w = frame.Size[0], h = frame.Size[1];
+  const FieldPlan plan = PlanField(frame, s, pointSize);
   const double fallback = vtkMath::RadiansFromDegrees(s.FallbackAngle);
 
   // Every stage computes only the surface's pixels (SURFACE_PIXELS): the background is zero,
@@ -852,38 +1020,14 @@ vtkTextureObject* vtkStylizeStylePass::RenderDirectionField(
   vtkStylizeShaderUtilities::EnsureScreenTexture(raw0, in.Window, w, h, GL_RGBA16F);
   this->RenderStage(in.FieldStage, { raw0 }, w, h, [&](vtkStylizeUniforms& u) {
     this->SetFieldUniforms(u, frame);
-    u.Float("fieldSpacing", spacingWorld)
-      .Int("fieldMaxStride", maxStride)
+    u.Float("fieldSpacing", plan.SpacingWorld)
+      .Int("fieldMaxStride", plan.MaxStride)
       .Float("fieldPlanar", s.PlanarTolerance)
       .Float("fieldUmbilic", s.UmbilicTolerance);
   }, SURFACE_PIXELS);
 
-  // 2. Smoothing (all pixels, 3x3 at tap distances 1, 2, 4, ... points up to the smoothing
-  // radius, then at distance 1 pixel), then filling (undefined pixels, distances 1, 2, 4, ...).
-  // The taps are in points (at least a pixel), so that a magnified image is smoothed over the
-  // same part of the picture.
-  // A smoothing pass fills undefined pixels as it smooths (they take their neighbours'
-  // directions), so the fill iterations start beyond the pyramid's largest tap distance: the
-  // ones below it would repeat it (fill-only passes at those distances changed at most 0.1% of
-  // the directions on the real-data meshes, and cost as much as a smoothing pass).
-  std::vector<std::pair<int, int>> iterations; // tap distance, fill only
-  int pyramid = 0;
-  for (double pt = 1.0; pt <= smoothingRadius / pointSize; pt *= 2.0)
-  {
-    pyramid = std::max(1, static_cast<int>(std::lround(pt * pointSize)));
-    iterations.emplace_back(pyramid, 0);
-  }
-  for (int i = 0; i < s.SmoothingIterations; ++i)
-  {
-    iterations.emplace_back(1, 0);
-  }
-  for (int r = 1; fillRadius > 0.0 && r <= fillRadius; r *= 2)
-  {
-    if (r > pyramid)
-    {
-      iterations.emplace_back(r, 1);
-    }
-  }
+  // 2. Smoothing and filling (PlanField()).
+  const std::vector<std::pair<int, int>>& iterations = plan.Iterations;
   int current = 0;
   if (iterations.empty())
   {
@@ -914,7 +1058,7 @@ vtkTextureObject* vtkStylizeStylePass::RenderDirectionField(
   this->RenderStage(in.FieldStage + 2, { resolved }, w, h, [&](vtkStylizeUniforms& u) {
     this->SetFieldUniforms(u, frame);
     u.Texture("fieldInput", in.FieldTextures[current])
-      .Int("fieldGradientStride", std::max(1, static_cast<int>(std::lround(2.0 * pointSize))))
+      .Int("fieldGradientStride", plan.GradientStride)
       .Float2("fieldScreenDirection", std::cos(fallback), std::sin(fallback));
   }, SURFACE_PIXELS);
   in.FieldResolved = 2;

@@ -109,6 +109,20 @@ public:
   vtkGetMacro(InteractiveUpdateRate, double);
   ///@}
 
+  ///@{
+  /**
+   * Window scale (not a style setting: set by whoever renders a magnified image in one piece):
+   * the lengths the style's settings give in window pixels (vtkPixelArtPass::PixelSize, comic's
+   * points with ReferenceHeight 0) are multiplied by it, as a tile of a screenshot magnified
+   * this many times multiplies them (vtkWindowToImageFilter), so that an image rendered at the
+   * full size in one piece shows the magnified screenshot's picture. ParaView's view sets it
+   * while it renders a large screenshot in one piece. In x and y, each from 1 to 64; default
+   * (1, 1).
+   */
+  void SetWindowScale(int x, int y);
+  vtkGetVector2Macro(WindowScale, int);
+  ///@}
+
   /**
    * Bytes of device memory the style's textures hold after the last frame: the G-buffer's
    * (vtkStylizeGBufferPass::GetTextureBytes()), the style's intermediate targets and the
@@ -171,13 +185,27 @@ protected:
   {
     vtkRenderer* Renderer = nullptr;
     vtkOpenGLRenderWindow* Window = nullptr;
-    int Size[2] = { 0, 0 };   ///< the viewport's width and height, pixels
-    int Origin[2] = { 0, 0 }; ///< its lower-left corner in the window
+    /** The stages' width and height, pixels: the viewport's, plus the guard band. */
+    int Size[2] = { 0, 0 };
+    /** The lower-left corner of the stages' pixels in the window (the guard band's corner). */
+    int Origin[2] = { 0, 0 };
+    /**
+     * The guard band of a tile (left, bottom, right, top), pixels: how much of the neighbouring
+     * tiles' picture the stages compute around the viewport, so that what a stage reads across
+     * the tile's border is what a direct render at the full size would read. Zero on the full
+     * image's own borders, and everywhere in an untiled render.
+     */
+    int Guard[4] = { 0, 0, 0, 0 };
+    /**
+     * The guard band's screen transform (sx, sy, tx, ty): the camera's normalized device
+     * coordinates of the viewport mapped onto the stages' pixels (identity without a guard).
+     */
+    double GuardTransform[4] = { 1.0, 1.0, 0.0, 0.0 };
     /** The full (possibly tiled, magnified) image: the renderer's size in it, pixels. */
     double FullSize[2] = { 1.0, 1.0 };
-    /** The viewport's lower-left corner in the full image, whole pixels. */
+    /** The lower-left corner of the stages' pixels in the full image, whole pixels. */
     double FullOffset[2] = { 0.0, 0.0 };
-    /** The magnification of a tiled screenshot (1 otherwise). */
+    /** The magnification of a tiled screenshot (1 otherwise), times the WindowScale. */
     int TileScale[2] = { 1, 1 };
     vtkCamera* Camera = nullptr;
     bool Parallel = false;
@@ -210,9 +238,28 @@ protected:
   /**
    * Starts a frame: clears GL errors and fills `frame`. Returns false when there is nothing to
    * stylize (no OpenGL window, or a zero-sized viewport: the rest of the scene is then drawn and
-   * the frame is done).
+   * the frame is done). In a tile of a magnified screenshot (vtkWindowToImageFilter) whose
+   * scene comes from the geometry, the frame gets a guard band of GetReach() pixels on each
+   * side that borders another tile: RenderScene() renders the geometry over it, every stage
+   * computes it, and RenderStageToOutput() writes the viewport alone.
    */
   bool BeginFrame(const vtkRenderState* s, Frame& frame);
+
+  /**
+   * How far the style's result at a pixel depends on the G-buffer around it, pixels of this
+   * frame's image (through all its stages: a stage that reads another stage's result at a
+   * distance adds that stage's reach). A tile of a magnified screenshot renders this much of
+   * its neighbours around it (Frame::Guard). 0 (the default): the style reads no neighbours, or
+   * plans its own margin (the G-buffer render at a custom resolution, as pixel art's blocks).
+   */
+  virtual double GetReach(const Frame&) { return 0.0; }
+
+  /**
+   * The guard band's lower-left corner falls on a multiple of this many pixels of the full
+   * image, so that a stage computed on a coarser grid (every k-th pixel) uses the grid of a
+   * render at the full size. Default 1.
+   */
+  virtual int GetGuardAlignment(const Frame&) { return 1; }
 
   /**
    * Renders the scene into the G-buffer (from the geometry, or from the delegate's image when a
@@ -341,6 +388,12 @@ protected:
   static double FocalPixelWorld(const Frame& frame);
 
   /**
+   * How far the resolved field at a pixel depends on the G-buffer around it, pixels (the
+   * estimate's neighbours, the smoothing and fill taps, the gradient fallback): for GetReach().
+   */
+  static double FieldReach(const Frame& frame, const FieldSettings& s, double pointSize);
+
+  /**
    * Runs the field's stages (estimate, smoothing and fill, resolve) over the G-buffer of this
    * frame, which must hold LINEAR_DEPTH and NORMAL (and DIRECTION for `s.Model`); the style's
    * defines must include FieldDefines(s). `pointSize`: pixels per point. Returns the resolved
@@ -365,6 +418,7 @@ protected:
   virtual void ReleaseStyleResources(vtkWindow*) {}
 
   double InteractiveUpdateRate = 1.0;
+  int WindowScale[2] = { 1, 1 };
 
 private:
   vtkStylizeStylePass(const vtkStylizeStylePass&) = delete;
@@ -372,6 +426,13 @@ private:
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+
+  /** Gives `frame` its guard band (BeginFrame()). */
+  void PlanGuardBand(Frame& frame);
+
+  /** The field's stages for a frame: their tap distances and strides (RenderDirectionField()). */
+  struct FieldPlan;
+  static FieldPlan PlanField(const Frame& frame, const FieldSettings& s, double pointSize);
 };
 
 #endif

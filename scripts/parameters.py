@@ -154,7 +154,12 @@ def framework_settings():
     from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLRenderPass
     from vtkmodules.vtkCommonExecutionModel import vtkPolyDataAlgorithm
     return {m[3:] for k in (vtkOpenGLRenderPass, vtkPolyDataAlgorithm) for m in dir(k)
-            if m.startswith("Set")}
+            if m.startswith("Set")} | RENDERING_PLUMBING
+
+
+# Settings of the style base that whoever renders sets, not the user's look (their comments say
+# who sets them).
+RENDERING_PLUMBING = {"WindowScale"}
 
 
 class ClassDoc:

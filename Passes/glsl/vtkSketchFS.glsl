@@ -44,6 +44,7 @@ void sketchMain()
 #ifdef SKETCH_STAGE_FINAL
 uniform sampler2D sketchField;   // the resolved field: xyz view-space direction, w linear depth
 uniform sampler2D sketchBlur;    // the blurred luminance (linear filtering)
+uniform vec2 sketchBlurExtent;   // pixels the blur's texels cover (its size times its stride)
 uniform sampler3D sketchNoise;   // tileable solid noise
 uniform vec2 sketchNoiseStats;   // mean and standard deviation of the noise texture
 uniform float sketchNoiseScale;  // noise texels per object unit (per pixel: screen noise)
@@ -117,7 +118,8 @@ float sketchStroke(ivec2 p, vec3 x0, vec3 dir0, vec3 n0, bool across)
 #ifdef SKETCH_SCREEN_LIC
     // The classic 2D LIC baseline: the direction projected once, without the perspective
     // division's dependence on depth, and steps of one pixel length on the screen.
-    vec2 d2 = normalize(fieldProjection.xy * d.xy + vec2(1e-12, 0.0));
+    // (In pixels: normalized device coordinates stretch x and y by the viewport's sides.)
+    vec2 d2 = normalize(fieldProjection.xy * d.xy * vec2(fieldSize) + vec2(1e-12, 0.0));
     f = f0 + d2 * along * sketchStepPixels;
 #endif
     for (int k = 0; k < sketchSteps; ++k)
@@ -150,7 +152,7 @@ float sketchStroke(ivec2 p, vec3 x0, vec3 dir0, vec3 n0, bool across)
       }
       nd = dot(nd, d) < 0.0 ? -nd : nd;
 #ifdef SKETCH_SCREEN_LIC
-      vec2 nd2 = fieldProjection.xy * nd.xy;
+      vec2 nd2 = fieldProjection.xy * nd.xy * vec2(fieldSize);
       if (dot(nd2, nd2) > 1e-12)
       {
         nd2 = normalize(nd2);
@@ -192,7 +194,7 @@ void sketchMain()
   float tone = fieldLuminance(colour);
   tone = mix(tone, 1.0, smoothstep(sketchBright.x, sketchBright.y, tone));
 #ifdef SKETCH_CONTRAST
-  vec2 blurUV = (vec2(p) + 0.5) / vec2(fieldSize);
+  vec2 blurUV = (vec2(p) + 0.5) / sketchBlurExtent;
   float blurred = texture(sketchBlur, blurUV).r;
   tone = clamp(tone + sketchContrast * (tone - blurred), 0.0, 1.0);
 #endif

@@ -155,6 +155,19 @@ void vtkPVStylizeView::SetFreezeBackground(int freeze)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVStylizeView::SetWindowScale(int x, int y)
+{
+  x = std::max(1, std::min(64, x));
+  y = std::max(1, std::min(64, y));
+  if (x != this->WindowScale[0] || y != this->WindowScale[1])
+  {
+    this->WindowScale[0] = x;
+    this->WindowScale[1] = y;
+    this->Modified();
+  }
+}
+
+//----------------------------------------------------------------------------
 void vtkPVStylizeView::ReleasePassResources(vtkStylizeStylePass* keep)
 {
   vtkRenderWindow* window = this->GetRenderWindow();
@@ -228,6 +241,12 @@ void vtkPVStylizeView::ConfigurePasses()
       style->GetGBufferPass()->SetImageBackground(
         this->BackgroundFrozen ? this->FrozenBackground : background);
     }
+  }
+  for (vtkStylizeStylePass* pass : { static_cast<vtkStylizeStylePass*>(this->ComicPass),
+         static_cast<vtkStylizeStylePass*>(this->PixelArtPass),
+         static_cast<vtkStylizeStylePass*>(this->SketchPass) })
+  {
+    pass->SetWindowScale(this->WindowScale[0], this->WindowScale[1]);
   }
   this->SynchronizedRenderers->SetImageProcessingPass(style);
   // The sketch's object scale counts the data of all ranks (the style runs on the composited

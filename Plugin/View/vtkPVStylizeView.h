@@ -112,6 +112,14 @@ public:
    */
   void SetFreezeBackground(int freeze);
 
+  /**
+   * The styles' window scale (vtkStylizeStylePass::SetWindowScale): vtkSMStylizeViewProxy sets
+   * it to the magnification while it renders a screenshot larger than the view in one piece,
+   * so that the picture is the magnified one. In x and y, each from 1 to 64; default (1, 1).
+   */
+  void SetWindowScale(int x, int y);
+  vtkGetVector2Macro(WindowScale, int);
+
   /** The style pass in use (nullptr for the style None). */
   vtkStylizeStylePass* GetActiveStylePass();
 
@@ -139,6 +147,7 @@ protected:
   bool RequestedFXAA = false;
   int ColorMode = DEFAULT;
   bool BackgroundFrozen = false;
+  int WindowScale[2] = { 1, 1 };
   bool FrozenFlat = false;
   double FrozenBackground[3] = { 0.0, 0.0, 0.0 };
   vtkStylizeStylePass* LastStylePass = nullptr;

@@ -1,7 +1,11 @@
 #include "vtkSMStylizeViewProxy.h"
 
+#include "vtkImageData.h"
 #include "vtkObjectFactory.h"
+#include "vtkRenderWindow.h"
 #include "vtkSMPropertyHelper.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkSMStylizeViewProxy);
 
@@ -45,4 +49,42 @@ int vtkSMStylizeViewProxy::LoadXMLState(vtkPVXMLElement* element, vtkSMProxyLoca
     this->PushFreezeBackground(false);
   }
   return result;
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkSMStylizeViewProxy::CaptureWindowInternal(int magX, int magY)
+{
+  vtkRenderWindow* window = this->GetRenderWindow();
+  const bool styled =
+    this->GetProperty("Style") && vtkSMPropertyHelper(this, "Style").GetAsInt() != 0;
+  int size[2] = { 0, 0 };
+  vtkSMPropertyHelper(this, "ViewSize").Get(size, 2);
+  const double full[2] = { static_cast<double>(size[0]) * magX,
+    static_cast<double>(size[1]) * magY };
+  // (ParaView 5.11 renders every view, the GUI's included, into its own offscreen buffers,
+  // which may be larger than the screen.)
+  if (!styled || (magX <= 1 && magY <= 1) || !window ||
+    !this->GetProperty("PPI") || !this->GetProperty("WindowScale") ||
+    full[0] > MaxOnePieceSide || full[1] > MaxOnePieceSide ||
+    full[0] * full[1] > MaxOnePiecePixels)
+  {
+    return this->Superclass::CaptureWindowInternal(magX, magY);
+  }
+  vtkSMPropertyHelper viewSize(this, "ViewSize");
+  vtkSMPropertyHelper ppi(this, "PPI");
+  vtkSMPropertyHelper scale(this, "WindowScale");
+  const int savedPPI = ppi.GetAsInt();
+  const int fullSize[2] = { size[0] * magX, size[1] * magY };
+  viewSize.Set(fullSize, 2);
+  ppi.Set(savedPPI * std::max(magX, magY));
+  const int magnification[2] = { magX, magY };
+  scale.Set(magnification, 2);
+  this->UpdateVTKObjects();
+  vtkImageData* image = this->Superclass::CaptureWindowInternal(1, 1);
+  viewSize.Set(size, 2);
+  ppi.Set(savedPPI);
+  const int one[2] = { 1, 1 };
+  scale.Set(one, 2);
+  this->UpdateVTKObjects();
+  return image;
 }

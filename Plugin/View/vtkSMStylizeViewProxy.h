@@ -13,6 +13,16 @@
  * background properties first (SaveXMLState with a property iterator) and restores them after
  * (LoadXMLState): between the two, this proxy switches the view's FreezeBackground on, so that
  * the style draws the same ink in both renders, computed over the view's own background.
+ *
+ * A screenshot larger than the view (SaveScreenshot(..., ImageResolution=...) beyond ViewSize)
+ * is rendered by ParaView in tiles, one view-sized render each. A style reads each pixel's
+ * neighbours, which a tile does not have beyond its borders (IceT hands the style the tile's
+ * image only): the tiles would join with seams. With a style on, this proxy renders such a
+ * screenshot in one piece instead, the view resized to the full size with its PPI multiplied
+ * by the magnification (text and scalar bars in proportion, as in ParaView's tiled capture),
+ * then restored, when it is at most MaxOnePieceSide pixels a side and MaxOnePiecePixels in all;
+ * otherwise it tiles as ParaView.
+ *
  * It behaves as vtkSMRenderViewProxy in every other way.
  */
 
@@ -35,8 +45,19 @@ public:
   /** As vtkSMProxy; after a transparent-background capture, also releases the background. */
   int LoadXMLState(vtkPVXMLElement* element, vtkSMProxyLocator* locator) override;
 
+  /** The largest side of a screenshot rendered in one piece, pixels. */
+  static constexpr int MaxOnePieceSide = 8192;
+  /** The most pixels of a screenshot rendered in one piece (8K UHD fits). */
+  static constexpr double MaxOnePiecePixels = 7680.0 * 4320.0;
+
 protected:
   vtkSMStylizeViewProxy() = default;
+
+  /**
+   * As vtkSMViewProxy; a magnified capture with a style on renders in one piece where the
+   * window can hold it (see the class description).
+   */
+  vtkImageData* CaptureWindowInternal(int magnificationX, int magnificationY) override;
   ~vtkSMStylizeViewProxy() override = default;
 
   /** Sets the view's FreezeBackground and pushes it at once. */
