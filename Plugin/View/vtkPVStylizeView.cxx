@@ -155,19 +155,6 @@ void vtkPVStylizeView::SetFreezeBackground(int freeze)
 }
 
 //------------------------------------------------------------------------------
-void vtkPVStylizeView::SetWindowScale(int x, int y)
-{
-  x = std::max(1, std::min(64, x));
-  y = std::max(1, std::min(64, y));
-  if (x != this->WindowScale[0] || y != this->WindowScale[1])
-  {
-    this->WindowScale[0] = x;
-    this->WindowScale[1] = y;
-    this->Modified();
-  }
-}
-
-//----------------------------------------------------------------------------
 void vtkPVStylizeView::ReleasePassResources(vtkStylizeStylePass* keep)
 {
   vtkRenderWindow* window = this->GetRenderWindow();

@@ -115,9 +115,10 @@ public:
   /**
    * The styles' window scale (vtkStylizeStylePass::SetWindowScale): vtkSMStylizeViewProxy sets
    * it to the magnification while it renders a screenshot larger than the view in one piece,
-   * so that the picture is the magnified one. In x and y, each from 1 to 64; default (1, 1).
+   * so that the picture is the magnified one. In x and y (the passes clamp each to [1, 64]);
+   * default (1, 1).
    */
-  void SetWindowScale(int x, int y);
+  vtkSetVector2Macro(WindowScale, int);
   vtkGetVector2Macro(WindowScale, int);
 
   /** The style pass in use (nullptr for the style None). */

@@ -20,8 +20,7 @@ import os
 import subprocess
 import sys
 
-import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkstylize_testing import vtkStylizeImageMetrics as M
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 pvbatch, out = sys.argv[1], sys.argv[2]
@@ -34,13 +33,11 @@ if result.returncode != 0 or "rendered" not in result.stdout:
                                                     (result.stdout + result.stderr)[-3000:]))
 
 
-def load(path):
+def read(path):
     reader = vtkPNGReader()
     reader.SetFileName(path)
     reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3].astype(int)
+    return reader.GetOutput()
 
 
 failures = []
@@ -52,18 +49,20 @@ for name in ["comic", "pixel", "sketch"]:
         stem = "%s-%s-%s" % (prefix, name, target)
         if not os.path.exists(stem + "-direct.png"):
             continue
-        magnified, direct = load(stem + "-magnified.png"), load(stem + "-direct.png")
-        if magnified.shape != direct.shape:
-            failures.append("%s: %s against %s" % (stem, magnified.shape, direct.shape))
+        magnified, direct = read(stem + "-magnified.png"), read(stem + "-direct.png")
+        if magnified.GetDimensions() != direct.GetDimensions():
+            failures.append("%s: %s against %s" % (stem, magnified.GetDimensions(),
+                                                   direct.GetDimensions()))
             continue
-        differ = int((np.abs(magnified - direct).max(axis=2) > 16).sum())
+        differ = M.CountDifferences(magnified, direct, 16.0)
         print("| %s | %s | %s | %d |" % (name, target, factor, differ))
         if differ:
             failures.append("%s %s: %d pixels differ from the direct render" % (name, target,
                                                                                 differ))
-    before = load("%s-%s-before.png" % (prefix, name))
-    after = load("%s-%s-after.png" % (prefix, name))
-    if before.shape != after.shape or np.any(before != after):
+    before = read("%s-%s-before.png" % (prefix, name))
+    after = read("%s-%s-after.png" % (prefix, name))
+    if before.GetDimensions() != after.GetDimensions() or \
+            M.MaximumDifference(before, after) != 0.0:
         failures.append("%s: the view changed after the magnified screenshots" % name)
 if failures:
     sys.exit("FAIL:\n" + "\n".join(failures))
