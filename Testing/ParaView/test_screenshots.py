@@ -17,20 +17,13 @@ in one piece (vtkSMStylizeViewProxy). render_screenshots.py saves each style mag
   before exactly.
 """
 import os
-import subprocess
 import sys
 
 from vtkstylize_testing import vtkStylizeImageMetrics as M
 from vtkmodules.vtkIOImage import vtkPNGReader
+from pvbatch_script import run_render_script
 
-pvbatch, out = sys.argv[1], sys.argv[2]
-os.makedirs(out, exist_ok=True)
-script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "render_screenshots.py")
-prefix = os.path.join(out, "shot")
-result = subprocess.run([pvbatch, script, prefix], capture_output=True, text=True, timeout=600)
-if result.returncode != 0 or "rendered" not in result.stdout:
-    sys.exit("FAIL: pvbatch exited with %d:\n%s" % (result.returncode,
-                                                    (result.stdout + result.stderr)[-3000:]))
+prefix = run_render_script(sys.argv[1], "render_screenshots.py", sys.argv[2], "shot")
 
 
 def read(path):

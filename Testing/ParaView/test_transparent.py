@@ -18,30 +18,15 @@ the background): the sketch's paper turned transparent inside the objects and th
 outlines thickened (2,480 pixels, as the issue measured it).
 """
 import os
-import subprocess
 import sys
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
 
-pvbatch, out = sys.argv[1], sys.argv[2]
-os.makedirs(out, exist_ok=True)
-script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "render_transparent.py")
-prefix = os.path.join(out, "transparent")
-result = subprocess.run([pvbatch, script, prefix], capture_output=True, text=True, timeout=600)
-if result.returncode != 0 or "rendered" not in result.stdout:
-    sys.exit("FAIL: pvbatch exited with %d:\n%s" % (result.returncode,
-                                                    (result.stdout + result.stderr)[-3000:]))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+from pvbatch_script import run_render_script  # noqa: E402
+from stylize_png import png_array as load  # noqa: E402
 
-
-def load(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1).astype(float)
+prefix = run_render_script(sys.argv[1], "render_transparent.py", sys.argv[2], "transparent")
 
 
 background = np.array([0.32, 0.34, 0.43]) * 255.0  # stylize_pv_scene.BACKGROUND

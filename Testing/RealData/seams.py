@@ -25,8 +25,9 @@ import subprocess
 import sys
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+from stylize_png import png_array  # noqa: E402
 
 exe, data, out = sys.argv[1], sys.argv[2], sys.argv[3]
 os.makedirs(out, exist_ok=True)
@@ -36,21 +37,12 @@ CASES = [("fandisk", 160, 120, 2), ("fandisk", 163, 121, 3), ("fandisk", 101, 77
          ("fandisk", 160, 120, 8), ("bunny", 163, 121, 3), ("bunny", 101, 77, 5)]
 
 
-def load(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3].astype(int)
-
-
 def render(args, path):
     result = subprocess.run([exe] + args + ["--no-annotations", "--output", path],
                             capture_output=True, text=True, timeout=300)
     if result.returncode != 0:
         sys.exit("FAIL: %s: %s" % (" ".join(args), (result.stdout + result.stderr)[-2000:]))
-    return load(path)
+    return png_array(path)[:, :, :3]
 
 
 failures = []
