@@ -95,19 +95,14 @@ void vtkComicPass::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-void vtkComicPass::Render(const vtkRenderState* s)
+bool vtkComicPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
 {
   // Black and white: the tone is the light alone; tinted: the lit colour keeps the data's hue.
   this->GetLightingPass()->SetMonochrome(!this->Tinted);
-  Frame frame;
-  if (!this->BeginFrame(s, frame))
-  {
-    return;
-  }
   const Plan plan = this->PlanFrame(frame.Interactive);
   if (!this->RenderScene(s, plan.Scene))
   {
-    return;
+    return false;
   }
   this->SetShaderDefines(plan.Defines);
   if (plan.ColorEdges)
@@ -127,7 +122,7 @@ void vtkComicPass::Render(const vtkRenderState* s)
     this->FreeDirectionField();
   }
   this->RenderCompositeStage(frame, plan);
-  this->EndFrame(s);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -286,13 +286,14 @@ public:
   vtkGetMacro(ReferenceHeight, double);
   ///@}
 
-  /**
-   * Renders the comic image of the renderer's props: the scene into the G-buffer, the colour
-   * edges (when their weight is not 0), then edges, pattern and ink into the output.
-   */
-  void Render(const vtkRenderState* s) override;
-
 protected:
+  /**
+   * The comic image of a scene (the opaque one, then each translucent layer): the scene into the
+   * G-buffer, the colour edges (when their weight is not 0), then edges, pattern and ink into
+   * the output.
+   */
+  bool RenderStyle(const vtkRenderState* s, const Frame& frame) override;
+
   vtkComicPass();
   ~vtkComicPass() override;
 

@@ -322,13 +322,8 @@ double MedianSpacing(const std::vector<float>& rgba)
 }
 
 //------------------------------------------------------------------------------
-void vtkPixelArtPass::Render(const vtkRenderState* s)
+bool vtkPixelArtPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
 {
-  Frame frame;
-  if (!this->BeginFrame(s, frame))
-  {
-    return;
-  }
   const Plan plan = this->PlanFrame(s, frame);
   this->Internals->Block[0] = plan.Block[0];
   this->Internals->Block[1] = plan.Block[1];
@@ -336,7 +331,7 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   this->Internals->Grid[1] = plan.Grid[1];
   if (!this->RenderScene(s, plan.Scene))
   {
-    return;
+    return false;
   }
   this->UpdatePalette(frame, plan);
   this->SetShaderDefines(plan.Defines);
@@ -352,7 +347,7 @@ void vtkPixelArtPass::Render(const vtkRenderState* s)
   vtkTextureObject* edges = plan.Edges ? this->RenderEdgeStages(frame, plan, inputs) : nullptr;
   this->RenderArtStage(frame, plan, inputs, edges);
   this->RenderUpsampleStage(frame, plan, inputs);
-  this->EndFrame(s);
+  return true;
 }
 
 //------------------------------------------------------------------------------

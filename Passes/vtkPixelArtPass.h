@@ -367,14 +367,15 @@ public:
   /** The 16-colour DawnBringer palette, RGB in [0, 1], 48 values. */
   static const double* GetPalette16() VTK_SIZEHINT(48);
 
-  /**
-   * Renders the pixel-art image: the scene into the G-buffer at the art resolution (FAST) or
-   * at full resolution then reduced per block (FAITHFUL), the edges, the art pixels, then the
-   * upsample into the output. The lighting pass's default model is PixelArt.
-   */
-  void Render(const vtkRenderState* s) override;
-
 protected:
+  /**
+   * The pixel-art image of a scene (the opaque one, then each translucent layer): the scene into
+   * the G-buffer at the art resolution (FAST) or at full resolution then reduced per block
+   * (FAITHFUL), the edges, the art pixels, then the upsample into the output. The lighting
+   * pass's default model is PixelArt.
+   */
+  bool RenderStyle(const vtkRenderState* s, const Frame& frame) override;
+
   vtkPixelArtPass();
   ~vtkPixelArtPass() override;
 

@@ -465,13 +465,8 @@ int vtkSketchPass::GetGuardAlignment(const Frame&)
 }
 
 //------------------------------------------------------------------------------
-void vtkSketchPass::Render(const vtkRenderState* s)
+bool vtkSketchPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
 {
-  Frame frame;
-  if (!this->BeginFrame(s, frame))
-  {
-    return;
-  }
   const Plan plan = this->PlanFrame(frame);
   if (plan.Model)
   {
@@ -479,7 +474,7 @@ void vtkSketchPass::Render(const vtkRenderState* s)
   }
   if (!this->RenderScene(s, plan.Scene))
   {
-    return;
+    return false;
   }
   this->SetShaderDefines(plan.Defines);
   if (plan.Strokes)
@@ -497,7 +492,7 @@ void vtkSketchPass::Render(const vtkRenderState* s)
     this->FreeTexture(BLUR_Y);
   }
   this->RenderFinalStage(frame, plan);
-  this->EndFrame(s);
+  return true;
 }
 
 //------------------------------------------------------------------------------

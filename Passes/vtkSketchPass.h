@@ -433,14 +433,14 @@ public:
    */
   static void GenerateNoise(int kind, int size, vtkFloatArray* out);
 
-  /**
-   * Renders the sketch: the scene into the G-buffer (Standard lighting by default, FULL
-   * precision), the raw directions, smoothing and fill, fallbacks, the tone's blur, then
-   * strokes and tone into the output.
-   */
-  void Render(const vtkRenderState* s) override;
-
 protected:
+  /**
+   * The sketch of a scene (the opaque one, then each translucent layer): the scene into the
+   * G-buffer (Standard lighting by default, FULL precision), the raw directions, smoothing and
+   * fill, fallbacks, the tone's blur, then strokes and tone into the output.
+   */
+  bool RenderStyle(const vtkRenderState* s, const Frame& frame) override;
+
   vtkSketchPass();
   ~vtkSketchPass() override;
 

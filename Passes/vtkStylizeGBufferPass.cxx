@@ -11,6 +11,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
 #include "vtkOpenGLError.h"
+#include "vtkInformation.h"
+#include "vtkOpenGLActor.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -68,7 +70,18 @@ public:
     const GLfloat zero[4] = { 0.f, 0.f, 0.f, 0.f };
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     float flat[4];
-    if (ren->Transparent() || !erased)
+    if (this->Layer)
+    {
+      // A translucent layer: no surface anywhere yet (alpha 0; the colour of a flat background
+      // for the stages that read colour across a silhouette).
+      if (!vtkStylizeGBufferPass::GetFlatBackground(ren, flat))
+      {
+        std::fill(flat, flat + 3, 0.f);
+      }
+      flat[3] = 0.f;
+      glClearBufferfv(GL_COLOR, 0, flat);
+    }
+    else if (ren->Transparent() || !erased)
     {
       glClearBufferfv(GL_COLOR, 0, zero);
     }
@@ -77,7 +90,7 @@ public:
       flat[3] = static_cast<float>(ren->GetBackgroundAlpha());
       glClearBufferfv(GL_COLOR, 0, flat);
     }
-    if (!erased)
+    if (!erased || this->Layer)
     {
       const GLfloat one = 1.f;
       ostate->vtkglDepthMask(GL_TRUE);
@@ -89,6 +102,7 @@ public:
     }
   }
   unsigned int Attachments = 1;
+  bool Layer = false; // clears for a translucent layer
 
 protected:
   vtkStylizeGBufferClearPass() = default;
@@ -151,6 +165,7 @@ class vtkStylizeGBufferPass::vtkInternals
 {
 public:
   vtkNew<vtkStylizeGBufferClearPass> ClearPass;
+  vtkNew<vtkStylizeGBufferClearPass> LayerClearPass;
   vtkStylizeScreenQuad CompositeQuad;
   vtkStylizeScreenQuad ReconstructQuad;
   vtkNew<vtkMatrix4x4> InverseView;
@@ -210,6 +225,17 @@ vtkStylizeGBufferPass::vtkStylizeGBufferPass()
   after->AddItem(translucent);
   after->AddItem(volumetric);
   this->AfterSequence->SetPasses(after);
+  this->VolumeSequence = vtkSequencePass::New();
+  vtkNew<vtkRenderPassCollection> volumes;
+  volumes->AddItem(volumetric);
+  this->VolumeSequence->SetPasses(volumes);
+  this->LayerSequence = vtkSequencePass::New();
+  vtkNew<vtkRenderPassCollection> layer;
+  this->Internals->LayerClearPass->Layer = true;
+  layer->AddItem(this->Internals->LayerClearPass);
+  layer->AddItem(lights);
+  layer->AddItem(translucent);
+  this->LayerSequence->SetPasses(layer);
   this->OverlayPass = vtkOverlayPass::New();
   this->ShaderStageTime.Modified();
 }
@@ -225,6 +251,8 @@ vtkStylizeGBufferPass::~vtkStylizeGBufferPass()
   this->GeometryCameraPass->Delete();
   this->GeometrySequence->Delete();
   this->AfterSequence->Delete();
+  this->VolumeSequence->Delete();
+  this->LayerSequence->Delete();
   this->OverlayPass->Delete();
 }
 
@@ -361,7 +389,8 @@ void vtkStylizeGBufferPass::FreeTextures(vtkWindow* w)
 {
   for (vtkTextureObject** tex : { &this->ColorTexture, &this->NormalTexture,
          &this->PositionTexture, &this->LinearDepthTexture, &this->DepthTexture,
-         &this->DirectionTexture, &this->ImageColorTexture, &this->ImageDepthTexture })
+         &this->DirectionTexture, &this->ImageColorTexture, &this->ImageDepthTexture,
+         &this->PeelDepthTexture })
   {
     vtkStylizeShaderUtilities::FreeTexture(*tex, w);
   }
@@ -411,12 +440,19 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   this->LogarithmicDepth = !this->SceneFromImage && !camera->GetParallelProjection() &&
     this->DepthRange[0] > 0.0 &&
     this->DepthRange[1] > this->DepthRange[0] * this->LogarithmicDepthRatio;
+  if (this->LayerIndex >= 0)
+  {
+    // A translucent layer's depth is compared with the opaque scene's: the same mapping.
+    this->LogarithmicDepth = this->LayerOpaque->LogarithmicDepth;
+  }
+  const bool layer = this->LayerIndex >= 0;
   if (this->Channels != this->BuiltChannels || this->PositionSpace != this->BuiltPositionSpace ||
-    this->LogarithmicDepth != this->BuiltLogarithmicDepth)
+    this->LogarithmicDepth != this->BuiltLogarithmicDepth || layer != this->BuiltLayer)
   {
     this->BuiltChannels = this->Channels;
     this->BuiltPositionSpace = this->PositionSpace;
     this->BuiltLogarithmicDepth = this->LogarithmicDepth;
+    this->BuiltLayer = layer;
     this->ShaderStageTime.Modified();
   }
   if (this->GeometryResolution[0] > 0 && this->GeometryResolution[1] > 0)
@@ -426,7 +462,17 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   }
   this->GeometrySize[0] = w;
   this->GeometrySize[1] = h;
+  if (this->LayerIndex > 0)
+  {
+    // Depth peeling: the previous layer's depth becomes the one this layer lies behind.
+    std::swap(this->DepthTexture, this->PeelDepthTexture);
+  }
   this->AllocateTextures(renWin, w, h);
+  if (this->LayerIndex > 0)
+  {
+    vtkStylizeShaderUtilities::EnsureScreenTexture(
+      this->PeelDepthTexture, renWin, w, h, GL_DEPTH_COMPONENT32F, false);
+  }
 
   vtkOpenGLFramebufferObject* fbo = this->FrameBufferObject;
   fbo->SaveCurrentBindingsAndBuffers();
@@ -457,6 +503,7 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   }
   this->NumberOfAttachments = n;
   this->Internals->ClearPass->Attachments = n;
+  this->Internals->LayerClearPass->Attachments = n;
   fbo->AddDepthAttachment(this->DepthTexture);
   fbo->ActivateDrawBuffers(n);
   // VTK's state cache compares the list with the first n entries of the last list set, whatever
@@ -492,6 +539,10 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
 
   ScopedScreenTransform screen(camera, this->GeometryScreenTransform);
   this->PreRender(&sfbo);
+  if (layer)
+  {
+    this->BeginLayer(&sfbo);
+  }
   if (this->LightingPass)
   {
     this->LightingPass->RenderWithLighting(&sfbo, this->GeometryCameraPass);
@@ -501,6 +552,10 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
     this->GeometryCameraPass->Render(&sfbo);
   }
   this->NumberOfRenderedProps += this->GeometryCameraPass->GetNumberOfRenderedProps();
+  if (layer)
+  {
+    this->EndLayer(&sfbo);
+  }
   this->PostRender(&sfbo);
   ++this->GeometryRenders;
 
@@ -576,17 +631,118 @@ void vtkStylizeGBufferPass::RenderAfterGeometry(const vtkRenderState* s)
 
   const double shift[4] = { 1.0, 1.0, this->AfterScreenShift[0], this->AfterScreenShift[1] };
   ScopedScreenTransform screen(ren->GetActiveCamera(), shift);
+  // (a hardware selection draws everything: translucent props stay pickable)
+  vtkSequencePass* after =
+    this->DrawTranslucent || ren->GetSelector() ? this->AfterSequence : this->VolumeSequence;
   if (this->LightingPass)
   {
-    this->LightingPass->RenderWithLighting(s, this->AfterSequence);
+    this->LightingPass->RenderWithLighting(s, after);
   }
   else
   {
-    this->AfterSequence->Render(s);
+    after->Render(s);
   }
-  this->NumberOfRenderedProps += this->AfterSequence->GetNumberOfRenderedProps();
+  this->NumberOfRenderedProps += after->GetNumberOfRenderedProps();
   this->OverlayPass->Render(s);
   this->NumberOfRenderedProps += this->OverlayPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::HasTranslucentGeometry(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (prop && prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::RenderTranslucentLayer(
+  const vtkRenderState* s, vtkStylizeGBufferPass* opaque, int index)
+{
+  if (!opaque || !opaque->GetDepthTexture() || index < 0 || (index > 0 && !this->DepthTexture))
+  {
+    return false;
+  }
+  vtkRenderPass* image = this->SceneImagePass;
+  this->SceneImagePass = nullptr; // a layer always comes from the geometry
+  this->LayerIndex = index;
+  this->LayerOpaque = opaque;
+  this->LayerOpaqueDepth = opaque->GetDepthTexture();
+  this->LayerHasSamples = false;
+  const bool rendered = this->RenderGeometry(s);
+  this->LayerIndex = -1;
+  this->LayerOpaque = nullptr;
+  this->LayerOpaqueDepth = nullptr;
+  this->SceneImagePass = image;
+  return rendered && this->LayerHasSamples;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::BeginLayer(const vtkRenderState* s)
+{
+  vtkOpenGLRenderWindow* renWin =
+    static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  this->GeometryCameraPass->SetDelegatePass(this->LayerSequence);
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    // Translucent actors write the depth (as vtkSSAOPass has them do): each pixel keeps one
+    // surface, the nearest the shaders let through.
+    vtkProp* prop = s->GetPropArray()[i];
+    vtkInformation* info = prop ? prop->GetPropertyKeys() : nullptr;
+    if (info)
+    {
+      info->Set(vtkOpenGLActor::GLDepthMaskOverride(), 1);
+    }
+  }
+  this->LayerBlend = ostate->GetEnumState(GL_BLEND);
+  ostate->vtkglDisable(GL_BLEND);
+  this->LayerOpaqueDepth->Activate();
+  if (this->LayerIndex > 0)
+  {
+    this->PeelDepthTexture->Activate();
+  }
+  if (!this->LayerQuery)
+  {
+    glGenQueries(1, &this->LayerQuery);
+  }
+  glBeginQuery(GL_ANY_SAMPLES_PASSED, this->LayerQuery);
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::EndLayer(const vtkRenderState* s)
+{
+  vtkOpenGLRenderWindow* renWin =
+    static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
+  glEndQuery(GL_ANY_SAMPLES_PASSED);
+  GLuint samples = 0;
+  glGetQueryObjectuiv(this->LayerQuery, GL_QUERY_RESULT, &samples);
+  this->LayerHasSamples = samples != 0;
+  if (this->LayerIndex > 0)
+  {
+    this->PeelDepthTexture->Deactivate();
+  }
+  this->LayerOpaqueDepth->Deactivate();
+  if (this->LayerBlend)
+  {
+    renWin->GetState()->vtkglEnable(GL_BLEND);
+  }
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    vtkInformation* info = prop ? prop->GetPropertyKeys() : nullptr;
+    if (info)
+    {
+      info->Remove(vtkOpenGLActor::GLDepthMaskOverride());
+    }
+  }
+  this->GeometryCameraPass->SetDelegatePass(this->GeometrySequence);
 }
 
 //------------------------------------------------------------------------------
@@ -1056,6 +1212,13 @@ void vtkStylizeGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   this->GeometryCameraPass->ReleaseGraphicsResources(w);
   this->AfterSequence->ReleaseGraphicsResources(w);
+  this->LayerSequence->ReleaseGraphicsResources(w);
+  if (this->LayerQuery && w)
+  {
+    // (the context is current while VTK releases graphics resources)
+    glDeleteQueries(1, &this->LayerQuery);
+  }
+  this->LayerQuery = 0;
   this->OverlayPass->ReleaseGraphicsResources(w);
   if (this->LightingPass)
   {
@@ -1229,7 +1392,13 @@ bool vtkStylizeGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
     }
     code += line + "\n";
   }
-  if (this->LogarithmicDepth) // after VTK's own depth code (//VTK::Depth::Impl): overrides it
+  // The depth the G-buffer stores: the window depth (VTK's own when its shader writes one) or,
+  // after VTK's depth code (//VTK::Depth::Impl), the logarithmic depth that overrides it.
+  // (VTK's template names gl_FragDepth in a comment: look for an assignment)
+  std::string depth = fragmentShader.find("gl_FragDepth =") != std::string::npos
+    ? "gl_FragDepth"
+    : "gl_FragCoord.z";
+  if (this->LogarithmicDepth)
   {
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
       "//VTK::System::Dec\nuniform vec2 stylizeLogDepthRange;\n", false);
@@ -1241,6 +1410,25 @@ bool vtkStylizeGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
     code += "  gl_FragDepth = clamp(log(max(" + z +
       ", stylizeLogDepthRange.x) / stylizeLogDepthRange.x) / log(stylizeLogDepthRange.y / "
       "stylizeLogDepthRange.x), 0.0, 1.0);\n";
+    depth = "gl_FragDepth";
+  }
+  if (this->LayerIndex >= 0)
+  {
+    // A translucent layer (RenderTranslucentLayer()): only what lies in front of the opaque
+    // depth and, when peeling, behind the previous layer's.
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
+      "//VTK::System::Dec\nuniform sampler2D stylizeOpaqueDepth;\n"
+      "uniform sampler2D stylizePeelDepth;\nuniform int stylizePeel;\n",
+      false);
+    code += "  {\n"
+            "    ivec2 stylizeTexel = ivec2(gl_FragCoord.xy);\n"
+            "    float stylizeZ = " + depth + ";\n"
+            "    if (stylizeZ > texelFetch(stylizeOpaqueDepth, stylizeTexel, 0).r ||\n"
+            "      (stylizePeel == 1 && stylizeZ <= texelFetch(stylizePeelDepth, stylizeTexel, 0).r))\n"
+            "    {\n"
+            "      discard;\n"
+            "    }\n"
+            "  }\n";
   }
   vtkShaderProgram::Substitute(fragmentShader, GBufferTag, code);
   return true;
@@ -1272,6 +1460,14 @@ bool vtkStylizeGBufferPass::SetShaderParameters(
   else
   {
     this->FrameBufferObject->ActivateDrawBuffers(1);
+  }
+  if (this->LayerIndex >= 0 && program->IsUniformUsed("stylizeOpaqueDepth"))
+  {
+    program->SetUniformi("stylizeOpaqueDepth", this->LayerOpaqueDepth->GetTextureUnit());
+    const bool peel = this->LayerIndex > 0;
+    program->SetUniformi("stylizePeel", peel ? 1 : 0);
+    program->SetUniformi("stylizePeelDepth",
+      (peel ? this->PeelDepthTexture : this->LayerOpaqueDepth)->GetTextureUnit());
   }
   if (program->IsUniformUsed("stylizeLogDepthRange"))
   {

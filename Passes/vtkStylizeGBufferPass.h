@@ -273,10 +273,43 @@ public:
   void CompositeToOutput(const vtkRenderState* s);
 
   /**
-   * Renders translucent geometry and volumes (lit by the lighting pass, depth-tested against the
-   * composited depth), then the 2D overlay, into the output framebuffer.
+   * Renders translucent geometry (unless DrawTranslucent is off) and volumes (lit by the lighting
+   * pass, depth-tested against the composited depth), then the 2D overlay, into the output
+   * framebuffer.
    */
   void RenderAfterGeometry(const vtkRenderState* s);
+
+  /**
+   * Renders one translucent layer of the scene into this G-buffer, for a style that draws
+   * translucent surfaces itself (vtkStylizeStylePass::TranslucentLayers). The props with
+   * translucent polygonal geometry are rendered lit by the lighting pass, with blending off and
+   * the depth written, so that each pixel keeps one surface: the nearest that lies in front of
+   * `opaque`'s depth (the opaque G-buffer of the same frame, rendered at the same size) and, for
+   * `index` > 0, behind this G-buffer's previous layer (depth peeling: layer `index` - 1 must be
+   * the last one rendered). The depth is stored in `opaque`'s mapping (window or logarithmic;
+   * an opaque scene from an image has the image's window depth). The colour's alpha is that surface's opacity, 0 where the layer has
+   * no surface; the other channels are as for opaque geometry. Channels, precision, resolution
+   * and screen transform are this pass's own settings: give them `opaque`'s. Returns false
+   * when the layer holds no surface (an occlusion query counts its samples) or nothing could be
+   * rendered.
+   */
+  bool RenderTranslucentLayer(const vtkRenderState* s, vtkStylizeGBufferPass* opaque, int index);
+
+  /**
+   * Whether any visible prop of the render state has translucent polygonal geometry (what
+   * RenderTranslucentLayer() renders).
+   */
+  static bool HasTranslucentGeometry(const vtkRenderState* s);
+
+  ///@{
+  /**
+   * Whether RenderAfterGeometry() draws the translucent geometry, plain (lit, blended over the
+   * composited picture). A style that drew the translucent layers itself turns it off for the
+   * frame. A hardware selection (picking) draws them regardless. Default on.
+   */
+  vtkSetMacro(DrawTranslucent, bool);
+  vtkGetMacro(DrawTranslucent, bool);
+  ///@}
 
   ///@{
   /** The G-buffer textures of the last frame (nullptr for channels not allocated). */
@@ -379,6 +412,15 @@ protected:
    * drew a surface; false elsewhere.
    */
   bool CompositeChannelSource(vtkOpenGLRenderWindow* renWin, bool rendered, int w, int h);
+  ///@{
+  /**
+   * Around a translucent layer's geometry render (RenderTranslucentLayer()): the layer's
+   * sequence, the props' depth writes, blending off, the depth textures the shaders test and the
+   * occlusion query; EndLayer() restores all of it.
+   */
+  void BeginLayer(const vtkRenderState* s);
+  void EndLayer(const vtkRenderState* s);
+  ///@}
   /** glReadPixels of a buffer of the last frame inside rect (x, y, width, height), as floats. */
   void ReadBuffer(int buffer, const int rect[4], float* out);
 
@@ -418,6 +460,20 @@ protected:
   vtkCameraPass* GeometryCameraPass = nullptr;
   vtkSequencePass* GeometrySequence = nullptr;
   vtkSequencePass* AfterSequence = nullptr;
+  vtkSequencePass* VolumeSequence = nullptr; // AfterSequence without the translucent geometry
+  vtkSequencePass* LayerSequence = nullptr;  // a translucent layer's geometry
+  bool DrawTranslucent = true;
+  // RenderTranslucentLayer(): the layer being rendered (-1: opaque geometry), the opaque depth
+  // it lies in front of, whether the shaders peel (built into them) and the previous layer's
+  // depth.
+  int LayerIndex = -1;
+  vtkStylizeGBufferPass* LayerOpaque = nullptr;
+  vtkTextureObject* LayerOpaqueDepth = nullptr;
+  bool BuiltLayer = false;
+  vtkTextureObject* PeelDepthTexture = nullptr;
+  unsigned int LayerQuery = 0;
+  bool LayerBlend = false;       // GL_BLEND before the layer's render
+  bool LayerHasSamples = false;  // the last layer's query result
   vtkRenderPass* OverlayPass = nullptr;
 
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;

@@ -37,6 +37,15 @@ class vtkStylizeStylePass::vtkInternals
 public:
   vtkNew<vtkStylizeLightingPass> Lighting;
   vtkNew<vtkStylizeGBufferPass> GBuffer;
+  // Translucent layers (RenderTranslucentLayers()): their G-buffer, the scene the stages read
+  // (GBuffer, or LayerGBuffer while a layer is stylized), the layer's number (0: opaque), the
+  // layers' composite (premultiplied, front to back) and its framebuffer and program.
+  vtkNew<vtkStylizeGBufferPass> LayerGBuffer;
+  vtkStylizeGBufferPass* Scene = nullptr;
+  int Layer = 0;
+  vtkTextureObject* LayerTexture = nullptr;
+  vtkOpenGLFramebufferObject* LayerFramebuffer = nullptr;
+  vtkStylizeScreenQuad LayerQuad;
 
   // Shader assembly: the style's source, its stages and the last frame's defines.
   std::string StyleSource;
@@ -76,6 +85,16 @@ public:
     for (vtkTextureObject*& t : this->Textures)
     {
       vtkStylizeShaderUtilities::FreeTexture(t, w);
+    }
+    vtkStylizeShaderUtilities::FreeTexture(this->LayerTexture, w);
+    if (this->LayerFramebuffer)
+    {
+      if (w)
+      {
+        this->LayerFramebuffer->ReleaseGraphicsResources(w);
+      }
+      this->LayerFramebuffer->Delete();
+      this->LayerFramebuffer = nullptr;
     }
     this->FreeField(w);
   }
@@ -161,6 +180,8 @@ vtkStylizeStylePass::vtkStylizeStylePass(int lightingModel, const char* styleSou
   vtkInternals& in = *this->Internals;
   in.Lighting->SetModel(lightingModel);
   in.GBuffer->SetLightingPass(in.Lighting);
+  in.LayerGBuffer->SetLightingPass(in.Lighting);
+  in.Scene = in.GBuffer;
   in.StyleSource = styleSource;
   in.MainCall = mainCall;
   in.StageDefines = std::move(stageDefines);
@@ -270,7 +291,8 @@ bool vtkStylizeStylePass::GetBackgroundCulling()
 vtkIdType vtkStylizeStylePass::GetTextureBytes()
 {
   vtkInternals& in = *this->Internals;
-  vtkIdType total = in.GBuffer->GetTextureBytes();
+  vtkIdType total = in.GBuffer->GetTextureBytes() + in.LayerGBuffer->GetTextureBytes() +
+    vtkStylizeShaderUtilities::TextureBytes(in.LayerTexture);
   for (vtkTextureObject* t : in.Textures)
   {
     total += vtkStylizeShaderUtilities::TextureBytes(t);
@@ -414,8 +436,23 @@ void vtkStylizeStylePass::PlanGuardBand(Frame& frame)
 //------------------------------------------------------------------------------
 bool vtkStylizeStylePass::RenderScene(const vtkRenderState* s, const SceneRequest& request)
 {
-  vtkStylizeGBufferPass* gbuffer = this->Internals->GBuffer;
-  gbuffer->SetSceneImagePass(this->DelegatePass);
+  vtkStylizeGBufferPass* gbuffer = this->Internals->Scene;
+  const int layer = this->Internals->Layer;
+  if (layer > 0)
+  {
+    // A translucent layer: the opaque G-buffer's user settings too, and the lighting of the
+    // opaque scene (for a scene from an image, the one that lit the processes' own G-buffers).
+    vtkStylizeGBufferPass* opaque = this->Internals->GBuffer;
+    gbuffer->SetPrecision(opaque->GetPrecision());
+    vtkStylizeGBufferPass* source = opaque->GetChannelSource();
+    gbuffer->SetLightingPass(this->DelegatePass && source && source->GetLightingPass()
+        ? source->GetLightingPass()
+        : this->Internals->Lighting.Get());
+  }
+  else
+  {
+    gbuffer->SetSceneImagePass(this->DelegatePass);
+  }
   gbuffer->SetChannels(request.Channels);
   gbuffer->SetNormalPrecision(request.NormalPrecision);
   if (request.Channels & vtkStylizeGBufferPass::POSITION)
@@ -439,14 +476,123 @@ bool vtkStylizeStylePass::RenderScene(const vtkRenderState* s, const SceneReques
   }
   gbuffer->SetAfterScreenShift(request.AfterShift[0], request.AfterShift[1]);
   this->Internals->TimeBegin();
-  const bool rendered = gbuffer->RenderGeometry(s);
-  this->Internals->TimeEnd("SCENE");
-  if (!rendered)
+  const bool rendered = layer > 0
+    ? gbuffer->RenderTranslucentLayer(s, this->Internals->GBuffer, layer - 1)
+    : gbuffer->RenderGeometry(s);
+  this->Internals->TimeEnd(layer > 0 ? "LAYER_SCENE" : "SCENE");
+  if (!rendered && layer == 0)
   {
     this->EndFrame(s);
-    return false;
   }
-  return true;
+  return rendered;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::Render(const vtkRenderState* s)
+{
+  Frame frame;
+  if (!this->BeginFrame(s, frame) || !this->RenderStyle(s, frame))
+  {
+    return; // the frame was ended
+  }
+  this->RenderTranslucentLayers(s, frame);
+  this->EndFrame(s);
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::RenderTranslucentLayers(const vtkRenderState* s, const Frame& frame)
+{
+  vtkInternals& in = *this->Internals;
+  this->LastTranslucentLayers = 0;
+  // A scene from an image holds its translucent geometry already, unless the processes' own
+  // G-buffers (the channel source: ParaView's per-rank pass) left it out for the style to draw
+  // from the props here; a selection renders ids.
+  vtkStylizeGBufferPass* source = in.GBuffer->GetChannelSource();
+  const bool fromProps = !this->DelegatePass || (source && !source->GetDrawTranslucent());
+  const bool layers = this->TranslucentLayers > 0 && fromProps &&
+    !frame.Renderer->GetSelector() && vtkStylizeGBufferPass::HasTranslucentGeometry(s);
+  in.GBuffer->SetDrawTranslucent(!layers);
+  if (!layers)
+  {
+    return;
+  }
+  // The layers are stylized into a texture of the stages' size (the frame's viewport at the
+  // origin), composited front to back: each adds what the layers in front let through.
+  vtkOpenGLRenderWindow* win = frame.Window;
+  vtkOpenGLState* ostate = win->GetState();
+  vtkStylizeShaderUtilities::EnsureScreenTexture(
+    in.LayerTexture, win, frame.Size[0], frame.Size[1], GL_RGBA16F, false);
+  if (!in.LayerFramebuffer)
+  {
+    in.LayerFramebuffer = vtkOpenGLFramebufferObject::New();
+    in.LayerFramebuffer->SetContext(win);
+  }
+  vtkOpenGLFramebufferObject* fbo = in.LayerFramebuffer;
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  fbo->AddColorAttachment(0, in.LayerTexture);
+  fbo->ActivateDrawBuffers(1);
+  {
+    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  }
+  Frame layerFrame = frame;
+  layerFrame.Origin[0] = 0;
+  layerFrame.Origin[1] = 0;
+  in.Scene = in.LayerGBuffer;
+  for (int layer = 1; layer <= this->TranslucentLayers; ++layer)
+  {
+    in.Layer = layer;
+    if (!this->RenderStyle(s, layerFrame))
+    {
+      break;
+    }
+    this->LastTranslucentLayers = layer;
+  }
+  in.Layer = 0;
+  in.Scene = in.GBuffer;
+  fbo->RemoveColorAttachments(1);
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+  if (this->LastTranslucentLayers == 0)
+  {
+    return;
+  }
+
+  // The layers over the stylized opaque scene, within the viewport (not its guard band).
+  static const std::string layersSource = std::string("#define STYLIZE_STAGE_LAYERS\n") +
+    vtkStylizeCommonFS + vtkStylizeDepthFS + vtkStylizeScreenFS;
+  vtkShaderProgram* program = in.LayerQuad.Prepare(win, layersSource, "  stylizeLayersMain();\n");
+  in.StageFailed = in.StageFailed || !program;
+  if (!program)
+  {
+    return;
+  }
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  ostate->vtkglViewport(frame.Origin[0], frame.Origin[1], frame.Size[0], frame.Size[1]);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  ostate->vtkglScissor(frame.Origin[0] + frame.Guard[0], frame.Origin[1] + frame.Guard[1],
+    frame.Size[0] - frame.Guard[0] - frame.Guard[2], frame.Size[1] - frame.Guard[1] - frame.Guard[3]);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  vtkStylizeUniforms u(program);
+  u.Texture("stylizeLayersTexture", in.LayerTexture);
+  in.TimeBegin();
+  in.LayerQuad.Render();
+  in.TimeEnd("LAYERS");
 }
 
 //------------------------------------------------------------------------------
@@ -527,7 +673,7 @@ bool vtkStylizeStylePass::RenderStage(int stage,
   // G-buffer's depth (the quad at the far plane, GL_GREATER, no depth writes) leaves the
   // background's fragments unshaded. A renderer that shades in blocks (llvmpipe, GPUs) skips a
   // block with no surface pixel instead of running the stage's branches masked.
-  vtkTextureObject* depth = in.GBuffer->GetDepthTexture();
+  vtkTextureObject* depth = in.Scene->GetDepthTexture();
   const bool skipBackground = in.Culling && coverage == SURFACE_PIXELS && depth &&
     static_cast<int>(depth->GetWidth()) == w && static_cast<int>(depth->GetHeight()) == h;
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
@@ -577,7 +723,18 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
   vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
   vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  ostate->vtkglDisable(GL_BLEND);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
+  const bool layer = in.Layer > 0;
+  if (layer)
+  {
+    // A translucent layer (premultiplied) under the layers in front of it.
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ONE_MINUS_DST_ALPHA, GL_ONE, GL_ONE_MINUS_DST_ALPHA, GL_ONE);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_BLEND);
+  }
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   // The quad covers the stages' pixels (the guard band included); the scissor keeps the
   // viewport's. `scissor` clips a box of the stages' pixels to the viewport.
@@ -620,7 +777,8 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
     // The background as the stage would write it: nothing in a layered renderer (discarded), a
     // clear for a flat one (its snapped colour, alpha 1, the far plane), else the program.
     float flat[4];
-    const bool layered = frame.Renderer->Transparent() != 0;
+    // (a translucent layer adds nothing there either)
+    const bool layered = frame.Renderer->Transparent() != 0 || layer;
     const bool clear = !layered && vtkStylizeGBufferPass::GetFlatBackground(frame.Renderer, flat);
     vtkShaderProgram* background = nullptr;
     if (!layered && !clear)
@@ -751,7 +909,7 @@ bool vtkStylizeStylePass::SceneRectangle(const Frame& frame, int margin, int rec
 //------------------------------------------------------------------------------
 void vtkStylizeStylePass::BindSceneTextures(vtkStylizeUniforms& u)
 {
-  vtkStylizeGBufferPass* g = this->Internals->GBuffer;
+  vtkStylizeGBufferPass* g = this->Internals->Scene;
   u.Texture("stylizeColorTexture", g->GetColorTexture())
     .Texture("stylizeDepthTexture", g->GetDepthTexture())
     .Texture("stylizeLinearDepthTexture", g->GetLinearDepthTexture())
@@ -763,9 +921,11 @@ void vtkStylizeStylePass::BindSceneTextures(vtkStylizeUniforms& u)
 //------------------------------------------------------------------------------
 void vtkStylizeStylePass::SetSceneOutputUniforms(vtkStylizeUniforms& u, vtkRenderer* ren)
 {
-  vtkStylizeGBufferPass* gbuffer = this->Internals->GBuffer;
+  vtkStylizeGBufferPass* gbuffer = this->Internals->Scene;
   const double* bg = gbuffer->GetImageBackground();
-  u.Int("stylizeDiscardBackground", ren->Transparent() ? 1 : 0)
+  const bool layer = this->Internals->Layer > 0;
+  u.Int("stylizeDiscardBackground", ren->Transparent() || layer ? 1 : 0)
+    .Int("stylizeTranslucentLayer", layer ? 1 : 0)
     .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0)
     .Float4("stylizeImageBackground", bg[0], bg[1], bg[2], gbuffer->GetImageBackgroundApplied() ? 1 : 0)
     .Float3("stylizeRendererBackground", ren->GetBackground()[0], ren->GetBackground()[1],
@@ -776,13 +936,13 @@ void vtkStylizeStylePass::SetSceneOutputUniforms(vtkStylizeUniforms& u, vtkRende
 //------------------------------------------------------------------------------
 void vtkStylizeStylePass::SetDepthMappingUniforms(vtkStylizeUniforms& u)
 {
-  this->Internals->GBuffer->SetDepthMappingUniforms(u.GetProgram());
+  this->Internals->Scene->SetDepthMappingUniforms(u.GetProgram());
 }
 
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkStylizeStylePass::GetSceneTexture(int buffer)
 {
-  vtkStylizeGBufferPass* g = this->Internals->GBuffer;
+  vtkStylizeGBufferPass* g = this->Internals->Scene;
   switch (buffer)
   {
     case vtkStylizeGBufferPass::COLOR_BUFFER:
@@ -862,7 +1022,9 @@ void vtkStylizeStylePass::ReleaseGraphicsResources(vtkWindow* w)
   }
   in.FreeTextures(w);
   in.FreeFramebuffer(w);
+  in.LayerQuad.Release(w);
   in.GBuffer->ReleaseGraphicsResources(w);
+  in.LayerGBuffer->ReleaseGraphicsResources(w);
   this->ReleaseStyleResources(w);
 }
 

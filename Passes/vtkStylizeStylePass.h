@@ -38,15 +38,29 @@
  * - the G-buffer's textures and the scene-output uniforms bound by name;
  * - the intermediate textures and framebuffer, and the release of all of it.
  *
- * A style's Render() reads as its pipeline:
+ * The base's Render() runs the frame: BeginFrame(), the style's pipeline on the opaque scene,
+ * the same pipeline on each translucent layer (TranslucentLayers), EndFrame(). A style's
+ * RenderStyle() is that pipeline, for one scene:
  * @code
- * Frame frame;
- * if (!this->BeginFrame(s, frame) || !this->RenderScene(s, request)) return;
+ * if (!this->RenderScene(s, request)) return false;
  * this->SetShaderDefines(defines);
  * this->RenderFirstStage(frame);  // each stage: RenderStage(stage, targets, w, h, uniforms)
  * this->RenderFinalStage(frame);  // RenderStageToOutput(stage, writeDepth, uniforms)
- * this->EndFrame(s);
+ * return true;
  * @endcode
+ *
+ * **Translucent surfaces** are stylized too. After the opaque scene, the style runs again on
+ * each translucent layer, nearest first: the G-buffer of the layer (vtkStylizeGBufferPass::
+ * RenderTranslucentLayer(): at each pixel the nearest translucent surface in front of the
+ * opaque scene and behind the previous layer, depth peeling) goes through the style's stages
+ * as an opaque scene would, edges and tone included. The style's final stage then gives each
+ * pixel of the layer an alpha: the surface's opacity, or the ink of a line the style draws
+ * there (an outline, a crease) if that is more, so that lines stay as dark as on opaque
+ * surfaces while the tone lets what is behind show through; pixels where the layer has neither
+ * add nothing. The layers are composited front to back and laid over the stylized opaque
+ * scene. The renderer's own depth-peeling settings (UseDepthPeeling, MaximumNumberOfPeels) do
+ * not change the picture: the style peels its layers itself. Volumes and the 2D overlay are
+ * drawn afterwards, unstylized.
  *
  * @sa vtkStylizeGBufferPass vtkStylizeLightingPass vtkImageProcessingPass
  */
@@ -122,6 +136,26 @@ public:
   void SetWindowScale(int x, int y);
   vtkGetVector2Macro(WindowScale, int);
   ///@}
+
+  ///@{
+  /**
+   * Translucent layers: how many layers of translucent surfaces (actors with an opacity below
+   * 1) the style stylizes, nearest first. Each layer is one more run of the style's stages over
+   * the nearest translucent surface not yet drawn (depth peeling; a layer that holds nothing
+   * ends the peeling early), composited over the stylized opaque scene with the surface's
+   * opacity, lines at full strength. Surfaces beyond the last layer are not drawn. 0 draws
+   * translucent geometry unstylized: lit and blended over the stylized image. A closed translucent surface has two layers (its front and its
+   * back). From 0 to 16; default 4 (VTK's default number of depth peels).
+   */
+  vtkSetClampMacro(TranslucentLayers, int, 0, 16);
+  vtkGetMacro(TranslucentLayers, int);
+  ///@}
+
+  /** The number of translucent layers the last frame stylized (0 when none). */
+  vtkGetMacro(LastTranslucentLayers, int);
+
+  /** Renders the frame: the opaque scene and the translucent layers through the style. */
+  void Render(const vtkRenderState* s) override;
 
   /**
    * Bytes of device memory the style's textures hold after the last frame: the G-buffer's
@@ -264,7 +298,8 @@ protected:
   /**
    * Renders the scene into the G-buffer (from the geometry, or from the delegate's image when a
    * delegate is set) as `request` says. Returns false when there is nothing to stylize; the rest
-   * of the scene has then been drawn and the frame is done.
+   * of the scene has then been drawn and the frame is done. While a translucent layer is being
+   * stylized, renders that layer instead (same request) and returns false when it is empty.
    */
   bool RenderScene(const vtkRenderState* s, const SceneRequest& request);
 
@@ -417,8 +452,23 @@ protected:
   /** Frees everything a style made for its stages (ReleaseGraphicsResources() calls it). */
   virtual void ReleaseStyleResources(vtkWindow*) {}
 
+  /**
+   * The style's pipeline for one scene (the opaque scene, or a translucent layer): RenderScene(),
+   * the stages, the final stage into the output (RenderStageToOutput()). Returns false when
+   * RenderScene() did (nothing to stylize).
+   */
+  virtual bool RenderStyle(const vtkRenderState* s, const Frame& frame) = 0;
+
+  /**
+   * Stylizes the translucent layers (TranslucentLayers) after the opaque scene and lays them
+   * over the output; tells the G-buffer whether translucent geometry is still to be drawn plain.
+   */
+  void RenderTranslucentLayers(const vtkRenderState* s, const Frame& frame);
+
   double InteractiveUpdateRate = 1.0;
   int WindowScale[2] = { 1, 1 };
+  int TranslucentLayers = 4;
+  int LastTranslucentLayers = 0;
 
 private:
   vtkStylizeStylePass(const vtkStylizeStylePass&) = delete;

@@ -66,6 +66,7 @@ void pixelMain()
   vec3 surfaceColour = vec3(0.0);
   vec3 backgroundColour = vec3(0.0);
   float surface = 0.0;
+  float opacity = 0.0;
   float depth = 0.0;
   vec3 normal = vec3(0.0);
   vec3 position = vec3(0.0);
@@ -74,12 +75,14 @@ void pixelMain()
     for (int i = 0; i < n.x; ++i)
     {
       ivec2 p = lo + (ivec2(i, j) * extent) / n;
-      vec3 c = texelFetch(stylizeColorTexture, p, 0).rgb;
+      vec4 c4 = texelFetch(stylizeColorTexture, p, 0);
+      vec3 c = c4.rgb;
       float z = texelFetch(stylizeLinearDepthTexture, p, 0).r;
       if (z > 0.0)
       {
         surface += 1.0;
         surfaceColour += c;
+        opacity += clamp(c4.a, 0.0, 1.0);
         depth += z;
 #ifdef PIXEL_NORMALS
         normal += texelFetch(stylizeNormalTexture, p, 0).xyz;
@@ -103,7 +106,8 @@ void pixelMain()
   bool centreOnSurface = texelFetch(stylizeLinearDepthTexture, centre, 0).r > 0.0;
   bool covered = surface > 0.5 * count || (surface == 0.5 * count && centreOnSurface);
   vec3 colour = covered ? surfaceColour / surface : backgroundColour / max(count - surface, 1.0);
-  gl_FragData[0] = vec4(colour, surface / count);
+  // alpha: the surface's mean opacity (a translucent layer's), 0 on the background
+  gl_FragData[0] = vec4(colour, covered ? opacity / surface : 0.0);
   gl_FragData[1] = vec4(covered ? depth / surface : 0.0, 0.0, 0.0, 1.0);
 #ifdef PIXEL_NORMALS
   float nl = length(normal);
@@ -300,8 +304,10 @@ vec3 pixelQuantize(vec3 c, float t)
 void pixelMain()
 {
   ivec2 p = pixelArtCoord();
-  vec3 c = stylizeSaturateFinite(texelFetch(stylizeColorTexture, p, 0).rgb);
+  vec4 c4 = texelFetch(stylizeColorTexture, p, 0);
+  vec3 c = stylizeSaturateFinite(c4.rgb);
   bool surface = texelFetch(stylizeLinearDepthTexture, p, 0).r > 0.0;
+  float opacity = stylizeIsFinite(c4.a) ? clamp(c4.a, 0.0, 1.0) : 1.0;
 #ifdef PIXEL_EDGES
   bool edge = texelFetch(pixelInputTexture, p, 0).r > 0.75;
 #else
@@ -328,8 +334,9 @@ void pixelMain()
 #endif
   result = edge ? pixelOutlineColor : result;
 #endif
-  // alpha: 1 for art pixels with a surface or an outline, 0 for the background
-  gl_FragData[0] = vec4(result, surface || edge ? 1.0 : 0.0);
+  // alpha: 2 for an outline, 1 + opacity / 2 for a surface (a translucent layer's opacity is
+  // below 1), 0 for the background
+  gl_FragData[0] = vec4(result, edge ? 2.0 : (surface ? 1.0 + 0.5 * opacity : 0.0));
 }
 #endif
 
@@ -343,7 +350,8 @@ void pixelMain()
   {
     discard;
   }
-  gl_FragData[0] = stylizeOutput(art.a < 0.5, art.rgb, 0.0, art.a);
+  gl_FragData[0] = stylizeOutput(art.a < 0.5, art.rgb, clamp(2.0 * (art.a - 1.0), 0.0, 1.0),
+    art.a > 1.75 ? 1.0 : 0.0);
 #ifdef PIXEL_WRITE_DEPTH
 #ifdef PIXEL_FAST
   float depth = texelFetch(stylizeDepthTexture, k, 0).r;

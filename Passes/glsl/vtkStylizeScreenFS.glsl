@@ -69,6 +69,12 @@ uniform int stylizeSceneFromImage;
 uniform vec4 stylizeImageBackground;
 uniform vec3 stylizeRendererBackground;
 
+// 1 while the style draws a translucent layer (vtkStylizeStylePass::TranslucentLayers): the
+// output is premultiplied, its alpha the surface's opacity (imageAlpha: the G-buffer colour's
+// alpha) or the ink of the style's lines, whichever is more; on the layer's background the ink
+// alone.
+uniform int stylizeTranslucentLayer;
+
 float stylizeOutputAlpha(bool background, float imageAlpha, float ink)
 {
   return (background && stylizeSceneFromImage == 1) ? clamp(max(imageAlpha, ink), 0.0, 1.0) : 1.0;
@@ -82,8 +88,14 @@ float stylizeOutputAlpha(bool background, float imageAlpha, float ink)
 // the colour it renders over, with the same ink.
 vec4 stylizeOutput(bool background, vec3 rgb, float imageAlpha, float ink)
 {
-  float alpha = stylizeOutputAlpha(background, imageAlpha, ink);
   vec3 colour = stylizeSaturateFinite(rgb);
+  if (stylizeTranslucentLayer == 1)
+  {
+    float layerAlpha = background ? ink : max(imageAlpha, ink);
+    layerAlpha = stylizeIsFinite(layerAlpha) ? clamp(layerAlpha, 0.0, 1.0) : 1.0;
+    return vec4(colour * layerAlpha, layerAlpha);
+  }
+  float alpha = stylizeOutputAlpha(background, imageAlpha, ink);
   if (background && stylizeSceneFromImage == 1 && stylizeImageBackground.a > 0.5)
   {
     colour = clamp(colour + (1.0 - alpha) * (stylizeRendererBackground - stylizeImageBackground.rgb),
@@ -91,6 +103,19 @@ vec4 stylizeOutput(bool background, vec3 rgb, float imageAlpha, float ink)
   }
   return vec4(colour, alpha);
 }
+
+#ifdef STYLIZE_STAGE_LAYERS
+// The translucent layers, stylized and composited front to back (premultiplied), laid over the
+// stylized opaque scene (vtkStylizeStylePass::RenderTranslucentLayers()).
+uniform sampler2D stylizeLayersTexture;
+void stylizeLayersMain()
+{
+  ivec2 size = textureSize(stylizeLayersTexture, 0);
+  ivec2 p = clamp(ivec2(texCoord * vec2(size)), ivec2(0), size - 1);
+  vec4 layers = texelFetch(stylizeLayersTexture, p, 0);
+  gl_FragData[0] = clamp(layers, 0.0, 1.0);
+}
+#endif
 
 #ifdef STYLIZE_STAGE_BACKGROUND
 // The background as every style's final stage writes it, for the pixels away from the scene

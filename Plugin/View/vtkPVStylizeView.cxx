@@ -204,6 +204,7 @@ void vtkPVStylizeView::ConfigurePasses()
   this->Superclass::SetUseFXAA(this->RequestedFXAA && !style);
   // Per rank: under a style the G-buffer (lit by the lighting pass), otherwise the lighting
   // pass alone or ParaView's own pass.
+  this->RankGBuffer->SetDrawTranslucent(true);
   vtkRenderPass* rankPass = style ? static_cast<vtkRenderPass*>(this->RankGBuffer)
                                   : (lighting ? this->LightingPass.GetPointer() : nullptr);
   this->SynchronizedRenderers->SetRenderPass(rankPass);
@@ -214,7 +215,14 @@ void vtkPVStylizeView::ConfigurePasses()
     // After compositing, the style takes the ranks' own normals, positions and directions
     // (composited by depth across the ranks) instead of rebuilding them from the depth.
     style->GetGBufferPass()->SetChannelSource(this->RankGBuffer);
-    style->GetGBufferPass()->SetController(vtkMultiProcessController::GetGlobalController());
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    style->GetGBufferPass()->SetController(controller);
+    // Translucent surfaces: with one process the style renders them itself from the props, one
+    // layer at a time (the rank's pass leaves them out of the image); with several, each rank
+    // draws its own plain and IceT composites them (a layer of the whole scene would need every
+    // rank's props).
+    const bool oneProcess = !controller || controller->GetNumberOfProcesses() <= 1;
+    this->RankGBuffer->SetDrawTranslucent(!(oneProcess && style->GetTranslucentLayers() > 0));
     // ParaView renders over transparent black where it composites (several ranks, or a server
     // rendering for its client) and paints the view's background under the result afterwards:
     // the style is told which flat background that will be (a gradient, an image or a skybox
