@@ -1,9 +1,12 @@
 """Shared pieces of the Python tests: failure bookkeeping, styles by class and settings, and a
 torus test object (a curved surface whose principal directions are defined everywhere)."""
+import os
+
 import vtkstylize
 from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
+from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factories)
 
@@ -56,3 +59,13 @@ def offscreen_window(width, height):
     win.SetMultiSamples(0)
     win.OffScreenRenderingOn()
     return win
+
+
+def ply_mesh(data, name):
+    """Mesh `name`.ply of the real-data set in folder `data`, with point normals."""
+    reader = vtkPLYReader()
+    reader.SetFileName(os.path.join(data, name + ".ply"))
+    normals = vtkPolyDataNormals()
+    normals.SetInputConnection(reader.GetOutputPort())
+    normals.Update()
+    return normals.GetOutput()

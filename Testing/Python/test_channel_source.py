@@ -28,7 +28,6 @@ from vtkmodules.vtkFiltersCore import vtkContourFilter, vtkPolyDataNormals
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkFiltersGeometry import vtkCompositeDataGeometryFilter
 from vtkmodules.vtkIOExodus import vtkExodusIIReader
-from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
@@ -38,19 +37,15 @@ from vtkmodules.vtkRenderingOpenGL2 import vtkCameraPass
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from stylize_test_scene import check, failures, offscreen_window, style_maker  # noqa: E402
+from stylize_test_scene import (check, failures, offscreen_window, ply_mesh,  # noqa: E402
+                                style_maker)
 
 data = sys.argv[1]
 SIZE = (480, 360)
 
 
 def ply(name):
-    reader = vtkPLYReader()
-    reader.SetFileName(os.path.join(data, name + ".ply"))
-    normals = vtkPolyDataNormals()
-    normals.SetInputConnection(reader.GetOutputPort())
-    normals.Update()
-    return normals.GetOutput()
+    return ply_mesh(data, name)
 
 
 def exodus(name):

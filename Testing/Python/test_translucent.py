@@ -30,14 +30,12 @@ import sys
 import numpy as np
 import vtkstylize
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
                                          vtkWindowToImageFilter)
 
-from stylize_test_scene import check, failures, offscreen_window
+from stylize_test_scene import check, failures, offscreen_window, ply_mesh
 
 data, out = sys.argv[1], sys.argv[2]
 os.makedirs(out, exist_ok=True)
@@ -135,16 +133,7 @@ check(differing(peeled, peeled_vtk_peeling, 0) == 0,
 
 
 # 2. Every style on real data ----------------------------------------------------------------------
-def mesh(name):
-    reader = vtkPLYReader()
-    reader.SetFileName(os.path.join(data, name + ".ply"))
-    normals = vtkPolyDataNormals()
-    normals.SetInputConnection(reader.GetOutputPort())
-    normals.Update()
-    return normals.GetOutput()
-
-
-bunny, pinion = mesh("bunny"), mesh("pinion")
+bunny, pinion = ply_mesh(data, "bunny"), ply_mesh(data, "pinion")
 
 
 def bounds_centre_size(pd):
