@@ -67,17 +67,36 @@ public:
   vtkTextureObject* FieldTextures[3] = { nullptr, nullptr, nullptr };
   int FieldResolved = -1; // index in FieldTextures of the last resolved field
 
+  // The stages' framebuffer and the layers' (a layer's stages bind theirs inside it).
   void FreeFramebuffer(vtkWindow* w)
   {
-    if (this->Framebuffer)
+    for (vtkOpenGLFramebufferObject** fbo : { &this->Framebuffer, &this->LayerFramebuffer })
     {
-      if (w)
+      if (*fbo)
       {
-        this->Framebuffer->ReleaseGraphicsResources(w);
+        if (w)
+        {
+          (*fbo)->ReleaseGraphicsResources(w);
+        }
+        (*fbo)->Delete();
+        *fbo = nullptr;
       }
-      this->Framebuffer->Delete();
-      this->Framebuffer = nullptr;
     }
+  }
+
+  // Makes `fbo` (created on first use) the draw framebuffer, the current bindings saved for
+  // RestorePreviousBindingsAndBuffers().
+  static vtkOpenGLFramebufferObject* BindFramebuffer(
+    vtkOpenGLFramebufferObject*& fbo, vtkOpenGLRenderWindow* window)
+  {
+    if (!fbo)
+    {
+      fbo = vtkOpenGLFramebufferObject::New();
+      fbo->SetContext(window);
+    }
+    fbo->SaveCurrentBindingsAndBuffers();
+    fbo->Bind();
+    return fbo;
   }
 
   void FreeTextures(vtkWindow* w)
@@ -87,15 +106,6 @@ public:
       vtkStylizeShaderUtilities::FreeTexture(t, w);
     }
     vtkStylizeShaderUtilities::FreeTexture(this->LayerTexture, w);
-    if (this->LayerFramebuffer)
-    {
-      if (w)
-      {
-        this->LayerFramebuffer->ReleaseGraphicsResources(w);
-      }
-      this->LayerFramebuffer->Delete();
-      this->LayerFramebuffer = nullptr;
-    }
     this->FreeField(w);
   }
 
@@ -522,14 +532,7 @@ void vtkStylizeStylePass::RenderTranslucentLayers(const vtkRenderState* s, const
   vtkOpenGLState* ostate = win->GetState();
   vtkStylizeShaderUtilities::EnsureScreenTexture(
     in.LayerTexture, win, frame.Size[0], frame.Size[1], GL_RGBA16F, false);
-  if (!in.LayerFramebuffer)
-  {
-    in.LayerFramebuffer = vtkOpenGLFramebufferObject::New();
-    in.LayerFramebuffer->SetContext(win);
-  }
-  vtkOpenGLFramebufferObject* fbo = in.LayerFramebuffer;
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
+  vtkOpenGLFramebufferObject* fbo = vtkInternals::BindFramebuffer(in.LayerFramebuffer, win);
   fbo->AddColorAttachment(0, in.LayerTexture);
   fbo->ActivateDrawBuffers(1);
   {
@@ -653,14 +656,7 @@ bool vtkStylizeStylePass::RenderStage(int stage,
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
-  if (!in.Framebuffer)
-  {
-    in.Framebuffer = vtkOpenGLFramebufferObject::New();
-    in.Framebuffer->SetContext(renWin);
-  }
-  vtkOpenGLFramebufferObject* fbo = in.Framebuffer;
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
+  vtkOpenGLFramebufferObject* fbo = vtkInternals::BindFramebuffer(in.Framebuffer, renWin);
   unsigned int n = 0;
   for (vtkTextureObject* t : targets)
   {
