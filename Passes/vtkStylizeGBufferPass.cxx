@@ -73,8 +73,13 @@ public:
     if (this->Layer)
     {
       // A translucent layer: no surface anywhere yet (alpha 0; the colour of a flat background
-      // for the stages that read colour across a silhouette).
-      if (!vtkStylizeGBufferPass::GetFlatBackground(ren, flat))
+      // for the stages that read colour across a silhouette: the one the opaque scene's image
+      // stands for where a compositor replaced the renderer's).
+      if (this->UseImageBackground)
+      {
+        std::copy(this->ImageBackground, this->ImageBackground + 3, flat);
+      }
+      else if (!vtkStylizeGBufferPass::GetFlatBackground(ren, flat))
       {
         std::fill(flat, flat + 3, 0.f);
       }
@@ -103,6 +108,8 @@ public:
   }
   unsigned int Attachments = 1;
   bool Layer = false; // clears for a translucent layer
+  bool UseImageBackground = false; // a layer's background colour is ImageBackground
+  float ImageBackground[3] = { 0.f, 0.f, 0.f };
 
 protected:
   vtkStylizeGBufferClearPass() = default;
@@ -161,6 +168,11 @@ private:
 };
 }
 
+namespace
+{
+struct ChannelPart;
+}
+
 class vtkStylizeGBufferPass::vtkInternals
 {
 public:
@@ -178,6 +190,39 @@ public:
   // normal, position, direction, inside the rectangle SourceRect (x, y, width, height).
   vtkTextureObject* Composited[4] = { nullptr, nullptr, nullptr, nullptr };
   int SourceRect[4] = { 0, 0, 0, 0 };
+
+  // Compositing by depth across processes (each a collective call where it takes a controller).
+  /**
+   * Reads `self`'s depth and `buffers` (COLOR_BUFFER, ...) inside rect, or when rect is null
+   * inside the rectangle where its depth is below 1 (empty where it holds no surface); w x h is
+   * its size.
+   */
+  static void ReadPart(vtkStylizeGBufferPass* self, ChannelPart& part,
+    const std::vector<int>& buffers, int w, int h, const int* rect = nullptr);
+  /**
+   * Sends every process's part to process 0, which keeps the nearest by depth at every pixel (a
+   * binary tree, log2(N) steps). Returns true on process 0 (`own` holds the union), false on the
+   * others (`own` was sent).
+   */
+  static bool ReducePart(vtkStylizeGBufferPass* self, vtkMultiProcessController* controller,
+    ChannelPart& own, const std::vector<int>& buffers, int w, int h);
+  /** Process 0's part's rectangle and depth to every process. */
+  static void BroadcastDepth(vtkStylizeGBufferPass* self, vtkMultiProcessController* controller,
+    ChannelPart& part, int w, int h);
+  /**
+   * The other processes' `opaque` G-buffers take process 0's depth (the depth composited over the
+   * processes), which their translucent layers must lie in front of.
+   */
+  static void ShareOpaqueDepth(vtkStylizeGBufferPass* self, vtkMultiProcessController* controller,
+    vtkStylizeGBufferPass* opaque);
+  /**
+   * After every process rendered its layer (RenderTranslucentLayer()): process 0's layer becomes
+   * the nearest surface of all the processes' layers at each pixel (every channel), and every
+   * process's layer depth becomes that layer's depth, so that the next layer peels behind the
+   * whole scene's. Returns whether any process's layer holds a surface (on every process).
+   */
+  static bool CompositeLayer(
+    vtkStylizeGBufferPass* self, vtkMultiProcessController* controller, bool rendered);
 };
 
 vtkStandardNewMacro(vtkStylizeGBufferPass);
@@ -675,7 +720,28 @@ bool vtkStylizeGBufferPass::RenderTranslucentLayer(
   this->LayerOpaque = opaque;
   this->LayerOpaqueDepth = opaque->GetDepthTexture();
   this->LayerHasSamples = false;
-  const bool rendered = this->RenderGeometry(s);
+  vtkStylizeGBufferClearPass* clear = this->Internals->LayerClearPass;
+  clear->UseImageBackground = opaque->ImageBackgroundApplied;
+  for (int i = 0; i < 3; ++i)
+  {
+    clear->ImageBackground[i] = static_cast<float>(opaque->ImageBackground[i]);
+  }
+  // Several processes (ParaView's render ranks), each with its own props: every one peels in
+  // front of the composited opaque depth and behind the whole scene's previous layer, and the
+  // layer is composited by depth to process 0.
+  vtkMultiProcessController* controller = opaque->Controller;
+  const bool distributed = controller && controller->GetNumberOfProcesses() > 1;
+  if (distributed && index == 0)
+  {
+    vtkInternals::ShareOpaqueDepth(this, controller, opaque);
+  }
+  bool rendered = this->RenderGeometry(s);
+  if (distributed)
+  {
+    // (the answer is every process's, so that all of them go on to the next layer or stop)
+    this->LayerHasSamples = vtkInternals::CompositeLayer(this, controller, rendered);
+    rendered = true;
+  }
   this->LayerIndex = -1;
   this->LayerOpaque = nullptr;
   this->LayerOpaqueDepth = nullptr;
@@ -994,7 +1060,7 @@ void vtkStylizeGBufferPass::ReadBuffer(int buffer, const int rect[4], float* out
     {
       index += order[i] ? 1 : 0;
     }
-    glReadBuffer(GL_COLOR_ATTACHMENT0 + index);
+    fbo->GetContext()->GetState()->vtkglReadBuffer(GL_COLOR_ATTACHMENT0 + index);
     glReadPixels(rect[0], rect[1], rect[2], rect[3],
       buffer == LINEAR_DEPTH_BUFFER ? GL_RED : GL_RGBA, GL_FLOAT, out);
   }
@@ -1005,22 +1071,72 @@ void vtkStylizeGBufferPass::ReadBuffer(int buffer, const int rect[4], float* out
 //------------------------------------------------------------------------------
 namespace
 {
-// One process's part of the composited channels: the rectangle (x, y, width, height) where it
-// drew a surface and, inside it row by row, the stored depth and 4 floats per channel.
+// One process's part of a composite by depth: the rectangle (x, y, width, height) where it drew
+// a surface and, inside it row by row, the stored depth and each channel (Components floats per
+// pixel, in the order of the buffers composited).
 struct ChannelPart
 {
   int Rect[4] = { 0, 0, 0, 0 };
   std::vector<float> Depth;
-  std::vector<float> Channels[3]; // normal, position, direction
+  std::vector<std::vector<float>> Channels;
 
   vtkIdType Area() const { return static_cast<vtkIdType>(this->Rect[2]) * this->Rect[3]; }
 };
 
-const int ChannelTag = 735310; // and the next 4
+const int ChannelTag = 735310; // and the next 6
 
-// Keeps in `own` the nearer of `own` and `in` at every pixel of their union (ties: `own`, the
-// lower process).
-void MergePart(ChannelPart& own, ChannelPart& in, const bool present[3])
+// Floats per pixel of a G-buffer channel.
+int ComponentsOf(int buffer)
+{
+  return buffer == vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER ? 1 : 4;
+}
+
+// Copies `from`'s pixels into `to`, whose rectangle holds `from`'s: all of them, or (nearer) only
+// those nearer than what `to` holds.
+void PastePart(ChannelPart& to, const ChannelPart& from, const std::vector<int>& components,
+  bool nearer)
+{
+  for (int y = 0; y < from.Rect[3]; ++y)
+  {
+    for (int x = 0; x < from.Rect[2]; ++x)
+    {
+      const vtkIdType a = static_cast<vtkIdType>(y) * from.Rect[2] + x;
+      const vtkIdType b = static_cast<vtkIdType>(y + from.Rect[1] - to.Rect[1]) * to.Rect[2] +
+        (x + from.Rect[0] - to.Rect[0]);
+      if (nearer && !(from.Depth[a] < to.Depth[b]))
+      {
+        continue;
+      }
+      to.Depth[b] = from.Depth[a];
+      for (size_t c = 0; c < components.size(); ++c)
+      {
+        const int n = components[c];
+        std::copy_n(&from.Channels[c][n * a], n, &to.Channels[c][n * b]);
+      }
+    }
+  }
+}
+
+// The smallest rectangle holding both (x, y, width, height; an empty one holds nothing).
+void UnionRect(const int a[4], const int b[4], int out[4])
+{
+  const bool hasA = a[2] > 0 && a[3] > 0;
+  const bool hasB = b[2] > 0 && b[3] > 0;
+  if (!hasA || !hasB)
+  {
+    std::copy(hasA ? a : b, (hasA ? a : b) + 4, out);
+    return;
+  }
+  out[0] = std::min(a[0], b[0]);
+  out[1] = std::min(a[1], b[1]);
+  out[2] = std::max(a[0] + a[2], b[0] + b[2]) - out[0];
+  out[3] = std::max(a[1] + a[3], b[1] + b[3]) - out[1];
+}
+
+// Keeps in `own` its pixels and, at every pixel of the union of both rectangles, `in`'s where it
+// is nearer (ties: `own`, the lower process). Pixels of the union that neither holds get the
+// depth 1 and zeros.
+void MergePart(ChannelPart& own, ChannelPart& in, const std::vector<int>& components)
 {
   if (in.Area() == 0)
   {
@@ -1032,65 +1148,68 @@ void MergePart(ChannelPart& own, ChannelPart& in, const bool present[3])
     return;
   }
   ChannelPart u;
-  u.Rect[0] = std::min(own.Rect[0], in.Rect[0]);
-  u.Rect[1] = std::min(own.Rect[1], in.Rect[1]);
-  u.Rect[2] = std::max(own.Rect[0] + own.Rect[2], in.Rect[0] + in.Rect[2]) - u.Rect[0];
-  u.Rect[3] = std::max(own.Rect[1] + own.Rect[3], in.Rect[1] + in.Rect[3]) - u.Rect[1];
+  UnionRect(own.Rect, in.Rect, u.Rect);
   u.Depth.assign(u.Area(), 1.0f);
-  for (int c = 0; c < 3; ++c)
+  u.Channels.resize(components.size());
+  for (size_t c = 0; c < components.size(); ++c)
   {
-    if (present[c])
-    {
-      u.Channels[c].assign(4 * u.Area(), 0.0f);
-    }
+    u.Channels[c].assign(components[c] * u.Area(), 0.0f);
   }
-  for (ChannelPart* part : { &own, &in })
-  {
-    for (int y = 0; y < part->Rect[3]; ++y)
-    {
-      for (int x = 0; x < part->Rect[2]; ++x)
-      {
-        const vtkIdType from = static_cast<vtkIdType>(y) * part->Rect[2] + x;
-        const vtkIdType to = static_cast<vtkIdType>(y + part->Rect[1] - u.Rect[1]) * u.Rect[2] +
-          (x + part->Rect[0] - u.Rect[0]);
-        if (part->Depth[from] < u.Depth[to])
-        {
-          u.Depth[to] = part->Depth[from];
-          for (int c = 0; c < 3; ++c)
-          {
-            if (present[c])
-            {
-              std::copy_n(&part->Channels[c][4 * from], 4, &u.Channels[c][4 * to]);
-            }
-          }
-        }
-      }
-    }
-  }
+  PastePart(u, own, components, false);
+  PastePart(u, in, components, true);
   own = std::move(u);
+}
+
+// Whether rect lies inside a w x h image (an empty rectangle does).
+bool InsideImage(const int rect[4], int w, int h)
+{
+  return rect[0] >= 0 && rect[1] >= 0 && rect[2] >= 0 && rect[3] >= 0 && rect[0] + rect[2] <= w &&
+    rect[1] + rect[3] <= h;
+}
+
+// Replaces texels of a texture inside rect (x, y, width, height) with floats, rows bottom to
+// top: a depth texture, a one-component or a four-component one.
+void UploadTexels(vtkTextureObject* texture, const int rect[4], int buffer, const float* data)
+{
+  if (!texture || rect[2] <= 0 || rect[3] <= 0)
+  {
+    return;
+  }
+  const GLenum format = buffer == vtkStylizeGBufferPass::DEPTH_BUFFER ? GL_DEPTH_COMPONENT
+    : ComponentsOf(buffer) == 1                                      ? GL_RED
+                                                                     : GL_RGBA;
+  texture->Activate();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, rect[0], rect[1], rect[2], rect[3], format, GL_FLOAT, data);
+  texture->Deactivate();
 }
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeGBufferPass::CompositeChannelSource(
-  vtkOpenGLRenderWindow* renWin, bool rendered, int w, int h)
+void vtkStylizeGBufferPass::vtkInternals::ReadPart(vtkStylizeGBufferPass* self,
+  ChannelPart& part, const std::vector<int>& buffers, int w, int h, const int* rect)
 {
-  vtkMultiProcessController* controller = this->Controller;
-  vtkStylizeGBufferPass* source = this->ChannelSource;
-  const int rank = controller->GetLocalProcessId();
-  const int size = controller->GetNumberOfProcesses();
-  // Every process asked its source for the same channels.
-  const int buffers[3] = { NORMAL_BUFFER, POSITION_BUFFER, DIRECTION_BUFFER };
-  const bool present[3] = { (source->Channels & NORMAL) != 0,
-    (source->Channels & POSITION) != 0, (source->Channels & DIRECTION) != 0 };
-
-  // 1. This process's part: where its source drew a surface.
-  ChannelPart own;
-  if (rendered && source->FrameBufferObject && source->DepthTexture)
+  part = ChannelPart();
+  part.Channels.resize(buffers.size());
+  if (!self->FrameBufferObject || !self->DepthTexture)
   {
+    return;
+  }
+  if (rect)
+  {
+    std::copy(rect, rect + 4, part.Rect);
+    part.Depth.resize(part.Area());
+    if (part.Area() > 0)
+    {
+      self->ReadBuffer(DEPTH_BUFFER, rect, part.Depth.data());
+    }
+  }
+  else
+  {
+    // The rectangle where this G-buffer holds a surface.
     std::vector<float> depth(static_cast<size_t>(w) * h);
     const int whole[4] = { 0, 0, w, h };
-    source->ReadBuffer(DEPTH_BUFFER, whole, depth.data());
+    self->ReadBuffer(DEPTH_BUFFER, whole, depth.data());
     int lo[2] = { w, h }, hi[2] = { -1, -1 };
     for (int y = 0; y < h; ++y)
     {
@@ -1105,28 +1224,42 @@ bool vtkStylizeGBufferPass::CompositeChannelSource(
         }
       }
     }
-    if (hi[0] >= 0)
+    if (hi[0] < 0)
     {
-      const int rect[4] = { lo[0], lo[1], hi[0] - lo[0] + 1, hi[1] - lo[1] + 1 };
-      std::copy(rect, rect + 4, own.Rect);
-      own.Depth.resize(own.Area());
-      for (int y = 0; y < rect[3]; ++y)
-      {
-        std::copy_n(&depth[static_cast<size_t>(y + rect[1]) * w + rect[0]], rect[2],
-          &own.Depth[static_cast<size_t>(y) * rect[2]]);
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        if (present[c])
-        {
-          own.Channels[c].resize(4 * own.Area());
-          source->ReadBuffer(buffers[c], rect, own.Channels[c].data());
-        }
-      }
+      return;
+    }
+    const int found[4] = { lo[0], lo[1], hi[0] - lo[0] + 1, hi[1] - lo[1] + 1 };
+    std::copy(found, found + 4, part.Rect);
+    part.Depth.resize(part.Area());
+    for (int y = 0; y < found[3]; ++y)
+    {
+      std::copy_n(&depth[static_cast<size_t>(y + found[1]) * w + found[0]], found[2],
+        &part.Depth[static_cast<size_t>(y) * found[2]]);
     }
   }
+  for (size_t c = 0; c < buffers.size(); ++c)
+  {
+    part.Channels[c].resize(ComponentsOf(buffers[c]) * part.Area());
+    if (part.Area() > 0)
+    {
+      self->ReadBuffer(buffers[c], part.Rect, part.Channels[c].data());
+    }
+  }
+}
 
-  // 2. A binary tree towards process 0: at step s, process r (r mod 2s = s) sends to r - s.
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::vtkInternals::ReducePart(vtkStylizeGBufferPass* self,
+  vtkMultiProcessController* controller, ChannelPart& own,
+  const std::vector<int>& buffers, int w, int h)
+{
+  const int rank = controller->GetLocalProcessId();
+  const int size = controller->GetNumberOfProcesses();
+  std::vector<int> components;
+  for (int buffer : buffers)
+  {
+    components.push_back(ComponentsOf(buffer));
+  }
+  // A binary tree towards process 0: at step s, process r (r mod 2s = s) sends to r - s.
   for (int step = 1; step < size; step *= 2)
   {
     if (rank % (2 * step) == step)
@@ -1136,12 +1269,10 @@ bool vtkStylizeGBufferPass::CompositeChannelSource(
       if (own.Area() > 0)
       {
         controller->Send(own.Depth.data(), own.Area(), to, ChannelTag + 1);
-        for (int c = 0; c < 3; ++c)
+        for (size_t c = 0; c < buffers.size(); ++c)
         {
-          if (present[c])
-          {
-            controller->Send(own.Channels[c].data(), 4 * own.Area(), to, ChannelTag + 2 + c);
-          }
+          controller->Send(own.Channels[c].data(), components[c] * own.Area(), to,
+            ChannelTag + 2 + static_cast<int>(c));
         }
       }
       return false;
@@ -1150,40 +1281,189 @@ bool vtkStylizeGBufferPass::CompositeChannelSource(
     {
       const int from = rank + step;
       ChannelPart in;
+      in.Channels.resize(buffers.size());
       controller->Receive(in.Rect, 4, from, ChannelTag);
-      if (in.Rect[2] < 0 || in.Rect[3] < 0 || in.Rect[0] < 0 || in.Rect[1] < 0 ||
-        in.Rect[0] + in.Rect[2] > w || in.Rect[1] + in.Rect[3] > h)
+      if (!InsideImage(in.Rect, w, h))
       {
-        vtkErrorMacro("Process " << from << " sent channels outside the image.");
+        vtkErrorWithObjectMacro(self, "Process " << from << " sent channels outside the image.");
         std::fill(in.Rect, in.Rect + 4, 0);
       }
       if (in.Area() > 0)
       {
         in.Depth.resize(in.Area());
         controller->Receive(in.Depth.data(), in.Area(), from, ChannelTag + 1);
-        for (int c = 0; c < 3; ++c)
+        for (size_t c = 0; c < buffers.size(); ++c)
         {
-          if (present[c])
-          {
-            in.Channels[c].resize(4 * in.Area());
-            controller->Receive(in.Channels[c].data(), 4 * in.Area(), from, ChannelTag + 2 + c);
-          }
+          in.Channels[c].resize(components[c] * in.Area());
+          controller->Receive(in.Channels[c].data(), components[c] * in.Area(), from,
+            ChannelTag + 2 + static_cast<int>(c));
         }
       }
-      MergePart(own, in, present);
+      MergePart(own, in, components);
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::vtkInternals::BroadcastDepth(vtkStylizeGBufferPass* self,
+  vtkMultiProcessController* controller, ChannelPart& part, int w, int h)
+{
+  controller->Broadcast(part.Rect, 4, 0);
+  if (!InsideImage(part.Rect, w, h))
+  {
+    vtkErrorWithObjectMacro(self, "Process 0 sent a depth outside the image.");
+    std::fill(part.Rect, part.Rect + 4, 0);
+    return;
+  }
+  part.Depth.resize(part.Area());
+  if (part.Area() > 0)
+  {
+    controller->Broadcast(part.Depth.data(), part.Area(), 0);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::vtkInternals::ShareOpaqueDepth(vtkStylizeGBufferPass* self,
+  vtkMultiProcessController* controller, vtkStylizeGBufferPass* opaque)
+{
+  // Every process's opaque G-buffer has process 0's size (the same view on every rank).
+  const int w = opaque->GeometrySize[0];
+  const int h = opaque->GeometrySize[1];
+  const bool root = controller->GetLocalProcessId() == 0;
+  ChannelPart part;
+  if (root)
+  {
+    ReadPart(opaque, part, std::vector<int>(), w, h);
+  }
+  BroadcastDepth(self, controller, part, w, h);
+  if (!root && opaque->DepthTexture)
+  {
+    std::vector<float> whole(static_cast<size_t>(w) * h, 1.0f);
+    for (int y = 0; y < part.Rect[3]; ++y)
+    {
+      std::copy_n(&part.Depth[static_cast<size_t>(y) * part.Rect[2]], part.Rect[2],
+        &whole[static_cast<size_t>(y + part.Rect[1]) * w + part.Rect[0]]);
+    }
+    const int rect[4] = { 0, 0, w, h };
+    UploadTexels(opaque->DepthTexture, rect, DEPTH_BUFFER, whole.data());
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::vtkInternals::CompositeLayer(
+  vtkStylizeGBufferPass* self, vtkMultiProcessController* controller, bool rendered)
+{
+  const int w = self->GeometrySize[0];
+  const int h = self->GeometrySize[1];
+  const bool root = controller->GetLocalProcessId() == 0;
+  rendered = rendered && self->LayerHasSamples;
+  std::vector<int> buffers = { COLOR_BUFFER };
+  for (auto channel : { std::make_pair(self->NormalTexture, NORMAL_BUFFER),
+         std::make_pair(self->PositionTexture, POSITION_BUFFER),
+         std::make_pair(self->LinearDepthTexture, LINEAR_DEPTH_BUFFER),
+         std::make_pair(self->DirectionTexture, DIRECTION_BUFFER) })
+  {
+    if (channel.first)
+    {
+      buffers.push_back(channel.second);
+    }
+  }
+  // 1. The other processes' layers, nearest by depth, to process 0.
+  ChannelPart others;
+  if (!root && rendered)
+  {
+    ReadPart(self, others, buffers, w, h);
+  }
+  ReducePart(self, controller, others, buffers, w, h);
+
+  // 2. Process 0 lays them into its own layer where they are nearer (its own pixels read over
+  // the union, its background included) and keeps the result in its textures.
+  ChannelPart layer;
+  if (root)
+  {
+    ChannelPart mine;
+    if (rendered)
+    {
+      ReadPart(self, mine, std::vector<int>(), w, h);
+    }
+    int bounds[4];
+    UnionRect(mine.Rect, others.Rect, bounds);
+    if (bounds[2] > 0 && bounds[3] > 0 && self->DepthTexture)
+    {
+      ReadPart(self, layer, buffers, w, h, bounds);
+      std::vector<int> components;
+      for (int buffer : buffers)
+      {
+        components.push_back(ComponentsOf(buffer));
+      }
+      if (others.Area() > 0)
+      {
+        PastePart(layer, others, components, true);
+      }
+      vtkTextureObject* const textures[5] = { self->ColorTexture, self->NormalTexture,
+        self->PositionTexture, self->LinearDepthTexture, self->DirectionTexture };
+      for (size_t c = 0; c < buffers.size(); ++c)
+      {
+        const int slot = buffers[c] == COLOR_BUFFER ? 0
+          : buffers[c] == NORMAL_BUFFER             ? 1
+          : buffers[c] == POSITION_BUFFER           ? 2
+          : buffers[c] == LINEAR_DEPTH_BUFFER       ? 3
+                                                    : 4;
+        UploadTexels(textures[slot], layer.Rect, buffers[c], layer.Channels[c].data());
+      }
+      UploadTexels(self->DepthTexture, layer.Rect, DEPTH_BUFFER, layer.Depth.data());
     }
   }
 
-  // 3. Process 0 keeps the result in textures.
-  if (own.Area() == 0)
+  // 3. Every process peels the next layer behind this one: the layer's depth from process 0.
+  BroadcastDepth(self, controller, layer, w, h);
+  if (!root && self->DepthTexture)
+  {
+    UploadTexels(self->DepthTexture, layer.Rect, DEPTH_BUFFER, layer.Depth.data());
+  }
+  return layer.Area() > 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeGBufferPass::CompositeChannelSource(
+  vtkOpenGLRenderWindow* renWin, bool rendered, int w, int h)
+{
+  vtkStylizeGBufferPass* source = this->ChannelSource;
+  // Every process asked its source for the same channels.
+  std::vector<int> buffers;
+  for (auto channel : { std::make_pair(NORMAL, NORMAL_BUFFER),
+         std::make_pair(POSITION, POSITION_BUFFER), std::make_pair(DIRECTION, DIRECTION_BUFFER) })
+  {
+    if (source->Channels & channel.first)
+    {
+      buffers.push_back(channel.second);
+    }
+  }
+
+  // This process's part (where its source drew a surface), nearest by depth to process 0.
+  ChannelPart own;
+  if (rendered)
+  {
+    vtkInternals::ReadPart(source, own, buffers, w, h);
+  }
+  if (!vtkInternals::ReducePart(this, this->Controller, own, buffers, w, h) || own.Area() == 0)
   {
     return false;
   }
+
+  // Process 0 keeps the result in textures: depth, normal, position, direction.
   std::copy(own.Rect, own.Rect + 4, this->Internals->SourceRect);
   vtkTextureObject** textures = this->Internals->Composited;
+  const int slots[3] = { NORMAL_BUFFER, POSITION_BUFFER, DIRECTION_BUFFER };
   for (int i = 0; i < 4; ++i)
   {
-    if (i > 0 && !present[i - 1])
+    const float* data = i == 0 ? own.Depth.data() : nullptr;
+    for (size_t c = 0; i > 0 && c < buffers.size(); ++c)
+    {
+      data = buffers[c] == slots[i - 1] ? own.Channels[c].data() : data;
+    }
+    if (!data)
     {
       vtkStylizeShaderUtilities::FreeTexture(textures[i], renWin);
       continue;
@@ -1193,8 +1473,8 @@ bool vtkStylizeGBufferPass::CompositeChannelSource(
       textures[i] = vtkTextureObject::New();
     }
     textures[i]->SetContext(renWin);
-    float* data = i == 0 ? own.Depth.data() : own.Channels[i - 1].data();
-    textures[i]->Create2DFromRaw(own.Rect[2], own.Rect[3], i == 0 ? 1 : 4, VTK_FLOAT, data);
+    textures[i]->Create2DFromRaw(own.Rect[2], own.Rect[3], i == 0 ? 1 : 4, VTK_FLOAT,
+      const_cast<float*>(data));
   }
   return true;
 }

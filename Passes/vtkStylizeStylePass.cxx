@@ -3,7 +3,9 @@
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
+#include "vtkCommunicator.h"
 #include "vtkFloatArray.h"
+#include "vtkMultiProcessController.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -519,8 +521,17 @@ void vtkStylizeStylePass::RenderTranslucentLayers(const vtkRenderState* s, const
   // from the props here; a selection renders ids.
   vtkStylizeGBufferPass* source = in.GBuffer->GetChannelSource();
   const bool fromProps = !this->DelegatePass || (source && !source->GetDrawTranslucent());
-  const bool layers = this->TranslucentLayers > 0 && fromProps &&
-    !frame.Renderer->GetSelector() && vtkStylizeGBufferPass::HasTranslucentGeometry(s);
+  bool layers = this->TranslucentLayers > 0 && fromProps && !frame.Renderer->GetSelector();
+  int translucent = layers && vtkStylizeGBufferPass::HasTranslucentGeometry(s) ? 1 : 0;
+  vtkMultiProcessController* controller = in.GBuffer->GetController();
+  if (layers && controller && controller->GetNumberOfProcesses() > 1)
+  {
+    // Several processes, each with its props: the layers are composited across them (a
+    // collective call per layer), so all of them draw layers when any has translucent geometry.
+    int local = translucent;
+    controller->AllReduce(&local, &translucent, 1, vtkCommunicator::MAX_OP);
+  }
+  layers = layers && translucent != 0;
   in.GBuffer->SetDrawTranslucent(!layers);
   if (!layers)
   {
@@ -998,7 +1009,7 @@ bool vtkStylizeStylePass::DownloadTexture(vtkTextureObject* tex, vtkFloatArray* 
   fbo->SaveCurrentBindingsAndBuffers(GL_READ_FRAMEBUFFER);
   fbo->Bind(GL_READ_FRAMEBUFFER);
   fbo->AddColorAttachment(0, tex);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  fbo->GetContext()->GetState()->vtkglReadBuffer(GL_COLOR_ATTACHMENT0);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, out->GetPointer(0));
   fbo->RemoveColorAttachments(1);
   fbo->UnBind(GL_READ_FRAMEBUFFER);

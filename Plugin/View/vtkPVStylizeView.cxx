@@ -217,12 +217,19 @@ void vtkPVStylizeView::ConfigurePasses()
     style->GetGBufferPass()->SetChannelSource(this->RankGBuffer);
     vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
     style->GetGBufferPass()->SetController(controller);
-    // Translucent surfaces: with one process the style renders them itself from the props, one
-    // layer at a time (the rank's pass leaves them out of the image); with several, each rank
-    // draws its own plain and IceT composites them (a layer of the whole scene would need every
-    // rank's props).
-    const bool oneProcess = !controller || controller->GetNumberOfProcesses() <= 1;
-    this->RankGBuffer->SetDrawTranslucent(!(oneProcess && style->GetTranslucentLayers() > 0));
+    // Translucent surfaces: the style renders them itself from the props, one layer at a time
+    // (the rank's pass leaves them out of the image); with several ranks each renders the layer
+    // of its own props and the style composites the layers by depth across the ranks.
+    this->RankGBuffer->SetDrawTranslucent(style->GetTranslucentLayers() == 0);
+    const bool severalRanks = controller && controller->GetNumberOfProcesses() > 1;
+    if (severalRanks && style->GetTranslucentLayers() == 0 && this->DataNeedsOrderedCompositing &&
+      !this->WarnedUnlayered)
+    {
+      // The ranks are composited by depth, which keeps only what wrote a depth.
+      vtkWarningMacro("On several ranks a style with TranslucentLayers 0 leaves translucent "
+                      "surfaces out of the picture; set TranslucentLayers above 0.");
+      this->WarnedUnlayered = true;
+    }
     // ParaView renders over transparent black where it composites (several ranks, or a server
     // rendering for its client) and paints the view's background under the result afterwards:
     // the style is told which flat background that will be (a gradient, an image or a skybox
@@ -255,9 +262,21 @@ void vtkPVStylizeView::ConfigurePasses()
 }
 
 //------------------------------------------------------------------------------
+void vtkPVStylizeView::Update()
+{
+  this->Superclass::Update();
+  this->DataNeedsOrderedCompositing = this->NeedsOrderedCompositing;
+}
+
+//------------------------------------------------------------------------------
 void vtkPVStylizeView::Render(bool interactive, bool skip_rendering)
 {
   this->ConfigurePasses();
+  // Ordered compositing (what ParaView does on several ranks for translucent geometry and
+  // volumes) blends the ranks' images without their depth, and a style needs the composited
+  // depth: under a style the ranks are composited by depth, translucent surfaces by the style's
+  // layers.
+  this->NeedsOrderedCompositing = this->DataNeedsOrderedCompositing && !this->GetActiveStylePass();
   this->Superclass::Render(interactive, skip_rendering);
 }
 

@@ -131,6 +131,12 @@ protected:
   /** Configures the passes for the current settings, then renders as vtkPVRenderView. */
   void Render(bool interactive, bool skip_rendering) override;
 
+  /**
+   * As vtkPVRenderView, and keeps whether the data asked for ordered compositing: under a style
+   * it is not used (see Render()).
+   */
+  void Update() override;
+
   /** Puts the lighting pass and the style pass into ParaView's render and image slots. */
   void ConfigurePasses();
 
@@ -151,6 +157,8 @@ protected:
   int WindowScale[2] = { 1, 1 };
   bool FrozenFlat = false;
   double FrozenBackground[3] = { 0.0, 0.0, 0.0 };
+  bool DataNeedsOrderedCompositing = false; // what the representations asked at Update()
+  bool WarnedUnlayered = false; // warned once: several ranks, translucent data, no layers
   vtkStylizeStylePass* LastStylePass = nullptr;
   vtkSmartPointer<vtkComicPass> ComicPass;
   vtkSmartPointer<vtkPixelArtPass> PixelArtPass;

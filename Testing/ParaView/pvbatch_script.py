@@ -4,15 +4,21 @@ import subprocess
 import sys
 
 
-def run_render_script(pvbatch, name, out, stem, *arguments):
+def run_render_script(pvbatch, name, out, stem, *arguments, ranks=0):
     """Runs render script `name` (beside this file) with the output prefix out/stem (and further
-    `arguments`); exits with the log unless it ran to its "rendered" line. Returns the prefix."""
+    `arguments`), on `ranks` MPI ranks (mpiexec) when ranks > 0; exits with the log unless it ran
+    to its "rendered" line. Returns the prefix and pvbatch's standard output."""
     os.makedirs(out, exist_ok=True)
     script = os.path.join(os.path.dirname(os.path.abspath(__file__)), name)
     prefix = os.path.join(out, stem)
-    result = subprocess.run([pvbatch, script, prefix] + list(arguments), capture_output=True,
-                            text=True, timeout=600)
+    command = [pvbatch, script, prefix] + list(arguments)
+    env = dict(os.environ)
+    if ranks > 0:
+        command = ["mpiexec", "-n", str(ranks), "--oversubscribe"] + command
+        if os.getuid() == 0:  # OpenMPI refuses root without these (CI runs as root)
+            env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    result = subprocess.run(command, capture_output=True, text=True, timeout=600, env=env)
     if result.returncode != 0 or "rendered" not in result.stdout:
-        sys.exit("FAIL: pvbatch exited with %d:\n%s" % (
-            result.returncode, (result.stdout + result.stderr)[-3000:]))
-    return prefix
+        sys.exit("FAIL: %s exited with %d:\n%s" % (" ".join(command[:4]), result.returncode,
+                                                   (result.stdout + result.stderr)[-3000:]))
+    return prefix, result.stdout

@@ -1,7 +1,8 @@
 """Renders a translucent scan around an opaque CAD part in the stylized view, for
 test_translucent.py.
 
-    pvbatch-stylize render_translucent.py OUTPUT_PREFIX DATA_DIR
+    pvbatch-stylize render_translucent.py OUTPUT_PREFIX DATA_DIR [split]
+    mpiexec -n N pvbatch-stylize render_translucent.py OUTPUT_PREFIX DATA_DIR split
 
 The bunny scan at opacity 0.35 (or 1) around the pinion gear (both from the real-data set), a
 300x240 view. For each style: OUTPUT_PREFIX-<style>-<case>.png with the cases
@@ -11,15 +12,19 @@ The bunny scan at opacity 0.35 (or 1) around the pinion gear (both from the real
   nogear      the default without the gear
   opaque      the bunny at opacity 1;  opaque-nogear  the same without the gear
 and, for the masks, none-bunny, none-gear and none-empty: ParaView's own rendering (Style None)
-of the bunny alone, the gear alone and nothing.
+of the bunny alone, the gear alone and nothing. With "split" both meshes go through ParaView's
+Redistribute DataSet filter, so that on several ranks each rank holds part of the bunny and part
+of the gear, and the script prints "pieces BUNNY GEAR": how many ranks hold part of each.
 """
 import sys
 
+import paraview.simple as simple
 from paraview.simple import (CreateView, Hide, PLYReader, Render, SaveScreenshot, Show,
                              Transform)
 from stylize_pv_scene import make_view
 
 prefix, data = sys.argv[1], sys.argv[2]
+split = len(sys.argv) > 3 and sys.argv[3] == "split"
 view = CreateView("StylizeView")
 make_view(view, [300, 240])
 view.Background = [1.0, 1.0, 1.0]
@@ -39,6 +44,18 @@ body = [0.1 * sb, -0.12 * sb, 0.0]
 placed = Transform(Input=gear)
 placed.Transform.Scale = [scale] * 3
 placed.Transform.Translate = [cb[i] + body[i] - scale * cg[i] for i in range(3)]
+
+if split:
+    counts = []
+    for name in ("bunny", "placed"):
+        parts = simple.RedistributeDataSet(Input=globals()[name])
+        ids = (getattr(simple, "GenerateProcessIds", None) or simple.ProcessIdScalars)(Input=parts)
+        ids.UpdatePipeline()
+        array = ids.PointData.GetArray("ProcessId")
+        low, high = array.GetRange() if array else (0, 0)
+        counts.append(int(high - low) + 1)
+        globals()[name] = parts
+    print("pieces %d %d" % tuple(counts))
 
 bunny_display = Show(bunny, view)
 gear_display = Show(placed, view)

@@ -23,7 +23,7 @@ from vtkstylize_testing import vtkStylizeImageMetrics as M
 from vtkmodules.vtkIOImage import vtkPNGReader
 from pvbatch_script import run_render_script
 
-prefix = run_render_script(sys.argv[1], "render_screenshots.py", sys.argv[2], "shot")
+prefix, _ = run_render_script(sys.argv[1], "render_screenshots.py", sys.argv[2], "shot")
 
 
 def read(path):

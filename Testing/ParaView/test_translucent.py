@@ -13,8 +13,13 @@ for where the bunny and the gear are:
 - the gear shows through the translucent bunny (its pixels differ from the picture without the
   gear by more than 8 levels on average) and not at all through the bunny at opacity 1.
 
-With several processes each rank draws its translucent geometry plain and IceT composites it
-(a layer of the whole scene would need every rank's props): docs/paraview.md.
+Several ranks (mpiexec): both meshes split across 2 ranks by Redistribute DataSet (checked:
+each rank holds part of the bunny and part of the gear), each rank renders the layers of its
+own props, peeled in front of the composited opaque depth and behind the whole scene's previous
+layer, and the style composites each layer by depth across the ranks. Against the same split
+scene on 1 rank, per style, for the translucent bunny around the gear (layers and depth peeling
+off), without the gear, and opaque: at most 0.5% of the pixels more than 16 levels apart (the
+issue's bound for the ranks' composited G-buffer).
 """
 import os
 import sys
@@ -26,11 +31,11 @@ from pvbatch_script import run_render_script  # noqa: E402
 from stylize_png import png_array  # noqa: E402
 
 pvbatch, data, out = sys.argv[1], sys.argv[2], sys.argv[3]
-prefix = run_render_script(pvbatch, "render_translucent.py", out, "translucent", data)
+prefix, _ = run_render_script(pvbatch, "render_translucent.py", out, "translucent", data)
 
 
-def load(name):
-    return png_array("%s-%s.png" % (prefix, name))[:, :, :3]
+def load(name, at=None):
+    return png_array("%s-%s.png" % (at or prefix, name))[:, :, :3]
 
 
 def differs(a, b, tolerance=16):
@@ -71,6 +76,33 @@ for name in ["comic", "pixel", "sketch"]:
     check(peeling == 0, "%s: depth peeling changed %d pixels" % (name, peeling))
     check(shows > 8.0, "%s: the gear does not show through (%.1f)" % (name, shows))
     check(opaque == 0, "%s: the gear shows through the opaque bunny (%d px)" % (name, opaque))
+
+# Several ranks: the split scene on 1 and on 2 ranks.
+runs = {}
+for ranks in (1, 2):
+    runs[ranks], log = run_render_script(pvbatch, "render_translucent.py", out, "split%d" % ranks,
+                                         data, "split", ranks=ranks)
+    pieces = [line.split()[1:] for line in log.splitlines() if line.startswith("pieces")]
+    print("%d rank(s): ranks holding part of the bunny, of the gear: %s" % (
+        ranks, " ".join(pieces[-1]) if pieces else "?"))
+    check(pieces and pieces[-1] == [str(ranks)] * 2,
+          "%d rank(s): the meshes are not split across the ranks" % ranks)
+cases = ["layers", "peeling", "nogear", "opaque"]
+print("| style | " + " | ".join("%s: px > 16 levels, 1 vs 2 ranks" % c for c in cases) + " |")
+print("|---|" + "---:|" * len(cases))
+for name in ["comic", "pixel", "sketch"]:
+    row = []
+    for case in cases:
+        one, two = load(name + "-" + case, runs[1]), load(name + "-" + case, runs[2])
+        far = np.count_nonzero(differs(one, two))
+        share = far / float(one.shape[0] * one.shape[1])
+        row.append("%d (%.2f%%)" % (far, 100.0 * share))
+        check(share <= 0.005, "%s-%s: 1 and 2 ranks differ in %d pixels" % (name, case, far))
+    print("| %s | %s |" % (name, " | ".join(row)))
+    # the 2-rank layers are stylized (not the translucent bunny left out or drawn plain)
+    two = load(name + "-layers", runs[2])
+    check(np.count_nonzero(differs(two, load(name + "-opaque", runs[2])) & bunny) >
+          0.2 * np.count_nonzero(bunny), "%s: the 2-rank translucent bunny is missing" % name)
 if failures:
     sys.exit("%d failure(s)" % len(failures))
 print("OK")

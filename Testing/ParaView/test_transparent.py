@@ -26,7 +26,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from pvbatch_script import run_render_script  # noqa: E402
 from stylize_png import png_array as load  # noqa: E402
 
-prefix = run_render_script(sys.argv[1], "render_transparent.py", sys.argv[2], "transparent")
+prefix, _ = run_render_script(sys.argv[1], "render_transparent.py", sys.argv[2], "transparent")
 
 
 background = np.array([0.32, 0.34, 0.43]) * 255.0  # stylize_pv_scene.BACKGROUND
