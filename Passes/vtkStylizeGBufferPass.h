@@ -292,6 +292,12 @@ public:
    * and screen transform are this pass's own settings: give them `opaque`'s. Returns false
    * when the layer holds no surface (an occlusion query counts its samples) or nothing could be
    * rendered.
+   *
+   * When `opaque` has a Controller of several processes (each rendering its own props), this is
+   * a collective call: every process gets process 0's opaque depth (at `index` 0), peels its
+   * layer behind the whole scene's previous layer, and process 0's layer becomes the nearest
+   * surface of all the processes' layers at each pixel (every channel, composited by depth as
+   * the channel source's are); the result says whether any process's layer holds a surface.
    */
   bool RenderTranslucentLayer(const vtkRenderState* s, vtkStylizeGBufferPass* opaque, int index);
 

@@ -144,8 +144,10 @@ public:
    * the nearest translucent surface not yet drawn (depth peeling; a layer that holds nothing
    * ends the peeling early), composited over the stylized opaque scene with the surface's
    * opacity, lines at full strength. Surfaces beyond the last layer are not drawn. 0 draws
-   * translucent geometry unstylized: lit and blended over the stylized image. A closed translucent surface has two layers (its front and its
-   * back). From 0 to 16; default 4 (VTK's default number of depth peels).
+   * translucent geometry unstylized: lit and blended over the stylized image (on several
+   * ParaView ranks, composited by depth, it is left out). A closed translucent surface has two
+   * layers (its front and its back). Range [0, 16] layers; default 4 (VTK's default number of
+   * depth peels).
    */
   vtkSetClampMacro(TranslucentLayers, int, 0, 16);
   vtkGetMacro(TranslucentLayers, int);

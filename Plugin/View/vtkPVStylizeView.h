@@ -19,6 +19,11 @@
  *    over the global controller; where none covers a pixel they are rebuilt from the depth.
  *    With one process the same path is taken, so the image does not depend on the number of
  *    ranks beyond what compositing itself changes.
+ * 3. **Translucent surfaces** (TranslucentLayers above 0): the ranks leave them out of their
+ *    images, and the style renders them layer by layer from each rank's props, each layer
+ *    composited by depth across the ranks (vtkStylizeGBufferPass::RenderTranslucentLayer()).
+ *    Under a style the ranks are always composited by depth: ParaView's ordered compositing
+ *    (which translucent data on several ranks asks for) carries no depth.
  *
  * The passes are the view's sub-proxies (ComicPass, PixelArtPass, SketchPass, LightingPass);
  * their settings appear in the view's properties panel (generated from the pass headers by
