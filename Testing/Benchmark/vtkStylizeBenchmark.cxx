@@ -89,7 +89,9 @@ const std::vector<std::string>& AllConfigs()
     "gbuf-pixelart", "gbuf-standard-color", "gbuf-comic-lin", "comic", "comic-geometric", "pixel-fast-2",
     "pixel-fast-4", "pixel-fast-8", "pixel-faithful-2", "pixel-faithful-4", "pixel-faithful-8", "sketch-2", "sketch-4", "sketch-8",
     "sketch-8-stage", "comic-image", "pixel-image", "sketch-image", "comic-nocull",
-    "sketch-8-nocull", "comic-interactive", "sketch-8-interactive", "pixel-faithful-4-interactive" };
+    "sketch-8-nocull", "comic-interactive", "sketch-8-interactive", "pixel-faithful-4-interactive",
+    "plain-translucent", "comic-translucent", "pixel-faithful-4-translucent",
+    "sketch-8-translucent" };
   return configs;
 }
 
@@ -455,6 +457,16 @@ ConfigPasses MakeConfig(const std::string& name, double diagonal)
   if (EndsWith(name, "-nocull"))
   {
     return MakeNoCullConfig(name, diagonal);
+  }
+  if (EndsWith(name, "-translucent"))
+  {
+    // NAME-translucent: NAME with the actor at opacity 0.35 (Bench sets it): a style draws
+    // its translucent layers (TranslucentLayers, default 4), plain VTK peels with its own depth
+    // peeling (the renderer's UseDepthPeeling, 4 peels).
+    ConfigPasses c = MakeConfig(name.substr(0, name.size() - 12), diagonal);
+    c.Description += c.Root ? "; the actor at opacity 0.35 (the style's translucent layers, 4)"
+                            : "; the actor at opacity 0.35, VTK's depth peeling (4 peels)";
+    return c;
   }
   if (EndsWith(name, "-interactive"))
   {
@@ -1206,6 +1218,13 @@ struct Bench
     actor->GetProperty()->SetColor(0.9, 0.75, 0.6);
     actor->GetProperty()->SetSpecular(0.3);
     actor->GetProperty()->SetSpecularPower(20.0);
+    if (EndsWith(config, "-translucent"))
+    {
+      actor->GetProperty()->SetOpacity(0.35);
+      this->Renderer->UseDepthPeelingOn();
+      this->Renderer->SetMaximumNumberOfPeels(4);
+      this->Renderer->SetOcclusionRatio(0.0);
+    }
     this->Renderer->AddActor(actor);
     if (this->Passes.Root)
     {
