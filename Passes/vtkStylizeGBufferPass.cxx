@@ -191,6 +191,28 @@ public:
   vtkTextureObject* Composited[4] = { nullptr, nullptr, nullptr, nullptr };
   int SourceRect[4] = { 0, 0, 0, 0 };
 
+  /** The texture of a buffer (COLOR_BUFFER, ..., DEPTH_BUFFER); nullptr when not allocated. */
+  static vtkTextureObject* TextureOf(vtkStylizeGBufferPass* self, int buffer)
+  {
+    switch (buffer)
+    {
+      case COLOR_BUFFER:
+        return self->ColorTexture;
+      case NORMAL_BUFFER:
+        return self->NormalTexture;
+      case POSITION_BUFFER:
+        return self->PositionTexture;
+      case DEPTH_BUFFER:
+        return self->DepthTexture;
+      case LINEAR_DEPTH_BUFFER:
+        return self->LinearDepthTexture;
+      case DIRECTION_BUFFER:
+        return self->DirectionTexture;
+      default:
+        return nullptr;
+    }
+  }
+
   // Compositing by depth across processes (each a collective call where it takes a controller).
   /**
    * Reads `self`'s depth and `buffers` (COLOR_BUFFER, ...) inside rect, or when rect is null
@@ -997,30 +1019,7 @@ void vtkStylizeGBufferPass::RenderSceneImage(
 //------------------------------------------------------------------------------
 bool vtkStylizeGBufferPass::DownloadChannel(int buffer, vtkFloatArray* out)
 {
-  vtkTextureObject* tex = nullptr;
-  switch (buffer)
-  {
-    case COLOR_BUFFER:
-      tex = this->ColorTexture;
-      break;
-    case NORMAL_BUFFER:
-      tex = this->NormalTexture;
-      break;
-    case POSITION_BUFFER:
-      tex = this->PositionTexture;
-      break;
-    case DEPTH_BUFFER:
-      tex = this->DepthTexture;
-      break;
-    case LINEAR_DEPTH_BUFFER:
-      tex = this->LinearDepthTexture;
-      break;
-    case DIRECTION_BUFFER:
-      tex = this->DirectionTexture;
-      break;
-    default:
-      break;
-  }
+  vtkTextureObject* tex = vtkInternals::TextureOf(this, buffer);
   if (!tex || !out || !this->FrameBufferObject)
   {
     return false;
@@ -1358,15 +1357,13 @@ bool vtkStylizeGBufferPass::vtkInternals::CompositeLayer(
   const int h = self->GeometrySize[1];
   const bool root = controller->GetLocalProcessId() == 0;
   rendered = rendered && self->LayerHasSamples;
-  std::vector<int> buffers = { COLOR_BUFFER };
-  for (auto channel : { std::make_pair(self->NormalTexture, NORMAL_BUFFER),
-         std::make_pair(self->PositionTexture, POSITION_BUFFER),
-         std::make_pair(self->LinearDepthTexture, LINEAR_DEPTH_BUFFER),
-         std::make_pair(self->DirectionTexture, DIRECTION_BUFFER) })
+  std::vector<int> buffers; // every channel the layer holds
+  for (int buffer : { COLOR_BUFFER, NORMAL_BUFFER, POSITION_BUFFER, LINEAR_DEPTH_BUFFER,
+         DIRECTION_BUFFER })
   {
-    if (channel.first)
+    if (TextureOf(self, buffer))
     {
-      buffers.push_back(channel.second);
+      buffers.push_back(buffer);
     }
   }
   // 1. The other processes' layers, nearest by depth, to process 0.
@@ -1401,16 +1398,10 @@ bool vtkStylizeGBufferPass::vtkInternals::CompositeLayer(
       {
         PastePart(layer, others, components, true);
       }
-      vtkTextureObject* const textures[5] = { self->ColorTexture, self->NormalTexture,
-        self->PositionTexture, self->LinearDepthTexture, self->DirectionTexture };
       for (size_t c = 0; c < buffers.size(); ++c)
       {
-        const int slot = buffers[c] == COLOR_BUFFER ? 0
-          : buffers[c] == NORMAL_BUFFER             ? 1
-          : buffers[c] == POSITION_BUFFER           ? 2
-          : buffers[c] == LINEAR_DEPTH_BUFFER       ? 3
-                                                    : 4;
-        UploadTexels(textures[slot], layer.Rect, buffers[c], layer.Channels[c].data());
+        UploadTexels(
+          TextureOf(self, buffers[c]), layer.Rect, buffers[c], layer.Channels[c].data());
       }
       UploadTexels(self->DepthTexture, layer.Rect, DEPTH_BUFFER, layer.Depth.data());
     }
