@@ -308,6 +308,26 @@ int vtkStylizePrincipalCurvatures::RequestData(
     }
     m[1][0] = m[0][1];
     m[2][1] = m[1][2];
+    // The system scaled to unit trace (vtkMath's pivot test is absolute: a tiny face would fail
+    // it), and a degenerate face (a singular system, as where a parametric surface closes on
+    // itself) skipped here, before vtkMath warns about it.
+    const double trace = m[0][0] + m[1][1] + m[2][2];
+    if (!(trace > 0.0) || !std::isfinite(trace))
+    {
+      continue;
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      r[i] /= trace;
+      for (int j = 0; j < 3; ++j)
+      {
+        m[i][j] /= trace;
+      }
+    }
+    if (!(std::abs(vtkMath::Determinant3x3(m)) > 1e-9))
+    {
+      continue;
+    }
     double* rows[3] = { m[0], m[1], m[2] };
     if (!vtkMath::SolveLinearSystem(rows, r, 3))
     {
