@@ -610,6 +610,15 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   {
     this->BeginLayer(&sfbo);
   }
+  // Blending (VTK keeps it on for opaque geometry) applies to the colour alone: the other
+  // channels keep what the nearest fragment wrote. Blended by their alpha (the direction's
+  // confidence, 0 on lines), they would mix with whatever the same pixel held before, which
+  // depends on the order the triangles are drawn in: a rank's piece of a mesh gave other
+  // directions than the whole mesh.
+  for (unsigned int i = 1; i < n; ++i)
+  {
+    glDisablei(GL_BLEND, i);
+  }
   if (this->LightingPass)
   {
     this->LightingPass->RenderWithLighting(&sfbo, this->GeometryCameraPass);
@@ -622,6 +631,14 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   if (layer)
   {
     this->EndLayer(&sfbo);
+  }
+  if (renWin->GetState()->GetEnumState(GL_BLEND))
+  {
+    // (glDisablei leaves VTK's state cache unaware: the cached GL_BLEND holds for every buffer)
+    for (unsigned int i = 1; i < n; ++i)
+    {
+      glEnablei(GL_BLEND, i);
+    }
   }
   this->PostRender(&sfbo);
   ++this->GeometryRenders;

@@ -13,9 +13,10 @@ and depth. With 1 rank there is no compositing. Tolerances, from what differs an
   lighting, applied by each rank to its piece): as for the comic below, and it must change
   the 2-rank image (at least 2000 pixels beyond 16 levels from the comic image).
 - sketch-model: the sketch along the Principal Curvatures filter's directions (the point data's
-  tangents, composited by depth like the normals): SSIM >= 0.99 and at most 2% of the pixels
-  (measured 1.6%: see LIMITS), and it must change the sketch on 1 and on 2 ranks (at least 1000
-  pixels beyond 16 levels).
+  tangents, composited by depth like the normals): as for the sketch below, and it must change
+  the sketch on 1 and on 2 ranks (at least 1000 pixels beyond 16 levels). (It differed by 1.6%
+  while the G-buffer blended its direction channel with what the pixel held before: a rank's piece
+  is drawn in another order than the whole contour; measured 0.02% since.)
 - comic (and comic-subject), pixel art, sketch: at most 0.5% of the pixels more than 16 levels
   apart, SSIM >= 0.99. The ranks' normals reach the style composited by depth
   (vtkStylizeGBufferPass::SetChannelSource), and IceT's transparent background is taken as the
@@ -72,10 +73,6 @@ if len(info2) < 4 or int(info2[3]) != 2:
     failures.append("the data is not split across the 2 ranks: %s" % " ".join(info2))
 
 M = vtkStylizeImageMetrics
-# Share of the pixels allowed beyond 16 levels, where it is not 0.5%: the model sketch of the
-# split contour differs by 1.6% (measured; the same data unsplit on 2 ranks: 0 pixels, and the
-# filter's values at every point a rank draws equal the 1-rank values: open in issue 16).
-LIMITS = {"sketch-model": 0.02}
 print("| style | SSIM | max difference | pixels > 16 levels | PSNR dB |")
 print("|---|---:|---:|---:|---:|")
 for name in ["none", "comic", "pixel", "sketch", "comic-subject", "sketch-model"]:
@@ -92,9 +89,9 @@ for name in ["none", "comic", "pixel", "sketch", "comic-subject", "sketch-model"
     if name == "none":
         if worst > 2:
             failures.append("none: 1 and 2 ranks differ (max %g)" % worst)
-    elif far > LIMITS.get(name, 0.005) * pixels or ssim < 0.99:
-        failures.append("%s: SSIM %.4f, %d pixels beyond 16 levels (at most %g%%)"
-                        % (name, ssim, far, 100.0 * LIMITS.get(name, 0.005)))
+    elif far > 0.005 * pixels or ssim < 0.99:
+        failures.append("%s: SSIM %.4f, %d pixels beyond 16 levels (at most 0.5%%)"
+                        % (name, ssim, far))
     # each style must differ from ParaView's own image (the style ran after compositing)
     if name != "none" and M.SSIM(read("%s-none.png" % two), b, 255.0) > 0.9:
         failures.append("%s: the 2-rank image looks unstylized" % name)

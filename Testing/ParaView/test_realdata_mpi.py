@@ -1,0 +1,77 @@
+#!/usr/bin/python3
+"""paraview.realdata_mpi: real data split across 2 ranks against 1 rank, every style.
+
+    test_realdata_mpi.py PVBATCH_WRAPPER DATA_DIR OUTPUT_DIR
+
+render_realdata.py shows a scanned mesh (the bunny) and simulation output (the surface of an
+Exodus II hexahedral mesh, the vessel), each split by Redistribute DataSet with a layer of ghost
+cells (checked: on 2 ranks each rank holds part of each), in each style, and the sketch along the
+Principal Curvatures filter's directions (computed per rank) on the bunny. After IceT compositing
+each style reads the ranks' own normals, positions and directions composited by depth (issue 16),
+so the 2-rank picture must be the 1-rank one: at most 0.5% of the pixels more than 16 levels
+apart and SSIM >= 0.99, for ParaView's own image (Style None) as for each style. (The paraview.mpi
+test does the same on the Wavelet contour.)
+"""
+import os
+import sys
+
+from vtkstylize_testing import vtkStylizeImageMetrics as M
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pvbatch_script import run_render_script  # noqa: E402
+
+pvbatch, data, out = sys.argv[1], sys.argv[2], sys.argv[3]
+failures = []
+
+
+def read(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+prefixes = {}
+for ranks in (1, 2):
+    prefixes[ranks], log = run_render_script(pvbatch, "render_realdata.py", out, "ranks%d" % ranks,
+                                             data, ranks=ranks)
+    pieces = dict(line.split()[1:3] for line in log.splitlines() if line.startswith("pieces "))
+    print("%d rank(s): ranks holding part of each dataset: %s" % (ranks, pieces))
+    for name in ("bunny", "vessel"):
+        if pieces.get(name) != str(ranks):
+            failures.append("%d rank(s): %s is not split across the ranks (%s)"
+                            % (ranks, name, pieces.get(name)))
+
+images = ["%s-%s" % (d, s) for d in ("bunny", "vessel") for s in ("none", "comic", "pixel", "sketch")]
+images.insert(4, "bunny-sketch-model")
+print("| image | SSIM | max difference | pixels > 16 levels |")
+print("|---|---:|---:|---:|")
+for name in images:
+    a = read("%s-%s.png" % (prefixes[1], name))
+    b = read("%s-%s.png" % (prefixes[2], name))
+    dims = a.GetDimensions()
+    pixels = dims[0] * dims[1]
+    ssim = M.SSIM(a, b, 255.0)
+    far = M.CountDifferences(a, b, 16.0)
+    print("| %s | %.4f | %.0f | %d (%.2f%%) |" % (name, ssim, M.MaximumDifference(a, b), far,
+                                                  100.0 * far / pixels))
+    if far > 0.005 * pixels or ssim < 0.99:
+        failures.append("%s: SSIM %.4f, %d pixels beyond 16 levels (at most 0.5%%)"
+                        % (name, ssim, far))
+    # each style ran after compositing: its picture is not ParaView's own
+    dataset = name.split("-")[0]
+    if not name.endswith("-none") and M.SSIM(read("%s-%s-none.png" % (prefixes[2], dataset)),
+                                             b, 255.0) > 0.9:
+        failures.append("%s: the 2-rank image looks unstylized" % name)
+
+# the model directions act on 2 ranks: the sketch along them is not the screen estimate
+change = M.CountDifferences(read("%s-bunny-sketch.png" % prefixes[2]),
+                            read("%s-bunny-sketch-model.png" % prefixes[2]), 16.0)
+print("bunny sketch-model vs sketch on 2 ranks: %d pixels beyond 16 levels" % change)
+if change < 1000:
+    failures.append("model directions barely change the 2-rank sketch (%d pixels)" % change)
+
+for f in failures:
+    print("FAIL:", f)
+sys.exit(1 if failures else 0)
