@@ -212,6 +212,83 @@ void CheckInputFile(const std::string& path, bool allowEmpty = false)
 
 namespace
 {
+/** path's folder with a slash ("" for a bare name). */
+std::string Folder(const std::string& path)
+{
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+
+/**
+ * The files an XML multiblock (.vtm, DataSet's "file") or parallel (.pvt*, Piece's "Source")
+ * file names, before VTK's reader opens them: each must be a readable regular file (a FIFO or a
+ * device would block the reader forever, a missing one is named here rather than skipped), and a
+ * multiblock file may not name itself through any chain of multiblock files. chain: the
+ * multiblock files that led here.
+ */
+void CheckReferencedFiles(const std::string& path, std::vector<std::string> chain = {},
+  const std::string& input = std::string())
+{
+  const std::string& top = input.empty() ? path : input;
+  const std::string extension = Extension(path);
+  const bool multiblock = extension == ".vtm";
+  if (!multiblock && extension.compare(0, 4, ".pvt") != 0)
+  {
+    return;
+  }
+  char* canonical = ::realpath(path.c_str(), nullptr);
+  const std::string real = canonical ? canonical : path;
+  std::free(canonical);
+  if (std::find(chain.begin(), chain.end(), real) != chain.end())
+  {
+    Fail("cannot read " + Quote(top) + ": the multiblock file " + Quote(path) +
+      " names itself (a loop of " + std::to_string(chain.size()) + " file" +
+      (chain.size() == 1 ? "" : "s") + ")");
+  }
+  chain.push_back(real);
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetFileName(path.c_str());
+  ClearVTKErrors();
+  if (!parser->Parse() || !parser->GetRootElement())
+  {
+    ClearVTKErrors();
+    Fail("cannot read " + Quote(top) + ": " + (path == top ? std::string() : Quote(path) + " is ") +
+      "not a well-formed VTK XML file");
+  }
+  ClearVTKErrors();
+  const char* attribute = multiblock ? "file" : "Source";
+  std::vector<vtkXMLDataElement*> pending = { parser->GetRootElement() };
+  while (!pending.empty())
+  {
+    vtkXMLDataElement* e = pending.back();
+    pending.pop_back();
+    for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
+    {
+      pending.push_back(e->GetNestedElement(i));
+    }
+    const char* name = e->GetAttribute(attribute);
+    if (!name || !*name)
+    {
+      continue;
+    }
+    std::string file = name;
+    if (file[0] != '/')
+    {
+      file = Folder(path) + file;
+    }
+    struct stat st;
+    if (::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+    {
+      Fail("cannot read " + Quote(top) + ": " + (path == top ? "it" : Quote(path)) + " names " +
+        Quote(file) + ", which " +
+        (::stat(file.c_str(), &st) != 0 ? std::string("cannot be read: ") + std::strerror(errno)
+                                         : std::string("is not a regular file")));
+    }
+    CheckInputFile(file);
+    CheckReferencedFiles(file, chain, top);
+  }
+}
+
 /**
  * The data set files of a ParaView data (.pvd) collection, in time order, read with VTK's XML
  * parser; a relative file is relative to the .pvd's folder.
@@ -452,6 +529,7 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
     UsageError("unsupported file type " + Quote(path) + " (supported: " + SupportedExtensions() + ")");
   }
   CheckInputFile(path, it->first == ".foam");
+  CheckReferencedFiles(path);
   // Structural checks for the formats whose readers crash or read garbage on broken files.
   using Check = std::string (*)(const std::string&);
   static const std::map<std::string, Check> checks = { { ".ply", vtkstylize::CheckPLYFile },

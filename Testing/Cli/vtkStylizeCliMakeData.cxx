@@ -637,5 +637,24 @@ int main(int argc, char* argv[])
     << "# vtk DataFile Version 3.0\nstrips and polygons\nASCII\nDATASET POLYDATA\n"
        "POINTS 8 float\n0 0 0\n1 0 0\n0 1 0\n1 1 0.2\n0 2 0\n1 2 0\n2 0 0\n2 1 0.3\n"
        "POLYGONS 1 5\n4 1 6 7 3\nTRIANGLE_STRIPS 1 7\n6 0 1 2 3 4 5\n";
+
+  // Hostile input (issue 17). Multiblock references: a block that is a FIFO (a reader would block
+  // on it forever), a file that names itself, two files that name each other.
+  const auto vtm = [](const std::string& file) {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\">\n"
+           "  <vtkMultiBlockDataSet>\n    <DataSet index=\"0\" file=\"" +
+      file + "\"/>\n  </vtkMultiBlockDataSet>\n</VTKFile>\n";
+  };
+  ::unlink(P("fifo_block.vtp").c_str());
+  if (::mkfifo(P("fifo_block.vtp").c_str(), 0600) != 0)
+  {
+    std::cerr << "cannot make the FIFO fifo_block.vtp\n";
+    Failed = true;
+  }
+  WriteText("fifo_block.vtm", vtm("fifo_block.vtp"));
+  WriteText("self_loop.vtm", vtm("self_loop.vtm"));
+  ::mkdir(P("loop").c_str(), 0755);
+  WriteText("loop/inner.vtm", vtm("../outer_loop.vtm"));
+  WriteText("outer_loop.vtm", vtm("loop/inner.vtm"));
   return Failed ? 1 : 0;
 }
