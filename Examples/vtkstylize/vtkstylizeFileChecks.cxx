@@ -1,7 +1,15 @@
 #include "vtkstylizeFileChecks.h"
 
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLDataElement.h"
+#include "vtkXMLUnstructuredGridReader.h"
+
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -93,10 +101,14 @@ public:
     return true;
   }
 
-  /** Reads one line without its end-of-line characters; false at end of file. */
-  bool GetLine(std::string& line)
+  /**
+   * Reads one line without its end-of-line characters; false at end of file. At most keep
+   * characters are kept (the rest of the line is consumed): LineCut() says whether it was cut.
+   */
+  bool GetLine(std::string& line, std::size_t keep = std::string::npos)
   {
     line.clear();
+    this->Cut = false;
     bool any = false;
     while (true)
     {
@@ -111,7 +123,14 @@ public:
       {
         break;
       }
-      line += c;
+      if (line.size() < keep)
+      {
+        line += c;
+      }
+      else
+      {
+        this->Cut = true;
+      }
     }
     if (!line.empty() && line.back() == '\r')
     {
@@ -121,6 +140,9 @@ public:
   }
 
   long long GetOffset() const { return this->Offset; }
+
+  /** Whether the last GetLine() cut its line. */
+  bool LineCut() const { return this->Cut; }
 
 private:
   bool Fill()
@@ -136,6 +158,7 @@ private:
   std::size_t Pos = 0;
   std::size_t End = 0;
   long long Offset = 0;
+  bool Cut = false;
 };
 
 std::vector<std::string> Words(const std::string& line)
@@ -661,6 +684,74 @@ std::string CheckOBJFile(const std::string& path)
 // VTK legacy
 //------------------------------------------------------------------------------
 
+namespace
+{
+/** A count as an integer, or in %g form beyond 1e15 (a header's claim can be any number). */
+std::string FormatCount(double value)
+{
+  if (std::isfinite(value) && std::abs(value) < 1e15 && value == std::floor(value))
+  {
+    return std::to_string(static_cast<long long>(value));
+  }
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", value);
+  return text;
+}
+
+std::string Upper(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return text;
+}
+
+std::string Quote(const std::string& text)
+{
+  return "'" + text + "'";
+}
+
+/** Bytes of one value of a legacy VTK data type in a BINARY file (0: unknown). */
+double LegacyTypeBytes(std::string type)
+{
+  std::transform(type.begin(), type.end(), type.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (type == "bit")
+  {
+    return 0.125;
+  }
+  if (type == "char" || type == "unsigned_char" || type == "signed_char")
+  {
+    return 1.0;
+  }
+  if (type == "short" || type == "unsigned_short")
+  {
+    return 2.0;
+  }
+  if (type == "int" || type == "unsigned_int" || type == "float")
+  {
+    return 4.0;
+  }
+  if (type == "long" || type == "unsigned_long" || type == "double" || type == "vtktypeint64" ||
+    type == "vtktypeuint64" || type == "vtkidtype")
+  {
+    return 8.0;
+  }
+  return 0.0;
+}
+
+/** "nan", "-inf", "Infinity"...: a token VTK's legacy ASCII reader cannot read. */
+bool NonFiniteToken(std::string token)
+{
+  std::transform(token.begin(), token.end(), token.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (!token.empty() && (token[0] == '-' || token[0] == '+'))
+  {
+    token.erase(0, 1);
+  }
+  return token == "nan" || token == "inf" || token == "infinity" || token.compare(0, 4, "nan(") == 0;
+}
+} // namespace
+
 std::string CheckLegacyVTKFile(const std::string& path)
 {
   FileReader in(path);
@@ -668,10 +759,222 @@ std::string CheckLegacyVTKFile(const std::string& path)
   {
     return std::strerror(errno);
   }
+  const long long size = in.Size();
   std::string line;
-  if (!in.GetLine(line) || line.compare(0, 22, "# vtk DataFile Version") != 0)
+  if (!in.GetLine(line, 256) || line.compare(0, 22, "# vtk DataFile Version") != 0)
   {
     return "not a VTK legacy file (it does not start with '# vtk DataFile Version')";
+  }
+  const bool version5 = line.size() > 23 && std::atof(line.c_str() + 23) >= 5.0;
+  if (!in.GetLine(line, 256)) // the title
+  {
+    return "the file ends after its first line";
+  }
+  if (!in.GetLine(line, 256))
+  {
+    return "the file ends before its ASCII or BINARY line";
+  }
+  std::vector<std::string> w = Words(line);
+  std::string mode = w.empty() ? std::string() : w[0];
+  std::transform(mode.begin(), mode.end(), mode.begin(),
+    [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  if (mode != "ASCII" && mode != "BINARY")
+  {
+    return "line 3 must say ASCII or BINARY";
+  }
+  const bool binary = mode == "BINARY";
+
+  // Each section's size, checked against the bytes left before the reader allocates for it (a
+  // header that claims a billion cells would have it allocate tens of GB), and the counts that
+  // must agree (a short CELL_TYPES section leaves cell types the reader never fills).
+  long long lineNumber = 3;
+  double points = -1.0, cells = 0.0, attribute = -1.0, pendingValues = -1.0, pendingBytes = 0.0;
+  double lastOffsets = 0.0, lastCells = 0.0, lastSize = 0.0;
+  bool unstructured = false;
+  int fieldArrays = 0;
+  std::string problem;
+  const auto claim = [&](double values, double bytes, const std::string& what) {
+    const double left = static_cast<double>(size - in.GetOffset());
+    const double needed = binary ? values * bytes : 2.0 * values - 1.0;
+    if (!(values >= 0.0) || needed > left)
+    {
+      problem = "line " + std::to_string(lineNumber) + ": " + what + " claims " +
+        FormatCount(values) + " values, more than the rest of the file (" +
+        std::to_string(static_cast<long long>(left)) + " bytes) can hold";
+      return false;
+    }
+    if (binary && !in.Skip(static_cast<long long>(std::ceil(values * bytes))))
+    {
+      problem = "line " + std::to_string(lineNumber) + ": the file ends inside " + what;
+      return false;
+    }
+    return true;
+  };
+  const auto number = [&w](std::size_t i) {
+    return i < w.size() ? std::strtod(w[i].c_str(), nullptr) : -1.0;
+  };
+  while (in.GetLine(line, 4096))
+  {
+    ++lineNumber;
+    w = Words(line);
+    if (w.empty())
+    {
+      continue;
+    }
+    std::string key = w[0];
+    std::transform(key.begin(), key.end(), key.begin(),
+      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    const std::string section = w[0];
+    bool ok = true;
+    bool known = true;
+    if (key == "SPACING" || key == "ORIGIN" || key == "ASPECT_RATIO")
+    {
+    }
+    else if (key == "METADATA")
+    {
+      // (component names and information keys, up to an empty line)
+      while (in.GetLine(line, 4096) && !Words(line).empty())
+      {
+        ++lineNumber;
+      }
+      ++lineNumber;
+    }
+    else if (key == "DATASET")
+    {
+      unstructured = w.size() > 1 && Upper(w[1]) == "UNSTRUCTURED_GRID";
+    }
+    else if (key == "POINTS" && w.size() >= 3)
+    {
+      points = number(1);
+      ok = claim(3.0 * points, LegacyTypeBytes(w[2]), section);
+    }
+    else if ((key == "VERTICES" || key == "LINES" || key == "POLYGONS" || key == "TRIANGLE_STRIPS" ||
+               key == "CELLS") && w.size() >= 3)
+    {
+      // (version 5: the count of offsets, one more than the cells, and of connectivity values)
+      lastOffsets = number(1);
+      lastCells = version5 ? lastOffsets - 1.0 : lastOffsets;
+      lastSize = number(2);
+      cells += std::max(lastCells, 0.0);
+      ok = version5 ? lastOffsets >= 0.0 && lastSize >= 0.0 : claim(lastSize, 4.0, section);
+      if (version5 && !ok)
+      {
+        problem = "line " + std::to_string(lineNumber) + ": " + section + " has negative counts";
+      }
+    }
+    else if (key == "OFFSETS" && w.size() >= 2)
+    {
+      ok = claim(lastOffsets, LegacyTypeBytes(w[1]), section);
+    }
+    else if (key == "CONNECTIVITY" && w.size() >= 2)
+    {
+      ok = claim(lastSize, LegacyTypeBytes(w[1]), section);
+    }
+    else if (key == "CELL_TYPES" && w.size() >= 2)
+    {
+      if (unstructured && number(1) != lastCells)
+      {
+        problem = "line " + std::to_string(lineNumber) + ": CELL_TYPES lists " +
+          FormatCount(number(1)) + " types for " + FormatCount(lastCells) + " cells";
+        return problem;
+      }
+      ok = claim(number(1), 4.0, section);
+    }
+    else if ((key == "X_COORDINATES" || key == "Y_COORDINATES" || key == "Z_COORDINATES") &&
+      w.size() >= 3)
+    {
+      ok = claim(number(1), LegacyTypeBytes(w[2]), section);
+    }
+    else if (key == "DIMENSIONS" && w.size() >= 4)
+    {
+      points = number(1) * number(2) * number(3);
+    }
+    else if (key == "POINT_DATA" || key == "CELL_DATA")
+    {
+      attribute = number(1);
+      if (key == "POINT_DATA" && points >= 0.0 && attribute != points)
+      {
+        return "line " + std::to_string(lineNumber) + ": POINT_DATA holds " +
+          FormatCount(attribute) + " values for " + FormatCount(points) + " points";
+      }
+      if (key == "CELL_DATA" && cells > 0.0 && attribute != cells)
+      {
+        return "line " + std::to_string(lineNumber) + ": CELL_DATA holds " +
+          FormatCount(attribute) + " values for " + FormatCount(cells) + " cells";
+      }
+    }
+    else if (key == "SCALARS" && w.size() >= 3)
+    {
+      // the values follow the LOOKUP_TABLE line
+      pendingValues = attribute * (w.size() >= 4 ? number(3) : 1.0);
+      pendingBytes = LegacyTypeBytes(w[2]);
+    }
+    else if (key == "LOOKUP_TABLE" && w.size() == 2 && pendingValues >= 0.0)
+    {
+      ok = claim(pendingValues, pendingBytes, "SCALARS");
+      pendingValues = -1.0;
+    }
+    else if (key == "LOOKUP_TABLE" && w.size() >= 3)
+    {
+      ok = claim(4.0 * number(2), 1.0, section);
+    }
+    else if (key == "COLOR_SCALARS" && w.size() >= 3)
+    {
+      ok = claim(attribute * number(2), 1.0, section);
+    }
+    else if ((key == "VECTORS" || key == "NORMALS") && w.size() >= 3)
+    {
+      ok = claim(3.0 * attribute, LegacyTypeBytes(w[2]), section);
+    }
+    else if ((key == "TENSORS" || key == "TENSORS6") && w.size() >= 3)
+    {
+      ok = claim((key == "TENSORS" ? 9.0 : 6.0) * attribute, LegacyTypeBytes(w[2]), section);
+    }
+    else if (key == "TEXTURE_COORDINATES" && w.size() >= 4)
+    {
+      ok = claim(number(2) * attribute, LegacyTypeBytes(w[3]), section);
+    }
+    else if ((key == "GLOBAL_IDS" || key == "PEDIGREE_IDS") && w.size() >= 3)
+    {
+      ok = claim(attribute, LegacyTypeBytes(w[2]), section);
+    }
+    else if (key == "FIELD" && w.size() >= 3)
+    {
+      fieldArrays = static_cast<int>(std::max(0.0, std::min(number(2), 1e9)));
+    }
+    else if (fieldArrays > 0 && w.size() == 4 && LegacyTypeBytes(w[3]) > 0.0)
+    {
+      // a field array: name, components, tuples, type
+      --fieldArrays;
+      ok = claim(number(1) * number(2), LegacyTypeBytes(w[3]), "field array " + Quote(w[0]));
+    }
+    else
+    {
+      known = false;
+    }
+    if (!ok)
+    {
+      return problem;
+    }
+    if (!known)
+    {
+      if (binary)
+      {
+        return std::string(); // out of step with a binary file: the reader takes over
+      }
+      // ASCII values: VTK's reader stops at a token it cannot read, with a misleading message
+      if (line.find_first_of("nNiI") != std::string::npos)
+      {
+        for (const std::string& token : w)
+        {
+          if (NonFiniteToken(token))
+          {
+            return "line " + std::to_string(lineNumber) + " holds '" + token +
+              "': VTK's legacy reader reads no non-finite ASCII values (save the data as VTK XML)";
+          }
+        }
+      }
+    }
   }
   return std::string();
 }
@@ -725,5 +1028,140 @@ std::string CheckSTLFile(const std::string& path)
       " bytes, but the file has " + std::to_string(size) + " bytes)";
   }
   return std::string();
+}
+namespace
+{
+/**
+ * A reader that reads nothing but the polyhedron face streams of each piece, with the reader's
+ * own array decoding, and walks them with bounds checks (VTK 9.1's ReadFaceArray does not).
+ */
+class FaceStreamChecker : public vtkXMLUnstructuredGridReader
+{
+public:
+  static FaceStreamChecker* New();
+  vtkTypeMacro(FaceStreamChecker, vtkXMLUnstructuredGridReader);
+  std::string Problem;
+
+protected:
+  FaceStreamChecker() = default;
+  ~FaceStreamChecker() override = default;
+
+  int ReadPieceData() override
+  {
+    if (this->Problem.empty())
+    {
+      this->Problem = this->CheckPiece();
+    }
+    return 1; // nothing else is read
+  }
+
+  /** The values of the named 1-component array of the Cells element, count of them, or none. */
+  vtkSmartPointer<vtkDataArray> Values(vtkXMLDataElement* cells, const char* name, vtkIdType count)
+  {
+    vtkXMLDataElement* element = cells ? this->FindDataArrayWithName(cells, name) : nullptr;
+    if (!element || count <= 0)
+    {
+      return nullptr;
+    }
+    vtkSmartPointer<vtkAbstractArray> array;
+    array.TakeReference(this->CreateArray(element));
+    vtkSmartPointer<vtkDataArray> values = vtkDataArray::SafeDownCast(array);
+    if (!values || values->GetNumberOfComponents() != 1)
+    {
+      return nullptr;
+    }
+    values->SetNumberOfTuples(count);
+    if (!this->ReadArrayValues(element, 0, values, 0, count))
+    {
+      return nullptr;
+    }
+    return values;
+  }
+
+  std::string CheckPiece()
+  {
+    vtkXMLDataElement* cells = this->CellElements ? this->CellElements[this->Piece] : nullptr;
+    const vtkIdType numberOfCells = this->NumberOfCells ? this->NumberOfCells[this->Piece] : 0;
+    const vtkIdType numberOfPoints = this->GetNumberOfPointsInPiece(this->Piece);
+    const std::string piece = "piece " + std::to_string(this->Piece);
+    vtkSmartPointer<vtkDataArray> offsets = this->Values(cells, "faceoffsets", numberOfCells);
+    if (!offsets)
+    {
+      return std::string(); // no polyhedra (or an array the reader itself refuses)
+    }
+    // The stream's length: the last polyhedron's end (the reader's rule; -1 marks other cells).
+    vtkIdType length = -1;
+    for (vtkIdType i = numberOfCells - 1; i >= 0 && length < 0; --i)
+    {
+      const double end = offsets->GetComponent(i, 0);
+      if (end > -1.0)
+      {
+        length = static_cast<vtkIdType>(end);
+      }
+    }
+    if (length <= 0)
+    {
+      return std::string();
+    }
+    vtkSmartPointer<vtkDataArray> faces = this->Values(cells, "faces", length);
+    if (!faces)
+    {
+      return std::string(); // too short: the reader says so itself
+    }
+    const auto text = [](double v) { return std::to_string(static_cast<long long>(v)); };
+    vtkIdType at = 0;
+    for (vtkIdType cell = 0; cell < numberOfCells; ++cell)
+    {
+      if (offsets->GetComponent(cell, 0) < 0.0)
+      {
+        continue;
+      }
+      const std::string where = piece + ", cell " + text(static_cast<double>(cell));
+      if (at >= length)
+      {
+        return where + ": its polyhedron faces lie past the end of the \"faces\" array";
+      }
+      const double numberOfFaces = faces->GetComponent(at++, 0);
+      if (!(numberOfFaces >= 1.0) || numberOfFaces > static_cast<double>(length - at))
+      {
+        return where + ": the polyhedron claims " + text(numberOfFaces) +
+          " faces, more than the \"faces\" array holds";
+      }
+      for (vtkIdType f = 0; f < static_cast<vtkIdType>(numberOfFaces); ++f)
+      {
+        const double size = at < length ? faces->GetComponent(at, 0) : -1.0;
+        if (!(size >= 3.0) || size > static_cast<double>(length - at - 1))
+        {
+          return where + ": face " + text(static_cast<double>(f)) + " of the polyhedron has " +
+            text(size) + " points, which the \"faces\" array does not hold";
+        }
+        ++at;
+        for (vtkIdType k = 0; k < static_cast<vtkIdType>(size); ++k, ++at)
+        {
+          const double id = faces->GetComponent(at, 0);
+          if (!(id >= 0.0) || id >= static_cast<double>(numberOfPoints))
+          {
+            return where + ": a polyhedron face names point " + text(id) + " but the piece has " +
+              text(static_cast<double>(numberOfPoints)) + " points";
+          }
+        }
+      }
+    }
+    if (at != length)
+    {
+      return piece + ": the \"faces\" array does not match its polyhedra";
+    }
+    return std::string();
+  }
+};
+vtkStandardNewMacro(FaceStreamChecker);
+} // namespace
+
+std::string CheckUnstructuredGridFaces(const std::string& path)
+{
+  vtkNew<FaceStreamChecker> checker;
+  checker->SetFileName(path.c_str());
+  checker->Update();
+  return checker->Problem;
 }
 } // namespace vtkstylize

@@ -12,6 +12,7 @@
  *
  * - VTK legacy: the first line must be the "# vtk DataFile Version" header (so that garbage is
  *   reported as such rather than quoted back).
+ * - VTK XML unstructured grids: the polyhedron face streams (below).
  *
  * Each function returns an empty string when the file passes, else a one-line reason.
  */
@@ -27,6 +28,14 @@ std::string CheckPLYFile(const std::string& path);
 std::string CheckOBJFile(const std::string& path);
 std::string CheckSTLFile(const std::string& path);
 std::string CheckLegacyVTKFile(const std::string& path);
+/**
+ * VTK XML unstructured grid (.vtu): the polyhedron face streams ("faces", "faceoffsets"), which
+ * VTK 9.1's reader walks without bounds checks (a face or point count larger than the stream
+ * reads past it and crashes): every count must stay within the stream, and every point id
+ * within the piece's points. The arrays are read with the reader's own decoding (inline,
+ * appended, binary, compressed); a file without polyhedra costs a parse of its XML header.
+ */
+std::string CheckUnstructuredGridFaces(const std::string& path);
 }
 
 #endif

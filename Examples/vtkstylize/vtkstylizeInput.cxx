@@ -285,6 +285,15 @@ void CheckReferencedFiles(const std::string& path, std::vector<std::string> chai
                                          : std::string("is not a regular file")));
     }
     CheckInputFile(file);
+    if (Extension(file) == ".vtu")
+    {
+      const std::string problem = CheckUnstructuredGridFaces(file);
+      ClearVTKErrors();
+      if (!problem.empty())
+      {
+        Fail("cannot read " + Quote(top) + ": " + Quote(file) + ": " + problem);
+      }
+    }
     CheckReferencedFiles(file, chain, top);
   }
 }
@@ -534,11 +543,13 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
   using Check = std::string (*)(const std::string&);
   static const std::map<std::string, Check> checks = { { ".ply", vtkstylize::CheckPLYFile },
     { ".obj", vtkstylize::CheckOBJFile }, { ".stl", vtkstylize::CheckSTLFile },
-    { ".vtk", vtkstylize::CheckLegacyVTKFile } };
+    { ".vtk", vtkstylize::CheckLegacyVTKFile },
+    { ".vtu", vtkstylize::CheckUnstructuredGridFaces } };
   const auto check = checks.find(it->first);
   if (check != checks.end())
   {
     const std::string problem = check->second(path);
+    ClearVTKErrors();
     if (!problem.empty())
     {
       Fail("cannot read " + Quote(path) + ": " + problem);

@@ -656,5 +656,37 @@ int main(int argc, char* argv[])
   ::mkdir(P("loop").c_str(), 0755);
   WriteText("loop/inner.vtm", vtm("../outer_loop.vtm"));
   WriteText("outer_loop.vtm", vtm("loop/inner.vtm"));
+  // Polyhedra whose face streams lie (VTK 9.1's reader or surface filter crashed on them): a
+  // face naming point 999999 or -7, a polyhedron claiming 100,000 faces.
+  const auto polyhedron = [](const std::string& faces) {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+           "<UnstructuredGrid><Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">\n"
+           "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">"
+           "0 0 0 1 0 0 0 1 0 0 0 1</DataArray></Points>\n<Cells>\n"
+           "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3</DataArray>\n"
+           "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>\n"
+           "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">42</DataArray>\n"
+           "<DataArray type=\"Int64\" Name=\"faces\" format=\"ascii\">" +
+      faces + "</DataArray>\n<DataArray type=\"Int64\" Name=\"faceoffsets\" format=\"ascii\">17" +
+      "</DataArray>\n</Cells></Piece></UnstructuredGrid></VTKFile>\n";
+  };
+  WriteText("polyhedron.vtu", polyhedron("4 3 0 1 2 3 0 1 3 3 0 2 3 3 1 2 3"));
+  WriteText("polyhedron_far_id.vtu", polyhedron("4 3 0 1 2 3 0 1 999999 3 0 2 3 3 1 2 3"));
+  WriteText("polyhedron_negative_id.vtu", polyhedron("4 3 0 1 2 3 0 1 -7 3 0 2 3 3 1 2 3"));
+  WriteText("polyhedron_many_faces.vtu", polyhedron("100000 3 0 1 2 3 0 1 3 3 0 2 3 3 1 2 3"));
+  // Legacy files of ~150 bytes whose headers claim a billion points, polygons or cells (the
+  // reader allocated 11-19 GB before failing), and a CELL_TYPES section shorter than CELLS (the
+  // reader left the other types unset).
+  const std::string legacyHead = "# vtk DataFile Version 3.0\nclaims\nASCII\n";
+  WriteText("claims_points.vtk", legacyHead + "DATASET POLYDATA\nPOINTS 1000000000 float\n0 0 0 1 0 0 0 1 0\n");
+  WriteText("claims_polygons.vtk", legacyHead + "DATASET POLYDATA\nPOINTS 3 float\n"
+    "0 0 0 1 0 0 0 1 0\nPOLYGONS 1000000000 4000000000\n3 0 1 2\n");
+  WriteText("claims_cells.vtk", legacyHead + "DATASET UNSTRUCTURED_GRID\nPOINTS 3 float\n"
+    "0 0 0 1 0 0 0 1 0\nCELLS 1000000000 4000000000\n3 0 1 2\nCELL_TYPES 1\n5\n");
+  WriteText("short_cell_types.vtk", legacyHead + "DATASET UNSTRUCTURED_GRID\nPOINTS 4 float\n"
+    "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 2 8\n3 0 1 2\n3 1 2 3\nCELL_TYPES 1\n5\n");
+  WriteText("nan_scalars.vtk", legacyHead + "DATASET POLYDATA\nPOINTS 3 float\n"
+    "0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nSCALARS s float 1\n"
+    "LOOKUP_TABLE default\n0 nan inf\n");
   return Failed ? 1 : 0;
 }
