@@ -571,6 +571,12 @@ std::string CheckPLYFile(const std::string& path)
 // OBJ
 //------------------------------------------------------------------------------
 
+namespace
+{
+/** The longest OBJ line read (1 MiB): a longer one is not text (a 1 GB line took 2 GB). */
+constexpr std::size_t MaxOBJLine = std::size_t(1) << 20;
+}
+
 std::string CheckOBJFile(const std::string& path)
 {
   long long totals[3] = { 0, 0, 0 }; // v, vt, vn
@@ -581,8 +587,15 @@ std::string CheckOBJFile(const std::string& path)
       return std::strerror(errno);
     }
     std::string line;
-    while (in.GetLine(line))
+    long long lineNumber = 0;
+    while (in.GetLine(line, MaxOBJLine))
     {
+      ++lineNumber;
+      if (in.LineCut())
+      {
+        return "OBJ line " + std::to_string(lineNumber) + " is longer than " +
+          std::to_string(MaxOBJLine >> 20) + " MiB (not an OBJ text file)";
+      }
       const std::size_t start = line.find_first_not_of(" \t");
       if (start == std::string::npos)
       {
@@ -612,7 +625,7 @@ std::string CheckOBJFile(const std::string& path)
   }
   std::string line;
   long long lineNumber = 0;
-  while (in.GetLine(line))
+  while (in.GetLine(line, MaxOBJLine))
   {
     ++lineNumber;
     for (char c : line)
@@ -631,6 +644,22 @@ std::string CheckOBJFile(const std::string& path)
     if (w[0] == "v" || w[0] == "vt" || w[0] == "vn")
     {
       ++seen[w[0] == "v" ? 0 : w[0] == "vt" ? 1 : 2];
+      // VTK's reader parses numbers itself: "nan", "inf" or "1e400" became other numbers
+      for (std::size_t k = 1; k < w.size(); ++k)
+      {
+        char* end = nullptr;
+        const double value = std::strtod(w[k].c_str(), &end);
+        if (end == w[k].c_str() || *end != '\0')
+        {
+          return "OBJ line " + std::to_string(lineNumber) + ": '" + w[k] + "' is not a number";
+        }
+        if (!std::isfinite(value))
+        {
+          const int kind = w[0] == "v" ? 0 : w[0] == "vt" ? 1 : 2;
+          return "OBJ line " + std::to_string(lineNumber) + ": " + kinds[kind] + " coordinate '" +
+            w[k] + "' is not a finite number";
+        }
+      }
       continue;
     }
     if (w[0] != "f" && w[0] != "l" && w[0] != "p")

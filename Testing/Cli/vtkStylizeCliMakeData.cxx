@@ -688,5 +688,13 @@ int main(int argc, char* argv[])
   WriteText("nan_scalars.vtk", legacyHead + "DATASET POLYDATA\nPOINTS 3 float\n"
     "0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nSCALARS s float 1\n"
     "LOOKUP_TABLE default\n0 nan inf\n");
+  // OBJ numbers VTK's reader misreads (nan, inf and 1e400 became other numbers), a word, and a
+  // 2 MiB line (a 1 GB one took 2 GB before the binary-data refusal).
+  const std::string objTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  WriteText("nan_vertex.obj", "v 0 nan 0\n" + objTriangle);
+  WriteText("inf_vertex.obj", "v inf 0 0\n" + objTriangle);
+  WriteText("overflow_vertex.obj", "v 1e400 0 0\n" + objTriangle);
+  WriteText("word_vertex.obj", "v 0 0 zero\n" + objTriangle);
+  WriteText("long_line.obj", "v " + std::string(std::size_t(2) << 20, '1') + "\n" + objTriangle);
   return Failed ? 1 : 0;
 }
