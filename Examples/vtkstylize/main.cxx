@@ -110,6 +110,9 @@ extern "C" void CrashHandler(int sig)
   std::raise(sig);
 }
 
+/** The smallest window side (pixels) with a title and a scalar bar: the title's font is 8 px. */
+constexpr int MinimumAnnotatedSide = 16;
+
 int Run(int argc, char* argv[])
 {
   Options opt = ParseCommandLine(argc, argv);
@@ -174,6 +177,14 @@ int Run(int argc, char* argv[])
   {
     opt.Warnings.push_back("--color-by does nothing with --no-scalars (ignored)");
     opt.ColorBy.clear();
+  }
+  if (!opt.NoAnnotations && std::min(opt.Width, opt.Height) < MinimumAnnotatedSide)
+  {
+    // (VTK's text actor fails on a viewport one pixel wide or high, and no text fits anyway)
+    opt.NoAnnotations = true;
+    opt.Warnings.push_back("the title and the scalar bar need an image of at least " +
+      std::to_string(MinimumAnnotatedSide) + " pixels a side: left out of this " +
+      std::to_string(opt.Width) + "x" + std::to_string(opt.Height) + " image");
   }
   FinishParts(parts, what);
   if (opt.ModelDirections && opt.Style == "sketch")
