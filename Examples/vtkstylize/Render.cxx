@@ -3,17 +3,24 @@
 
 #include "vtkstylizeCommon.h"
 
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkErrorCode.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
+#include "vtkStylizeGBufferPass.h"
+#include "vtkStylizeStylePass.h"
 #include "vtkWindowToImageFilter.h"
 
 #ifdef VTKSTYLIZE_HAVE_X11
 #include <X11/Xlib.h>
 #endif
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -144,11 +151,66 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(vtkRenderer* ren, const Options& opt
 }
 
 /** Renders the window into an image of the requested size and writes it to opt.Output. */
-void RenderAndWrite(vtkRenderWindow* window, const Options& opt)
+/**
+ * Whether the last render drew some opaque surface, line or point: a depth between the near and
+ * the far plane somewhere, in the style's G-buffer (a style writes the window's depth only where
+ * it must) or in the window. (Translucent geometry writes no depth: such a scene counts as
+ * drawn.)
+ */
+bool DrewSomething(vtkRenderWindow* window)
+{
+  vtkRendererCollection* renderers = window->GetRenderers();
+  renderers->InitTraversal();
+  vtkNew<vtkFloatArray> depth;
+  bool styled = false;
+  while (vtkRenderer* ren = renderers->GetNextItem())
+  {
+    vtkActorCollection* actors = ren->GetActors();
+    actors->InitTraversal();
+    while (vtkActor* actor = actors->GetNextActor())
+    {
+      if (actor->GetVisibility() && actor->HasTranslucentPolygonalGeometry())
+      {
+        return true;
+      }
+    }
+    auto* style = vtkStylizeStylePass::SafeDownCast(ren->GetPass());
+    if (style && style->GetGBufferPass()->DownloadChannel(vtkStylizeGBufferPass::DEPTH_BUFFER, depth))
+    {
+      styled = true;
+      const float* z = depth->GetPointer(0);
+      if (std::any_of(z, z + depth->GetNumberOfValues(), [](float v) { return v < 1.0f; }))
+      {
+        return true;
+      }
+    }
+  }
+  if (styled)
+  {
+    return false;
+  }
+  const int* size = window->GetSize();
+  if (window->GetZbufferData(0, 0, size[0] - 1, size[1] - 1, depth) != VTK_OK)
+  {
+    return true; // cannot tell
+  }
+  // (the title and the scalar bar, drawn over the scene, write a depth of 0; the scene lies
+  // behind the near plane, which the camera sets in front of the data)
+  const float* z = depth->GetPointer(0);
+  return std::any_of(
+    z, z + depth->GetNumberOfValues(), [](float v) { return v > 0.0f && v < 1.0f; });
+}
+
+bool RenderAndWrite(vtkRenderWindow* window, const Options& opt, const std::string& emptyFailure)
 {
   ClearVTKErrors();
   window->Render();
   CheckVTKErrors("rendering failed");
+  const bool drawn = DrewSomething(window);
+  if (!drawn && !emptyFailure.empty())
+  {
+    Fail(emptyFailure);
+  }
 
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
@@ -199,5 +261,6 @@ void RenderAndWrite(vtkRenderWindow* window, const Options& opt)
     Fail(what + ": " + std::strerror(errno));
   }
   temporary.Release();
+  return drawn;
 }
 }

@@ -29,8 +29,12 @@ void CheckOutputPath(const std::string& path);
 /** An offscreen window of the requested size and multisampling, holding the renderer. */
 vtkSmartPointer<vtkRenderWindow> MakeWindow(vtkRenderer* ren, const Options& opt);
 
-/** Renders the window into an image of the requested size and writes it to opt.Output. */
-void RenderAndWrite(vtkRenderWindow* window, const Options& opt);
+/**
+ * Renders the window into an image of the requested size and writes it to opt.Output. Returns
+ * whether the render drew some opaque surface, line or point; when it drew none and
+ * emptyFailure is not empty, fails with that message instead of writing the image.
+ */
+bool RenderAndWrite(vtkRenderWindow* window, const Options& opt, const std::string& emptyFailure);
 }
 
 #endif

@@ -230,8 +230,37 @@ void AddParts(vtkRenderer* ren, const std::vector<Part>& parts, const Options& o
     anyColored = true;
     int association = 0;
     vtkDataArray* array = FindArray(p.Surface, c.Array, association);
+    // The colour map spans the finite values: NaN takes the map's NaN colour, an infinity the
+    // end of the map, and neither reaches the scalar bar's labels.
+    const int component = array->GetNumberOfComponents() > 1 ? -1 : 0;
     double r[2];
-    array->GetRange(r, array->GetNumberOfComponents() > 1 ? -1 : 0);
+    array->GetFiniteRange(r, component);
+    vtkIdType nonFinite = 0;
+    for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+    {
+      for (int k = 0; k < array->GetNumberOfComponents(); ++k)
+      {
+        if (!std::isfinite(array->GetComponent(t, k)))
+        {
+          ++nonFinite;
+          break;
+        }
+      }
+    }
+    if (nonFinite > 0 && !(r[0] <= r[1]))
+    {
+      info.Warnings.push_back(what + ": " + Quote(c.Array) +
+        " holds no finite value (NaN or infinity): drawn in one colour");
+      colorings.back().Array.clear();
+      continue;
+    }
+    if (nonFinite > 0)
+    {
+      info.Warnings.push_back(what + ": " + std::to_string(static_cast<long long>(nonFinite)) +
+        " of " + std::to_string(static_cast<long long>(array->GetNumberOfTuples())) +
+        " values of " + Quote(c.Array) + " are not finite (NaN or infinity): NaN is drawn dark " +
+        "red, an infinity in the colour of its end of the map");
+    }
     auto found = ranges.find(c.Array);
     if (found == ranges.end())
     {

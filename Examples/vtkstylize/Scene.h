@@ -20,6 +20,7 @@ struct SceneAnnotations
 {
   std::string Title;
   std::string ScalarBarArray; // array shown by the scalar bar, empty for none
+  std::vector<std::string> Warnings; // what the caller prints after the image is written
 };
 
 /**

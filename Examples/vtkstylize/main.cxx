@@ -199,6 +199,7 @@ int Run(int argc, char* argv[])
   vtkNew<vtkRenderer> ren;
   ren->SetBackground(opt.Background);
   AddParts(ren, parts, opt, builtIn, info, what);
+  opt.Warnings.insert(opt.Warnings.end(), info.Warnings.begin(), info.Warnings.end());
   double bounds[6];
   ren->ComputeVisiblePropBounds(bounds);
   if (!vtkMath::AreBoundsInitialized(bounds))
@@ -229,9 +230,32 @@ int Run(int argc, char* argv[])
   }
   ren->SetPass(style->MakePass(lighting, gbuffer, opt));
 
-  RenderAndWrite(window, opt);
+  // A picture of the background alone: an error when the data has no extent (no framing can
+  // show it), else a warning (a stray far point, a zero spacing, cells without area or an image
+  // one pixel high can leave everything below a pixel).
+  const bool extentless = bounds[0] == bounds[1] && bounds[2] == bounds[3] && bounds[4] == bounds[5];
+  const std::string empty = "the picture would show nothing but the background: " + what +
+    " has no extent (all its points lie at " + FormatNumber(bounds[0]) + ", " +
+    FormatNumber(bounds[2]) + ", " + FormatNumber(bounds[4]) + ")";
+  if (!RenderAndWrite(window, opt, extentless ? empty : std::string()))
+  {
+    std::string box;
+    for (int i = 0; i < 3; ++i)
+    {
+      box += std::string(i ? " x " : "") + "[" + FormatNumber(bounds[2 * i]) + ", " +
+        FormatNumber(bounds[2 * i + 1]) + "]";
+    }
+    opt.Warnings.push_back("the picture shows nothing but the background: nothing of " + what +
+      " covers a pixel of the " + std::to_string(opt.Width) + "x" + std::to_string(opt.Height) +
+      " window (its bounds: " + box + "; a stray far point, a zero spacing or cells without "
+      "area can leave the rest below a pixel)");
+  }
   // Warnings and notes only now: a failure is one line.
   for (const std::string& warning : opt.Warnings)
+  {
+    WriteError("warning: " + warning);
+  }
+  for (const std::string& warning : Warnings())
   {
     WriteError("warning: " + warning);
   }

@@ -33,6 +33,22 @@ std::vector<std::string>& NoteList()
 }
 }
 
+std::vector<std::string>& WarningList()
+{
+  static std::vector<std::string> warnings;
+  return warnings;
+}
+
+void Warn(const std::string& message)
+{
+  WarningList().push_back(message);
+}
+
+const std::vector<std::string>& Warnings()
+{
+  return WarningList();
+}
+
 void Note(const std::string& message)
 {
   NoteList().push_back(message);

@@ -39,6 +39,13 @@ struct CliError
 void Note(const std::string& message);
 const std::vector<std::string>& Notes();
 
+/**
+ * Warnings about the input ("vtkstylize: warning: ..."): what was left out or drawn otherwise,
+ * printed after a success (even with --quiet), like the warnings about options.
+ */
+void Warn(const std::string& message);
+const std::vector<std::string>& Warnings();
+
 /** 'text' */
 std::string Quote(const std::string& text);
 

@@ -1193,4 +1193,60 @@ std::string CheckUnstructuredGridFaces(const std::string& path)
   checker->Update();
   return checker->Problem;
 }
+
+std::string CheckImageDataFile(const std::string& path)
+{
+  FileReader in(path);
+  if (!in.IsOpen())
+  {
+    return std::strerror(errno);
+  }
+  std::string head(64 * 1024, '\0');
+  std::size_t n = 0;
+  while (n < head.size() && in.Read(&head[n], 1))
+  {
+    ++n;
+  }
+  head.resize(n);
+  std::size_t tag = head.find("<ImageData");
+  const std::size_t parallel = head.find("<PImageData");
+  tag = std::min(tag, parallel);
+  if (tag == std::string::npos)
+  {
+    return std::string(); // the reader reports what it cannot find
+  }
+  const std::size_t close = head.find('>', tag);
+  const std::string element = head.substr(tag, close == std::string::npos ? std::string::npos : close - tag);
+  static const std::pair<const char*, int> attributes[3] = { { "Origin", 3 }, { "Spacing", 3 },
+    { "Direction", 9 } };
+  for (const auto& a : attributes)
+  {
+    const std::string key = std::string(" ") + a.first + "=\"";
+    const std::size_t at = element.find(key);
+    if (at == std::string::npos)
+    {
+      continue;
+    }
+    const std::size_t start = at + key.size();
+    const std::size_t end = element.find('"', start);
+    const std::string text = element.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    const std::vector<std::string> words = Words(text);
+    if (static_cast<int>(words.size()) != a.second)
+    {
+      return std::string("the image's ") + a.first + " has " + std::to_string(words.size()) +
+        " values, not " + std::to_string(a.second);
+    }
+    for (const std::string& w : words)
+    {
+      char* stop = nullptr;
+      const double value = std::strtod(w.c_str(), &stop);
+      if (stop == w.c_str() || *stop != '\0' || !std::isfinite(value))
+      {
+        return std::string("the image's ") + a.first + " '" + text + "' holds '" + w +
+          "', not a finite number (VTK's reader would put the default in its place)";
+      }
+    }
+  }
+  return std::string();
+}
 } // namespace vtkstylize

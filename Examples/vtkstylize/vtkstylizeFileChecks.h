@@ -36,6 +36,12 @@ std::string CheckLegacyVTKFile(const std::string& path);
  * appended, binary, compressed); a file without polyhedra costs a parse of its XML header.
  */
 std::string CheckUnstructuredGridFaces(const std::string& path);
+/**
+ * VTK XML image data (.vti, .pvti): the Origin, Spacing and Direction attributes of the
+ * (P)ImageData element must be finite numbers, 3, 3 and 9 of them (VTK's reader silently
+ * replaces a "nan" or "inf" with the default). Only the file's first 64 KiB are read.
+ */
+std::string CheckImageDataFile(const std::string& path);
 }
 
 #endif

@@ -16,6 +16,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
 #include "vtkExodusIIReader.h"
+#include "vtkExtractCells.h"
 #include "vtkGenericEnSightReader.h"
 #include "vtkOpenFOAMReader.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -28,6 +29,7 @@
 #include "vtkXMLPUnstructuredGridReader.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericDataObjectReader.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkNew.h"
@@ -212,6 +214,29 @@ void CheckInputFile(const std::string& path, bool allowEmpty = false)
 
 namespace
 {
+/**
+ * The structural check of the file's format (vtkstylizeFileChecks.h), for the formats whose
+ * readers crash, hang, allocate without bound or read garbage on broken files: the problem, or
+ * an empty string.
+ */
+std::string StructuralCheck(const std::string& path)
+{
+  using Check = std::string (*)(const std::string&);
+  static const std::map<std::string, Check> checks = { { ".ply", vtkstylize::CheckPLYFile },
+    { ".obj", vtkstylize::CheckOBJFile }, { ".stl", vtkstylize::CheckSTLFile },
+    { ".vtk", vtkstylize::CheckLegacyVTKFile },
+    { ".vtu", vtkstylize::CheckUnstructuredGridFaces }, { ".vti", vtkstylize::CheckImageDataFile },
+    { ".pvti", vtkstylize::CheckImageDataFile } };
+  const auto check = checks.find(Extension(path));
+  if (check == checks.end())
+  {
+    return std::string();
+  }
+  const std::string problem = check->second(path);
+  ClearVTKErrors(); // (a check that reads with VTK leaves the reader's own complaints)
+  return problem;
+}
+
 /** path's folder with a slash ("" for a bare name). */
 std::string Folder(const std::string& path)
 {
@@ -285,14 +310,10 @@ void CheckReferencedFiles(const std::string& path, std::vector<std::string> chai
                                          : std::string("is not a regular file")));
     }
     CheckInputFile(file);
-    if (Extension(file) == ".vtu")
+    const std::string problem = StructuralCheck(file);
+    if (!problem.empty())
     {
-      const std::string problem = CheckUnstructuredGridFaces(file);
-      ClearVTKErrors();
-      if (!problem.empty())
-      {
-        Fail("cannot read " + Quote(top) + ": " + Quote(file) + ": " + problem);
-      }
+      Fail("cannot read " + Quote(top) + ": " + Quote(file) + ": " + problem);
     }
     CheckReferencedFiles(file, chain, top);
   }
@@ -539,21 +560,10 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
   }
   CheckInputFile(path, it->first == ".foam");
   CheckReferencedFiles(path);
-  // Structural checks for the formats whose readers crash or read garbage on broken files.
-  using Check = std::string (*)(const std::string&);
-  static const std::map<std::string, Check> checks = { { ".ply", vtkstylize::CheckPLYFile },
-    { ".obj", vtkstylize::CheckOBJFile }, { ".stl", vtkstylize::CheckSTLFile },
-    { ".vtk", vtkstylize::CheckLegacyVTKFile },
-    { ".vtu", vtkstylize::CheckUnstructuredGridFaces } };
-  const auto check = checks.find(it->first);
-  if (check != checks.end())
+  const std::string problem = StructuralCheck(path);
+  if (!problem.empty())
   {
-    const std::string problem = check->second(path);
-    ClearVTKErrors();
-    if (!problem.empty())
-    {
-      Fail("cannot read " + Quote(path) + ": " + problem);
-    }
+    Fail("cannot read " + Quote(path) + ": " + problem);
   }
   // VTK 9.1's PLY reader reads faces only: a surface stored as triangle strips is read here.
   if (it->first == ".ply" && HasPLYStrips(path))
@@ -799,7 +809,8 @@ void ValidateDataSet(vtkDataSet* ds, const std::string& what)
         " is shorter than the number of cells");
     }
   }
-  // Coordinates: GetBounds() skips NaN, so look at every explicit point.
+  // Coordinates: GetBounds() skips NaN, so look at every explicit point (the points that are not
+  // finite were dropped with their cells before: see WithoutNonFinitePoints()).
   if (auto* ps = vtkPointSet::SafeDownCast(ds))
   {
     if (ps->GetPoints() && !AllFinite(ps->GetPoints()->GetData()))
@@ -905,9 +916,84 @@ bool OtsuThreshold(vtkDataArray* array, double lo, double hi, double& threshold)
   return threshold > lo && threshold < hi;
 }
 
-vtkSmartPointer<vtkPolyData> ToSurface(vtkDataSet* ds, const std::optional<double>& isoValue,
+/**
+ * The point set without its points whose coordinates are not finite (NaN or infinity) and the
+ * cells that use them, with a warning; ds itself when all are finite. Fails when no point is
+ * finite, or when no cell is left of a dataset that had cells. The connectivity is checked first
+ * (a cell may not name a point that does not exist).
+ */
+vtkSmartPointer<vtkDataSet> WithoutNonFinitePoints(vtkDataSet* ds, const std::string& what)
+{
+  auto* ps = vtkPointSet::SafeDownCast(ds);
+  vtkDataArray* coordinates = ps && ps->GetPoints() ? ps->GetPoints()->GetData() : nullptr;
+  if (!coordinates || AllFinite(coordinates))
+  {
+    return ds;
+  }
+  const vtkIdType n = ds->GetNumberOfPoints();
+  std::vector<char> bad(static_cast<std::size_t>(n), 0);
+  vtkIdType badPoints = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    coordinates->GetTuple(i, p);
+    bad[i] = !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+    badPoints += bad[i];
+  }
+  if (badPoints == n)
+  {
+    Fail(what + ": no point has finite coordinates (all are NaN or infinity)");
+  }
+  if (auto* pd = vtkPolyData::SafeDownCast(ds))
+  {
+    for (vtkCellArray* cells : { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() })
+    {
+      CheckCells(cells, n, what);
+    }
+  }
+  else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds))
+  {
+    CheckCells(ug->GetCells(), n, what);
+  }
+  vtkNew<vtkIdList> keep;
+  vtkNew<vtkIdList> ids;
+  const vtkIdType cells = ds->GetNumberOfCells();
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    ds->GetCellPoints(c, ids);
+    bool finite = true;
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds() && finite; ++k)
+    {
+      finite = !bad[ids->GetId(k)];
+    }
+    if (finite)
+    {
+      keep->InsertNextId(c);
+    }
+  }
+  if (cells > 0 && keep->GetNumberOfIds() == 0)
+  {
+    Fail(what + ": every cell uses a point whose coordinates are not finite (NaN or infinity)");
+  }
+  vtkNew<vtkExtractCells> extract;
+  extract->SetInputData(ds);
+  extract->SetCellList(keep);
+  extract->Update();
+  const vtkIdType dropped = cells - keep->GetNumberOfIds();
+  Warn(what + ": " + std::to_string(static_cast<long long>(badPoints)) + " of " +
+    std::to_string(static_cast<long long>(n)) + " points " + (badPoints == 1 ? "has" : "have") +
+    " coordinates that are not finite (NaN or infinity): " + (badPoints == 1 ? "it" : "they") +
+    " and the " + std::to_string(static_cast<long long>(dropped)) + " cell" +
+    (dropped == 1 ? "" : "s") + " that use " + (badPoints == 1 ? "it" : "them") +
+    " are left out");
+  return extract->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> ToSurface(vtkDataSet* input, const std::optional<double>& isoValue,
   const std::string& what, std::optional<double>& contourValue)
 {
+  vtkSmartPointer<vtkDataSet> kept = WithoutNonFinitePoints(input, what);
+  vtkDataSet* ds = kept;
   ValidateDataSet(ds, what);
   if (auto* pd = vtkPolyData::SafeDownCast(ds))
   {
@@ -925,8 +1011,13 @@ vtkSmartPointer<vtkPolyData> ToSurface(vtkDataSet* ds, const std::optional<doubl
   if (image && scalars && dims[0] > 1 && dims[1] > 1 && dims[2] > 1)
   {
     double range[2];
-    scalars->GetRange(range, 0);
+    scalars->GetFiniteRange(range, 0);
     const std::string name = scalars->GetName() ? scalars->GetName() : "scalars";
+    if (!(range[0] <= range[1]))
+    {
+      Fail(what + ": " + Quote(name) + " holds no finite value (NaN or infinity everywhere): " +
+        "there is nothing to contour");
+    }
     double iso = 0.5 * (range[0] + range[1]);
     if (isoValue)
     {

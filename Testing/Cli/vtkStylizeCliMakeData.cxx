@@ -696,5 +696,67 @@ int main(int argc, char* argv[])
   WriteText("overflow_vertex.obj", "v 1e400 0 0\n" + objTriangle);
   WriteText("word_vertex.obj", "v 0 0 zero\n" + objTriangle);
   WriteText("long_line.obj", "v " + std::string(std::size_t(2) << 20, '1') + "\n" + objTriangle);
+  // Pictures of the background alone: three identical points, an image of spacing 0, a vertex
+  // at 1e38 beside a unit triangle.
+  WriteText("no_extent.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
+  WriteText("far_vertex.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1e38 0 0\nf 1 2 3\nf 2 3 4\n");
+  {
+    std::string values;
+    for (int i = 0; i < 27; ++i)
+    {
+      values += std::to_string(i % 3) + " ";
+    }
+    WriteText("spacing_zero.vti",
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n"
+      "<ImageData WholeExtent=\"0 2 0 2 0 2\" Origin=\"0 0 0\" Spacing=\"0 0 0\">\n"
+      "<Piece Extent=\"0 2 0 2 0 2\"><PointData Scalars=\"s\">\n"
+      "<DataArray type=\"Float32\" Name=\"s\" format=\"ascii\">" + values +
+      "</DataArray>\n</PointData></Piece></ImageData></VTKFile>\n");
+  }
+  // Non-finite values: point scalars with NaN and infinities, an image whose values are all NaN,
+  // an image with a NaN spacing or an infinite origin.
+  {
+    vtkNew<vtkPolyData> scalars;
+    scalars->DeepCopy(sphere);
+    vtkNew<vtkFloatArray> s;
+    s->SetName("s");
+    for (vtkIdType i = 0; i < scalars->GetNumberOfPoints(); ++i)
+    {
+      s->InsertNextValue(i % 7 == 0 ? std::nanf("") : (i % 11 == 0 ? HUGE_VALF : float(i)));
+    }
+    scalars->GetPointData()->SetScalars(s);
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetInputData(scalars);
+    Write(w.Get(), "non_finite_scalars.vtp");
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(4, 4, 4);
+    vtkNew<vtkFloatArray> nan;
+    nan->SetName("s");
+    for (int i = 0; i < 64; ++i)
+    {
+      nan->InsertNextValue(std::nanf(""));
+    }
+    image->GetPointData()->SetScalars(nan);
+    vtkNew<vtkXMLImageDataWriter> iw;
+    iw->SetInputData(image);
+    Write(iw.Get(), "all_nan.vti");
+  }
+  {
+    std::string values;
+    for (int i = 0; i < 27; ++i)
+    {
+      values += std::to_string(i % 3) + " ";
+    }
+    const auto vti = [&values](const std::string& origin, const std::string& spacing) {
+      return "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n"
+             "<ImageData WholeExtent=\"0 2 0 2 0 2\" Origin=\"" +
+        origin + "\" Spacing=\"" + spacing +
+        "\">\n<Piece Extent=\"0 2 0 2 0 2\"><PointData Scalars=\"s\">\n"
+        "<DataArray type=\"Float32\" Name=\"s\" format=\"ascii\">" +
+        values + "</DataArray>\n</PointData></Piece></ImageData></VTKFile>\n";
+    };
+    WriteText("nan_spacing.vti", vti("0 0 0", "nan 1 1"));
+    WriteText("inf_origin.vti", vti("inf 0 0", "1 1 1"));
+  }
   return Failed ? 1 : 0;
 }
