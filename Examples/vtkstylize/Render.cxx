@@ -14,6 +14,7 @@
 #include "vtkRendererCollection.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeStylePass.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
 #ifdef VTKSTYLIZE_HAVE_X11
@@ -229,32 +230,102 @@ bool RenderAndWrite(vtkRenderWindow* window, const Options& opt, const std::stri
       std::to_string(opt.Height * opt.Magnify));
   }
 
-  // Write to a temporary file beside the output, then rename: never a partial output file.
+  // Encode, then write into a file that has no name until it is complete, and rename that over
+  // the output: never a partial output file, and nothing left behind even by SIGKILL (an
+  // O_TMPFILE file vanishes with the process; where the file system has none, a hidden named
+  // file beside the output, removed on failure and on catchable signals).
   const std::string what = "cannot write " + Quote(opt.Output);
-  std::string pattern = Directory(opt.Output) + "/." + BaseName(opt.Output) + ".XXXXXX";
-  std::vector<char> buffer(pattern.begin(), pattern.end());
-  buffer.push_back(0);
-  TemporaryFileGuard temporary;
-  const int fd = ::mkstemp(buffer.data());
-  if (fd < 0)
-  {
-    Fail(what + ": " + std::strerror(errno));
-  }
-  temporary.Set(buffer.data());
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  ::close(fd);
-
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputConnection(grab->GetOutputPort());
-  writer->SetFileName(temporary.Get().c_str());
+  writer->WriteToMemoryOn();
   writer->Write();
   CheckVTKErrors(what);
-  if (writer->GetErrorCode() != vtkErrorCode::NoError)
+  vtkUnsignedCharArray* png = writer->GetResult();
+  if (writer->GetErrorCode() != vtkErrorCode::NoError || !png)
   {
     const char* code = vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode());
-    Fail(what + ": " + (code ? code : "write error"));
+    Fail(what + ": " + (code ? code : "PNG encoding failed"));
+  }
+  const unsigned char* bytes = png->GetPointer(0);
+  const std::size_t size = static_cast<std::size_t>(png->GetNumberOfValues());
+  const auto writeAll = [&](int fd) {
+    for (std::size_t done = 0; done < size;)
+    {
+      const ssize_t n = ::write(fd, bytes + done, size - done);
+      if (n < 0 && errno == EINTR)
+      {
+        continue;
+      }
+      if (n <= 0)
+      {
+        return false;
+      }
+      done += static_cast<std::size_t>(n);
+    }
+    return true;
+  };
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  const std::string hidden = Directory(opt.Output) + "/." + BaseName(opt.Output) + ".XXXXXX";
+  TemporaryFileGuard temporary;
+  int fd = ::open(Directory(opt.Output).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+  if (fd >= 0)
+  {
+    if (!writeAll(fd))
+    {
+      const int error = errno;
+      ::close(fd);
+      Fail(what + ": " + std::strerror(error));
+    }
+    // A name for it now: a unique hidden one (linkat cannot replace the output), then rename.
+    const std::string self = "/proc/self/fd/" + std::to_string(fd);
+    bool linked = false;
+    for (int attempt = 0; attempt < 100 && !linked; ++attempt)
+    {
+      std::vector<char> name(hidden.begin(), hidden.end());
+      name.push_back(0);
+      const int probe = ::mkstemp(name.data()); // a unique name, given back at once
+      if (probe < 0)
+      {
+        break;
+      }
+      ::close(probe);
+      ::unlink(name.data());
+      if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, name.data(), AT_SYMLINK_FOLLOW) == 0)
+      {
+        temporary.Set(name.data());
+        linked = true;
+      }
+      else if (errno != EEXIST)
+      {
+        break;
+      }
+    }
+    ::close(fd);
+    fd = -1;
+    if (!linked)
+    {
+      fd = -2; // no /proc or no link: write it again under a name
+    }
+  }
+  if (fd != -1)
+  {
+    std::vector<char> name(hidden.begin(), hidden.end());
+    name.push_back(0);
+    fd = ::mkstemp(name.data());
+    if (fd < 0)
+    {
+      Fail(what + ": " + std::strerror(errno));
+    }
+    temporary.Set(name.data());
+    ::fchmod(fd, 0666 & ~mask);
+    const bool written = writeAll(fd);
+    const int error = errno;
+    ::close(fd);
+    if (!written)
+    {
+      Fail(what + ": " + std::strerror(error));
+    }
   }
   if (std::rename(temporary.Get().c_str(), opt.Output.c_str()) != 0)
   {
