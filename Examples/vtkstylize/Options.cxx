@@ -704,6 +704,19 @@ void AddProgramOptions(OptionTable& t)
   t.Value("--multisamples", "N", "multisample anti-aliasing samples (default: 0)", general,
      [](Options& opt, const std::string& v) { opt.MultiSamples = std::atoi(v.c_str()); })
     ->check(NumberIn(0, MaxMultiSamples, true));
+  t.Value("--memory-limit", "MIB",
+     "the most memory reading and preparing the input may take, in MiB; an input that needs "
+     "more is refused with one line (default: 3/4 of the machine's memory; 0: no limit; "
+     "at least 64 otherwise)",
+     general, [](Options& opt, const std::string& v) { opt.MemoryLimit = std::strtod(v.c_str(), nullptr); })
+    ->check(NumberIn(0, 1e9, false))
+    ->check(CLI::Validator(
+      [](std::string& v) {
+        const double mib = std::strtod(v.c_str(), nullptr);
+        return mib > 0.0 && mib < 64.0 ? std::string("at least 64 MiB, or 0 for no limit")
+                                       : std::string();
+      },
+      ""));
   t.Flag("--quiet", "do not print the output path on success (default: off)", general,
     [](Options& opt, const std::string&) { opt.Quiet = true; });
   t.Flag("--gbuffer", "render through the shared G-buffer pass (default: the lighting pass alone)",

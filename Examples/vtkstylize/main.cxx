@@ -132,6 +132,21 @@ int Run(int argc, char* argv[])
               << std::flush;
     return 0;
   }
+  // The memory bound of the input stage (reading, conversion to surfaces, curvatures): by
+  // default 3/4 of the machine's memory, so that no input can make the program take the machine
+  // (legacy headers claiming a billion cells took 15 GB). Lifted before the window opens: the
+  // OpenGL driver and X do not all survive a failed allocation, and what they take follows the
+  // image size and the data already read.
+  double limit = opt.MemoryLimit;
+  if (limit < 0.0)
+  {
+    const long pages = ::sysconf(_SC_PHYS_PAGES);
+    const long pageSize = ::sysconf(_SC_PAGESIZE);
+    limit = pages > 0 && pageSize > 0
+      ? 0.75 * static_cast<double>(pages) * static_cast<double>(pageSize) / (1024.0 * 1024.0)
+      : 0.0;
+  }
+  SetMemoryLimit(limit);
   const bool builtIn = opt.Input.empty();
   if (!builtIn && !IsSupportedInput(opt.Input))
   {
@@ -194,6 +209,8 @@ int Run(int argc, char* argv[])
     opt.Passes.ApplyTo(settings.Get());
     AddPrincipalDirections(parts, what, settings->GetObjectScale());
   }
+
+  SetMemoryLimit(0.0);
 
   // Scene.
   vtkNew<vtkRenderer> ren;
@@ -314,7 +331,7 @@ int main(int argc, char* argv[])
   }
   catch (const std::bad_alloc&)
   {
-    WriteError("out of memory");
+    WriteError("out of memory" + MemoryLimitText());
     code = ExitFailure;
   }
   catch (const std::exception& e)

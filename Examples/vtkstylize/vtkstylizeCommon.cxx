@@ -1,5 +1,8 @@
 #include "vtkstylizeCommon.h"
 
+#include <cmath>
+#include <sys/resource.h>
+
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
@@ -33,10 +36,53 @@ std::vector<std::string>& NoteList()
 }
 }
 
+double& MemoryLimitMiB()
+{
+  static double limit = 0.0;
+  return limit;
+}
+
 std::vector<std::string>& WarningList()
 {
   static std::vector<std::string> warnings;
   return warnings;
+}
+
+void SetMemoryLimit(double mib)
+{
+  // The soft limit the process started with, restored by SetMemoryLimit(0).
+  static struct rlimit original;
+  static const bool known = ::getrlimit(RLIMIT_DATA, &original) == 0;
+  MemoryLimitMiB() = 0.0;
+  if (!known)
+  {
+    return;
+  }
+  struct rlimit limit = original;
+  if (!(mib > 0.0))
+  {
+    ::setrlimit(RLIMIT_DATA, &original);
+    return;
+  }
+  const double bytes = mib * 1024.0 * 1024.0;
+  rlim_t wanted = bytes >= static_cast<double>(RLIM_INFINITY) ? RLIM_INFINITY
+                                                              : static_cast<rlim_t>(bytes);
+  if (limit.rlim_max != RLIM_INFINITY && wanted > limit.rlim_max)
+  {
+    wanted = limit.rlim_max;
+  }
+  limit.rlim_cur = wanted;
+  if (::setrlimit(RLIMIT_DATA, &limit) == 0)
+  {
+    MemoryLimitMiB() = static_cast<double>(wanted) / (1024.0 * 1024.0);
+  }
+}
+
+std::string MemoryLimitText()
+{
+  return MemoryLimitMiB() > 0.0
+    ? " (the memory limit: " + FormatNumber(std::floor(MemoryLimitMiB())) + " MiB, --memory-limit)"
+    : std::string();
 }
 
 void Warn(const std::string& message)
@@ -289,7 +335,11 @@ void CheckVTKErrors(const std::string& what)
 {
   if (Capture && Capture->HasErrors())
   {
-    Fail(what + ": " + Capture->FirstError());
+    const std::string error = Capture->FirstError();
+    const bool memory = error.find("nable to allocate") != std::string::npos ||
+      error.find("bad_alloc") != std::string::npos ||
+      error.find("out of memory") != std::string::npos;
+    Fail(what + ": " + error + (memory ? MemoryLimitText() : std::string()));
   }
 }
 } // namespace vtkstylize

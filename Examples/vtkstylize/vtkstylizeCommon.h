@@ -46,6 +46,16 @@ const std::vector<std::string>& Notes();
 void Warn(const std::string& message);
 const std::vector<std::string>& Warnings();
 
+/**
+ * Limits the memory the process may allocate (RLIMIT_DATA: heap and private mappings) to mib
+ * MiB; 0 restores the limit the process started with. Messages about failed allocations then
+ * name the limit.
+ */
+void SetMemoryLimit(double mib);
+
+/** " (the memory limit: N MiB, --memory-limit)", or "" without a limit. */
+std::string MemoryLimitText();
+
 /** 'text' */
 std::string Quote(const std::string& text);
 

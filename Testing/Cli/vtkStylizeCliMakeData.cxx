@@ -758,5 +758,20 @@ int main(int argc, char* argv[])
     WriteText("nan_spacing.vti", vti("0 0 0", "nan 1 1"));
     WriteText("inf_origin.vti", vti("inf 0 0", "1 1 1"));
   }
+  // A compression bomb: a 300^3 float image (108 MB) that zlib stores in a few hundred KB.
+  {
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(300, 300, 300);
+    vtkNew<vtkFloatArray> values;
+    values->SetName("s");
+    values->SetNumberOfValues(300 * 300 * 300);
+    values->FillValue(1.0f);
+    image->GetPointData()->SetScalars(values);
+    vtkNew<vtkXMLImageDataWriter> w;
+    w->SetInputData(image);
+    w->SetCompressorTypeToZLib();
+    w->SetDataModeToAppended();
+    Write(w.Get(), "compressed_300.vti");
+  }
   return Failed ? 1 : 0;
 }
