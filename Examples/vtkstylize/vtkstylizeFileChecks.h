@@ -42,6 +42,21 @@ std::string CheckUnstructuredGridFaces(const std::string& path);
  * replaces a "nan" or "inf" with the default). Only the file's first 64 KiB are read.
  */
 std::string CheckImageDataFile(const std::string& path);
+/**
+ * EnSight case file (.case), on which VTK 9.1's reader loops forever when it is cut short or
+ * followed by other bytes: at most 1 MiB of text (printable characters and white space), with
+ * a FORMAT section and a GEOMETRY section whose "model:" names an existing file (unless it
+ * holds the wildcard '*' of a time series).
+ */
+std::string CheckEnSightCaseFile(const std::string& path);
+/**
+ * Exodus II (.ex2, .exo, .e, .g) in netCDF's classic formats (CDF-1, 2 and 5): the header is
+ * walked and every count it claims (dimensions, attributes, variables, name lengths, values)
+ * must fit in the rest of the file, and every variable's data in the file (a 15 KB file whose
+ * header claimed two billion dimensions made netCDF allocate 1.6 GB before failing). netCDF-4
+ * (HDF5) files are left to their library.
+ */
+std::string CheckExodusFile(const std::string& path);
 }
 
 #endif

@@ -63,6 +63,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 
 #include <fcntl.h>
@@ -226,7 +227,9 @@ std::string StructuralCheck(const std::string& path)
     { ".obj", vtkstylize::CheckOBJFile }, { ".stl", vtkstylize::CheckSTLFile },
     { ".vtk", vtkstylize::CheckLegacyVTKFile },
     { ".vtu", vtkstylize::CheckUnstructuredGridFaces }, { ".vti", vtkstylize::CheckImageDataFile },
-    { ".pvti", vtkstylize::CheckImageDataFile } };
+    { ".pvti", vtkstylize::CheckImageDataFile }, { ".case", vtkstylize::CheckEnSightCaseFile },
+    { ".ex2", vtkstylize::CheckExodusFile }, { ".exo", vtkstylize::CheckExodusFile },
+    { ".e", vtkstylize::CheckExodusFile }, { ".g", vtkstylize::CheckExodusFile } };
   const auto check = checks.find(Extension(path));
   if (check == checks.end())
   {
@@ -235,6 +238,34 @@ std::string StructuralCheck(const std::string& path)
   const std::string problem = check->second(path);
   ClearVTKErrors(); // (a check that reads with VTK leaves the reader's own complaints)
   return problem;
+}
+
+/** Whether path is an ASCII PLY file whose last byte is not a newline. */
+bool ASCIIPLYWithoutLastNewline(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  bool ascii = false;
+  for (int i = 0; i < 64 && std::getline(in, line); ++i)
+  {
+    if (line.compare(0, 12, "format ascii") == 0)
+    {
+      ascii = true;
+      break;
+    }
+    if (line.compare(0, 10, "end_header") == 0)
+    {
+      break;
+    }
+  }
+  if (!ascii)
+  {
+    return false;
+  }
+  in.clear();
+  in.seekg(-1, std::ios::end);
+  char last = '\n';
+  return in.get(last) && last != '\n';
 }
 
 /** path's folder with a slash ("" for a bare name). */
@@ -577,6 +608,17 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
   }
   ClearVTKErrors();
   vtkSmartPointer<vtkAlgorithm> reader = it->second(path);
+  if (it->first == ".ply" && ASCIIPLYWithoutLastNewline(path))
+  {
+    // VTK 9.1's reader frees a line twice (abort) when an ASCII file does not end with a
+    // newline: it reads the file from memory with one added.
+    std::ifstream in(path, std::ios::binary);
+    std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    content += '\n';
+    auto* ply = vtkPLYReader::SafeDownCast(reader);
+    ply->SetInputString(content);
+    ply->ReadFromInputStringOn();
+  }
   reader->UpdateInformation();
   // Time: the requested step of the reader's time steps (files without time have one step).
   vtkInformation* info = reader->GetOutputInformation(0);

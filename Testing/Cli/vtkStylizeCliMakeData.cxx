@@ -773,5 +773,25 @@ int main(int argc, char* argv[])
     w->SetDataModeToAppended();
     Write(w.Get(), "compressed_300.vti");
   }
+  // What the hostile corpus found: an ASCII PLY file without its last newline (VTK's reader
+  // freed a line twice and aborted), an EnSight case cut short (the reader looped forever), an
+  // Exodus file whose header claims two billion dimensions (netCDF took 1.6 GB before failing).
+  {
+    std::vector<char> bytes = ReadAll("colored.ply");
+    while (!bytes.empty() && (bytes.back() == '\n' || bytes.back() == '\r'))
+    {
+      bytes.pop_back();
+    }
+    WriteBytes("no_last_newline.ply", bytes.data(), bytes.size());
+    WriteText("cut_short.case", "FORMAT\ntype: ensight gold\n\nG");
+    bytes = ReadAll("mesh.ex2");
+    if (bytes.size() > 16)
+    {
+      // the dimension list's count (after the magic, the record count and the list's tag)
+      bytes[12] = 0x7f;
+      bytes[13] = bytes[14] = bytes[15] = static_cast<char>(0xff);
+    }
+    WriteBytes("claims_dimensions.ex2", bytes.data(), bytes.size());
+  }
   return Failed ? 1 : 0;
 }
