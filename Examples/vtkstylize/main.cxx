@@ -57,6 +57,15 @@
 
 namespace
 {
+#if defined(__SANITIZE_ADDRESS__)
+#define VTKSTYLIZE_SANITIZED 1
+#include <cstdint>
+#include <dlfcn.h>
+#include <link.h>
+#else
+#define VTKSTYLIZE_SANITIZED 0
+#endif
+
 using namespace vtkstylize;
 
 // Error output and crash handling
@@ -112,6 +121,34 @@ extern "C" void CrashHandler(int sig)
 
 /** The smallest window side (pixels) with a title and a scalar bar: the title's font is 8 px. */
 constexpr int MinimumAnnotatedSide = 16;
+
+#if VTKSTYLIZE_SANITIZED
+/**
+ * Sends the reports of every sanitizer runtime loaded (AddressSanitizer's and
+ * UndefinedBehaviorSanitizer's each have their own) to fd, the real stderr.
+ */
+void ReportSanitizersTo(int fd)
+{
+  dl_iterate_phdr(
+    [](dl_phdr_info* info, size_t, void* data) -> int {
+      const std::string name = info->dlpi_name ? info->dlpi_name : "";
+      if (name.find("libasan") != std::string::npos || name.find("libubsan") != std::string::npos)
+      {
+        if (void* library = ::dlopen(name.c_str(), RTLD_LAZY | RTLD_NOLOAD))
+        {
+          using SetReportFd = void (*)(void*);
+          if (auto set = reinterpret_cast<SetReportFd>(::dlsym(library, "__sanitizer_set_report_fd")))
+          {
+            set(reinterpret_cast<void*>(static_cast<std::intptr_t>(*static_cast<int*>(data))));
+          }
+          ::dlclose(library);
+        }
+      }
+      return 0;
+    },
+    &fd);
+}
+#endif
 
 int Run(int argc, char* argv[])
 {
@@ -294,7 +331,8 @@ int main(int argc, char* argv[])
   const bool verbose = std::getenv("VTKSTYLIZE_VERBOSE") && *std::getenv("VTKSTYLIZE_VERBOSE") &&
     std::string(std::getenv("VTKSTYLIZE_VERBOSE")) != "0";
 
-  // Keep the real stderr for our one line; send everything else written to fd 2 to /dev/null.
+  // Keep the real stderr for our one line; send everything else written to fd 2 to /dev/null
+  // (the sanitizers' reports go to the real stderr: ReportSanitizersTo()).
   if (!verbose)
   {
     const int saved = ::dup(2);
@@ -310,7 +348,14 @@ int main(int argc, char* argv[])
       ::close(null);
     }
   }
+#if VTKSTYLIZE_SANITIZED
+  // Under the sanitizers their own handlers report a fault (with its stack) on stderr: the
+  // program's one-line handler is kept for the terminating signals only.
+  ReportSanitizersTo(ErrorDescriptor);
+  for (int sig : { SIGINT, SIGTERM, SIGHUP })
+#else
   for (int sig : { SIGSEGV, SIGBUS, SIGFPE, SIGABRT, SIGINT, SIGTERM, SIGHUP })
+#endif
   {
     std::signal(sig, CrashHandler);
   }

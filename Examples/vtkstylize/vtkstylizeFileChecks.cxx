@@ -795,7 +795,12 @@ std::string CheckLegacyVTKFile(const std::string& path)
   {
     return "not a VTK legacy file (it does not start with '# vtk DataFile Version')";
   }
-  const bool version5 = line.size() > 23 && std::atof(line.c_str() + 23) >= 5.0;
+  const double version = line.size() > 23 ? std::strtod(line.c_str() + 23, nullptr) : 0.0;
+  if (!std::isfinite(version) || version < 1.0 || version > 100.0)
+  {
+    return "the version on line 1 is not a number a VTK legacy file has";
+  }
+  const bool version5 = version >= 5.0;
   if (!in.GetLine(line, 256)) // the title
   {
     return "the file ends after its first line";
@@ -886,10 +891,17 @@ std::string CheckLegacyVTKFile(const std::string& path)
       lastCells = version5 ? lastOffsets - 1.0 : lastOffsets;
       lastSize = number(2);
       cells += std::max(lastCells, 0.0);
-      ok = version5 ? lastOffsets >= 0.0 && lastSize >= 0.0 : claim(lastSize, 4.0, section);
+      // (version 5: the values follow in OFFSETS and CONNECTIVITY, checked there; the counts
+      // must still fit in the file)
+      const double left = static_cast<double>(size - in.GetOffset());
+      ok = version5 ? lastOffsets >= 0.0 && lastSize >= 0.0 &&
+          (binary ? 4.0 : 2.0) * (lastOffsets + lastSize) <= left + 2.0
+                    : claim(lastSize, 4.0, section);
       if (version5 && !ok)
       {
-        problem = "line " + std::to_string(lineNumber) + ": " + section + " has negative counts";
+        problem = "line " + std::to_string(lineNumber) + ": " + section + " claims " +
+          FormatCount(lastOffsets) + " offsets and " + FormatCount(lastSize) +
+          " connectivity values, which the rest of the file cannot hold";
       }
     }
     else if (key == "OFFSETS" && w.size() >= 2)

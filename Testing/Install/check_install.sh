@@ -9,16 +9,19 @@
 #     plugin is built); bin/pvserver-stylize is there.
 # It also fails when anything test-only or build-only is installed.
 #
-#   check_install.sh CMAKE BUILD_DIR SOURCE_DIR WORK_DIR WITH_PYTHON WITH_PLUGIN
+#   check_install.sh CMAKE BUILD_DIR SOURCE_DIR WORK_DIR WITH_PYTHON WITH_PLUGIN [PYTHON]
+# (PYTHON: the interpreter, /usr/bin/python3 unless given: the sanitizer build gives a wrapper
+# that preloads the sanitizers' runtimes; their *SAN_OPTIONS pass through the clean environment)
 set -eu
-cmake=$1 build=$2 source=$3 work=$4 with_python=$5 with_plugin=$6
+cmake=$1 build=$2 source=$3 work=$4 with_python=$5 with_plugin=$6 python=${7:-/usr/bin/python3}
 
 fail() {
   echo "install.fresh_prefix: $*" >&2
   exit 1
 }
 clean() {
-  env -i PATH=/usr/bin:/bin HOME="$work" DISPLAY="${DISPLAY:-}" "$@"
+  env -i PATH=/usr/bin:/bin HOME="$work" DISPLAY="${DISPLAY:-}" \
+    ${ASAN_OPTIONS+ASAN_OPTIONS="$ASAN_OPTIONS"} ${UBSAN_OPTIONS+UBSAN_OPTIONS="$UBSAN_OPTIONS"} "$@"
 }
 
 rm -rf "$work"
@@ -41,7 +44,7 @@ clean "$prefix/bin/vtkstylize" --style comic --size 96x72 --output "$work/cli.pn
 echo "vtkstylize from the moved prefix: $work/cli.png"
 
 if [ "$with_python" = ON ]; then
-  clean PYTHONPATH="$prefix/python" /usr/bin/python3 "$source/Testing/Install/check_python.py" \
+  clean PYTHONPATH="$prefix/python" "$python" "$source/Testing/Install/check_python.py" \
     "$prefix" || fail "the installed Python package did not work from $prefix"
 fi
 
