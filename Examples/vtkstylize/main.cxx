@@ -55,8 +55,6 @@
 #define VTKSTYLIZE_VERSION "unknown"
 #endif
 
-namespace
-{
 #if defined(__SANITIZE_ADDRESS__)
 #define VTKSTYLIZE_SANITIZED 1
 #include <cstdint>
@@ -66,6 +64,8 @@ namespace
 #define VTKSTYLIZE_SANITIZED 0
 #endif
 
+namespace
+{
 using namespace vtkstylize;
 
 // Error output and crash handling
