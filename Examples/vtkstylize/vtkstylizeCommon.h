@@ -53,6 +53,9 @@ const std::vector<std::string>& Warnings();
  */
 void SetMemoryLimit(double mib);
 
+/** Whether a message reports a failed allocation. */
+bool SaysOutOfMemory(const std::string& message);
+
 /** " (the memory limit: N MiB, --memory-limit)", or "" without a limit. */
 std::string MemoryLimitText();
 

@@ -1,11 +1,12 @@
 /**
- * The input stage of vtkstylize: reads a file by its extension, checks it, and turns it into
- * renderable surfaces ("parts").
+ * The input stage of vtkstylize: reads a file with vtkStylizeReader (the Filters module's
+ * checked reader, which the Python package offers too) and turns it into renderable surfaces
+ * ("parts").
  *
- * Broken input never reaches a filter or a mapper: the file is checked (exists, regular, not
- * empty; format checks of vtkstylizeFileChecks.h), the reader's errors are captured, and the
- * data is validated (connectivity within the points, cell types and sizes, structured
- * dimensions, array lengths, finite coordinates). Every failure is thrown as a CliError.
+ * Broken input never reaches a filter or a mapper: vtkStylizeReader checks the file before VTK's
+ * reader sees it, captures the reader's errors and validates the data (connectivity within the
+ * points, cell types and sizes, structured dimensions, array lengths, finite coordinates).
+ * Every failure is thrown as a CliError.
  */
 
 #ifndef vtkstylizeInput_h
@@ -38,7 +39,8 @@ bool IsSupportedInput(const std::string& path);
 
 /**
  * Checks and reads the file at the given time step (an index into the reader's time steps, or
- * into the data set files of a .pvd collection; 0 for files without time).
+ * into the data set files of a .pvd collection; 0 for files without time): vtkStylizeReader,
+ * its error thrown as a failure, its warnings passed to Warn().
  */
 vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep = 0);
 

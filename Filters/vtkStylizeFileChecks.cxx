@@ -1,4 +1,4 @@
-#include "vtkstylizeFileChecks.h"
+#include "vtkStylizeFileChecks.h"
 
 #include "vtkDataArray.h"
 #include "vtkNew.h"
@@ -16,12 +16,17 @@
 #include <cstdlib>
 #include <cstring>
 #include <iterator>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
-namespace vtkstylize
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace vtkStylizeFileChecks
 {
 namespace
 {
@@ -1199,6 +1204,270 @@ protected:
 vtkStandardNewMacro(FaceStreamChecker);
 } // namespace
 
+namespace
+{
+/** Bytes of one value of a VTK XML DataArray type. */
+double XMLTypeSize(const std::string& type)
+{
+  if (type == "Int8" || type == "UInt8" || type == "Bit" || type == "String" || type == "Char")
+  {
+    return 1.0;
+  }
+  if (type == "Int16" || type == "UInt16")
+  {
+    return 2.0;
+  }
+  if (type == "Int64" || type == "UInt64" || type == "Float64" || type == "IdType")
+  {
+    return 8.0;
+  }
+  return 4.0;
+}
+
+/** The attributes of a tag's text ("Name a=\"1\" b=\"x\""). */
+std::map<std::string, std::string> XMLAttributes(const std::string& tag)
+{
+  std::map<std::string, std::string> attributes;
+  std::size_t at = tag.find_first_of(" \t\r\n");
+  while (at != std::string::npos && at < tag.size())
+  {
+    const std::size_t eq = tag.find('=', at);
+    if (eq == std::string::npos)
+    {
+      break;
+    }
+    const std::size_t open = tag.find_first_of("\"'", eq);
+    if (open == std::string::npos)
+    {
+      break;
+    }
+    const std::size_t close = tag.find(tag[open], open + 1);
+    if (close == std::string::npos)
+    {
+      break;
+    }
+    std::string key = tag.substr(at, eq - at);
+    key.erase(0, key.find_first_not_of(" \t\r\n"));
+    key.erase(key.find_last_not_of(" \t\r\n") + 1);
+    attributes[key] = tag.substr(open + 1, close - open - 1);
+    at = close + 1;
+  }
+  return attributes;
+}
+
+/** The number in an attribute (0 when absent); NaN when it is not a number. */
+double XMLNumber(const std::map<std::string, std::string>& attributes, const char* key)
+{
+  const auto it = attributes.find(key);
+  if (it == attributes.end())
+  {
+    return 0.0;
+  }
+  char* end = nullptr;
+  const double value = std::strtod(it->second.c_str(), &end);
+  return end == it->second.c_str() ? std::nan("") : value;
+}
+
+/** The memory this process may allocate: the machine's, or a lower resource limit. */
+double MemoryAvailable()
+{
+  double bytes = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * ::sysconf(_SC_PAGE_SIZE);
+  for (int resource : { RLIMIT_AS, RLIMIT_DATA })
+  {
+    struct rlimit limit;
+    if (::getrlimit(resource, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    {
+      bytes = std::min(bytes, static_cast<double>(limit.rlim_cur));
+    }
+  }
+  return bytes;
+}
+
+std::string GiB(double bytes)
+{
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.3g GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+  return text;
+}
+} // namespace
+
+std::string CheckXMLClaims(const std::string& path)
+{
+  FileReader in(path);
+  if (!in.IsOpen())
+  {
+    return std::strerror(errno);
+  }
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0)
+  {
+    return std::strerror(errno);
+  }
+  const double fileSize = static_cast<double>(st.st_size);
+  bool compressed = false;
+  double values = 0.0, bytes = 0.0;
+  double points = 0.0, cells = 0.0;
+  double lists[4] = { 0.0, 0.0, 0.0, 0.0 }; // Verts, Lines, Strips, Polys
+  int piece = -1;
+  std::vector<std::string> sections;
+  std::string problem;
+  const auto addArray = [&](const std::map<std::string, std::string>& a) {
+    const std::string section = sections.empty() ? std::string() : sections.back();
+    double tuples = 0.0;
+    if (section == "Points" || section == "PointData")
+    {
+      tuples = points;
+    }
+    else if (section == "CellData" || section == "Cells")
+    {
+      const auto name = a.find("Name");
+      const bool faces = name != a.end() && (name->second == "faces" || name->second == "faceoffsets");
+      tuples = faces ? 0.0 : cells;
+    }
+    else if (section == "Verts" || section == "Lines" || section == "Strips" || section == "Polys")
+    {
+      const int k = section == "Verts" ? 0 : section == "Lines" ? 1 : section == "Strips" ? 2 : 3;
+      tuples = lists[k];
+    }
+    else if (section == "FieldData")
+    {
+      tuples = XMLNumber(a, "NumberOfTuples");
+    }
+    double components = a.count("NumberOfComponents") ? XMLNumber(a, "NumberOfComponents") : 1.0;
+    if (!(tuples >= 0.0) || !(components >= 0.0))
+    {
+      problem = "piece " + std::to_string(piece) + ": a data array claims a negative or " +
+        "unreadable size";
+      return;
+    }
+    values += tuples * components;
+    const auto type = a.find("type");
+    bytes += tuples * components * XMLTypeSize(type == a.end() ? std::string() : type->second);
+  };
+  std::string tag;
+  bool inTag = false, done = false;
+  char c;
+  while (!done && problem.empty() && in.Read(&c, 1))
+  {
+    if (!inTag)
+    {
+      if (c == '<')
+      {
+        inTag = true;
+        tag.clear();
+      }
+      continue;
+    }
+    if (c != '>')
+    {
+      if (tag.size() > (1u << 16))
+      {
+        return std::string(); // not a VTK XML header: the reader says what it is
+      }
+      tag += c;
+      continue;
+    }
+    inTag = false;
+    if (tag.empty() || tag[0] == '?' || tag[0] == '!')
+    {
+      continue;
+    }
+    if (tag[0] == '/')
+    {
+      const std::string name = Words(tag.substr(1)).empty() ? "" : Words(tag.substr(1))[0];
+      if (!sections.empty() && sections.back() == name)
+      {
+        sections.pop_back();
+      }
+      continue;
+    }
+    const bool closed = tag.back() == '/';
+    if (closed)
+    {
+      tag.pop_back();
+    }
+    const std::string name = tag.substr(0, tag.find_first_of(" \t\r\n"));
+    const std::map<std::string, std::string> a = XMLAttributes(tag);
+    if (name == "VTKFile")
+    {
+      compressed = a.count("compressor") && !a.at("compressor").empty();
+    }
+    else if (name == "AppendedData")
+    {
+      done = true;
+    }
+    else if (name == "Piece")
+    {
+      ++piece;
+      points = XMLNumber(a, "NumberOfPoints");
+      cells = XMLNumber(a, "NumberOfCells");
+      const char* keys[4] = { "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys" };
+      for (int k = 0; k < 4; ++k)
+      {
+        lists[k] = XMLNumber(a, keys[k]);
+        cells += lists[k];
+      }
+      const auto extent = a.find("Extent");
+      if (extent != a.end())
+      {
+        const std::vector<std::string> e = Words(extent->second);
+        if (e.size() == 6)
+        {
+          points = cells = 1.0;
+          for (int d = 0; d < 3; ++d)
+          {
+            const double n = std::strtod(e[2 * d + 1].c_str(), nullptr) -
+              std::strtod(e[2 * d].c_str(), nullptr) + 1.0;
+            points *= n;
+            cells *= n > 1.0 ? n - 1.0 : 1.0;
+          }
+        }
+      }
+      if (!(points >= 0.0) || !(cells >= 0.0))
+      {
+        problem = "piece " + std::to_string(piece) + " claims a negative or unreadable number " +
+          "of points or cells";
+      }
+      else if (!closed)
+      {
+        sections.push_back(name);
+      }
+    }
+    else if (name == "DataArray" || name == "Array")
+    {
+      addArray(a);
+      if (!closed)
+      {
+        sections.push_back(name);
+      }
+    }
+    else if (!closed)
+    {
+      sections.push_back(name);
+    }
+  }
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  const double memory = MemoryAvailable();
+  if (bytes > memory)
+  {
+    return "its pieces claim arrays of " + GiB(bytes) + " (" + std::to_string(piece + 1) +
+      " piece" + (piece == 0 ? "" : "s") + "), more than the memory this process may use (" +
+      GiB(memory) + ")";
+  }
+  if (!compressed && values > fileSize)
+  {
+    char text[160];
+    std::snprintf(text, sizeof(text),
+      "its pieces claim %.0f values, more than an uncompressed file of %.0f bytes can hold",
+      values, fileSize);
+    return text;
+  }
+  return std::string();
+}
+
 std::string CheckUnstructuredGridFaces(const std::string& path)
 {
   vtkNew<FaceStreamChecker> checker;
@@ -1574,4 +1843,4 @@ std::string CheckExodusFile(const std::string& path)
   }
   return NetCDFHeader(bytes, size, bytes[3]).Check();
 }
-} // namespace vtkstylize
+} // namespace vtkStylizeFileChecks

@@ -1,6 +1,7 @@
 /**
- * Structural checks of input files whose VTK 9.1 readers crash (or silently read garbage) on
- * malformed input, run before the reader sees the file:
+ * Structural checks of input files whose VTK readers (9.1, and ParaView 5.11's) crash, hang,
+ * allocate what a header claims or silently read garbage on malformed input, run by
+ * vtkStylizeReader before the reader sees the file (a private header of the Filters module):
  *
  * - PLY (vtkPLYReader crashes on a malformed header, and on face indices out of range, e.g. in
  *   a truncated file): the header is parsed, the body walked element by element (ASCII or
@@ -12,17 +13,19 @@
  *
  * - VTK legacy: the first line must be the "# vtk DataFile Version" header (so that garbage is
  *   reported as such rather than quoted back).
- * - VTK XML unstructured grids: the polyhedron face streams (below).
+ * - VTK XML: the sizes the pieces claim; unstructured grids' polyhedron face streams; image
+ *   data's origin, spacing and direction (below).
+ * - EnSight case files and Exodus II headers (below).
  *
  * Each function returns an empty string when the file passes, else a one-line reason.
  */
 
-#ifndef vtkstylizeFileChecks_h
-#define vtkstylizeFileChecks_h
+#ifndef vtkStylizeFileChecks_h
+#define vtkStylizeFileChecks_h
 
 #include <string>
 
-namespace vtkstylize
+namespace vtkStylizeFileChecks
 {
 std::string CheckPLYFile(const std::string& path);
 std::string CheckOBJFile(const std::string& path);
@@ -36,6 +39,15 @@ std::string CheckLegacyVTKFile(const std::string& path);
  * appended, binary, compressed); a file without polyhedra costs a parse of its XML header.
  */
 std::string CheckUnstructuredGridFaces(const std::string& path);
+/**
+ * VTK XML serial data (.vtp, .vtu, .vts, .vtr, .vti): the sizes the pieces claim (NumberOfPoints,
+ * NumberOfCells, the polygonal counts, extents), which VTK's reader allocates before it reads a
+ * value. The arrays they imply (tuples x components x type size) must fit in the memory the
+ * process may use (the machine's, or a lower RLIMIT_AS or RLIMIT_DATA), and a file without a
+ * compressor must hold at least one byte per value. The header is scanned as text, tags only
+ * (inline data is skipped, appended data not read).
+ */
+std::string CheckXMLClaims(const std::string& path);
 /**
  * VTK XML image data (.vti, .pvti): the Origin, Spacing and Direction attributes of the
  * (P)ImageData element must be finite numbers, 3, 3 and 9 of them (VTK's reader silently
