@@ -7,8 +7,11 @@ interpreter Debian's python3-vtk9 is built for; an X display is needed, e.g. Xvf
     PYTHONPATH=build/python /usr/bin/python3 Examples/Python/stylize_dataset.py \\
         [FILE] [-o OUTDIR] [--size WxH]
 
-FILE      a dataset: .vtp .vtu .vts .vtr .vti .vtm (VTK XML), .vtk (legacy), .stl, .ply, .obj.
-          Polygonal data is drawn as is; other datasets as their outer surface
+FILE      a dataset in any format vtkStylizeReader reads (VTK XML and legacy, .pvd, Exodus,
+          EnSight, OpenFOAM, STL, OBJ, PLY), checked before VTK's reader opens it, so that a
+          broken file is an error line rather than a crash. Points at NaN or infinity are left
+          out with their cells (a warning). Polygonal data is drawn as is; other datasets as
+          their outer surface
           (vtkDataSetSurfaceFilter); a 3D image with point scalars as the contour at the middle
           of the scalar range; a multiblock file block by block. Without FILE: the built-in
           scene (vtkStylizeDemoScene).
@@ -19,8 +22,8 @@ It writes OUTDIR/none.png, comic.png, pixel.png and sketch.png (the styles in
 vtkstylize.STYLES, each with the pass's default settings; "none" is plain VTK rendering) and
 prints their paths, one per line. Rendering is offscreen, without multisampling. Point (else
 cell) scalars colour the surface through a cool-to-warm map; without scalars it is light gray.
-Errors (missing or unreadable file, nothing to draw, bad option) print one line on stderr and
-exit with status 1 (2 for command-line syntax).
+Errors (missing, unreadable or broken file, nothing to draw, bad option) print one line on
+stderr and exit with status 1 (2 for command-line syntax); no image is written then.
 """
 
 import argparse
@@ -38,30 +41,14 @@ from vtkmodules.vtkCommonDataModel import (vtkCompositeDataSet, vtkDataSet, vtkI
                                             vtkPolyData)
 from vtkmodules.vtkFiltersCore import vtkContourFilter, vtkPolyDataNormals
 from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
-from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkIOLegacy import vtkGenericDataObjectReader
-from vtkmodules.vtkIOPLY import vtkPLYReader
-from vtkmodules.vtkIOXML import (vtkXMLImageDataReader, vtkXMLMultiBlockDataReader,
-                                 vtkXMLPolyDataReader, vtkXMLRectilinearGridReader,
-                                 vtkXMLStructuredGridReader, vtkXMLUnstructuredGridReader)
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkPolyDataMapper,
                                          vtkRenderer, vtkRenderWindow, vtkWindowToImageFilter)
 
-READERS = {
-    ".vtp": vtkXMLPolyDataReader,
-    ".vtu": vtkXMLUnstructuredGridReader,
-    ".vts": vtkXMLStructuredGridReader,
-    ".vtr": vtkXMLRectilinearGridReader,
-    ".vti": vtkXMLImageDataReader,
-    ".vtm": vtkXMLMultiBlockDataReader,
-    ".vtk": vtkGenericDataObjectReader,
-    ".stl": vtkSTLReader,
-    ".ply": vtkPLYReader,
-    ".obj": vtkOBJReader,
-}
-
 SOLID_COLOR = (0.80, 0.80, 0.80)
+
+# What the reader left out (printed after a success, so that a failure stays one line).
+WARNINGS = []
 
 
 class Failure(Exception):
@@ -79,26 +66,23 @@ def parse_size(text):
 
 
 def read(path):
-    """The data object in path, read by the reader its extension names."""
-    extension = os.path.splitext(path)[1].lower()
-    if extension not in READERS:
+    """The data object in path, read by vtkStylizeReader (checked: a broken file is an error)."""
+    reader_class = vtkstylize.vtkStylizeReader
+    if not reader_class.IsSupportedFile(path):
         raise Failure("%s: unknown format %r (known: %s)"
-                      % (path, extension, " ".join(sorted(READERS))))
-    if not os.path.isfile(path):
-        raise Failure("%s: no such file" % path)
-    reader = READERS[extension]()
+                      % (path, os.path.splitext(path)[1], reader_class.GetSupportedExtensions()))
+    reader = reader_class()
     reader.SetFileName(path)
-    if extension == ".vtk":
-        reader.ReadAllScalarsOn()
-        reader.ReadAllVectorsOn()
-        reader.ReadAllNormalsOn()
-    errors = []
-    reader.AddObserver(vtkCommand.ErrorEvent, lambda obj, event: errors.append(event))
+    # The reader's error is one line, GetErrorMessage(): these observers keep VTK from also
+    # printing it (and the executive's "returned failure") in its multi-line form.
+    quiet = lambda obj, event: None  # noqa: E731
+    reader.AddObserver(vtkCommand.ErrorEvent, quiet)
+    reader.GetExecutive().AddObserver(vtkCommand.ErrorEvent, quiet)
     reader.Update()
-    data = reader.GetOutputDataObject(0)
-    if errors or data is None:
-        raise Failure("%s: cannot be read as %s" % (path, extension))
-    return data
+    if reader.GetErrorMessage():
+        raise Failure(reader.GetErrorMessage())
+    WARNINGS.extend(reader.GetWarning(i) for i in range(reader.GetNumberOfWarnings()))
+    return reader.GetOutputDataObject(0)
 
 
 def to_surface(dataset):
@@ -303,6 +287,8 @@ def main(argv=None):
     except (Failure, OSError) as error:
         print("stylize_dataset.py: %s" % error, file=sys.stderr)
         return 1
+    for warning in WARNINGS:
+        print("stylize_dataset.py: warning: %s" % warning, file=sys.stderr)
     for path in paths:
         print(path)
     return 0

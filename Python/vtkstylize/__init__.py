@@ -22,6 +22,12 @@ Filters (module ``vtkstylize.vtkStylizeFilters``):
 - ``vtkStylizeDemoScene``: the built-in scene (wavelet isosurface, torus, streamline tubes) as
   a multiblock dataset.
 - ``vtkStylizePrincipalCurvatures``: per-point principal curvatures and directions of a surface.
+- ``vtkStylizeReader``: reads any dataset file the project renders (VTK XML and legacy, .pvd,
+  Exodus, EnSight, OpenFOAM, STL, OBJ, PLY), checked before VTK's reader opens it and validated
+  after, so that a broken or hostile file gives one error line (``GetErrorMessage()``) instead
+  of a crash, a hang or a huge allocation.
+- ``vtkStylizeOutputWindow``: an output window that records VTK's messages, for a program that
+  reports the first failure in one line.
 
 And a small pure-Python layer:
 

@@ -1,7 +1,13 @@
 #!/usr/bin/python3
-"""cli.hostile_corpus: vtkstylize against a corpus of hostile input, generated at test time.
+"""The hostile-input corpus, generated at test time, against the project's three entry points.
 
-    hostile_corpus.py VTKSTYLIZE DATA_DIR WORK_DIR
+    hostile_corpus.py [--runner cli|python|paraview] PROGRAM DATA_DIR WORK_DIR
+
+cli.hostile_corpus (--runner cli, the default; PROGRAM is vtkstylize), python.hostile_corpus
+(--runner python; PROGRAM is Examples/Python/stylize_dataset.py, run by this interpreter with the
+build's package on PYTHONPATH) and paraview.hostile_corpus (--runner paraview; PROGRAM is
+pvbatch-stylize, which runs Testing/ParaView/render_corpus.py: the plugin's Stylize Checked
+Reader, Extract Surface, the Principal Curvatures filter and the Stylize view in every style).
 
 The corpus (deterministic: every random choice is seeded by the case's name):
 - the command-line tests' data (DATA_DIR: valid files of every format, and the broken files of
@@ -16,15 +22,20 @@ The corpus (deterministic: every random choice is seeded by the case's name):
 - special files: a FIFO, a directory, /dev/zero and /dev/null behind a link, a link loop, a
   file that is a link to itself through another.
 
-Each case runs `vtkstylize --size 64x48 --output OUT CASE` with a time bound (60 s) and an
+cli and python: each case runs `vtkstylize --size 64x48 --output OUT CASE` (or
+`stylize_dataset.py CASE -o OUTDIR --size 64x48`: four PNGs) with a time bound (60 s) and an
 address-space bound (RLIMIT_AS, 6 GiB; not under AddressSanitizer, which reserves terabytes),
 two at a time. A case is:
-- a render: exit 0, a PNG at OUT, nothing else written beside it;
-- a clean refusal: exit 1 or 2, exactly one stderr line starting "vtkstylize: ", no OUT and
-  no temporary file left;
+- a render: exit 0, the PNG(s), nothing else written beside them;
+- a clean refusal: exit 1 or 2, exactly one stderr line starting with the program's name
+  ("vtkstylize: ", "stylize_dataset.py: "), no output and no temporary file left;
 - a crash (a signal, or "internal error"), a hang (the time bound), or a partial file (an
   output or a temporary file after a failure): each fails the test, as does a refusal that is
   not one line.
+paraview: one pvbatch reads every case in turn (the same bounds, per case, on the whole
+process); a case is a refusal when the reader's error message is one line, a render when the
+view rendered it in every style; a crash or hang fails the test (pvbatch is restarted after
+the case to go on with the rest).
 It prints the counts, the largest resident size (ru_maxrss) of any case, and the worst cases.
 """
 import hashlib
@@ -40,7 +51,15 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 
-exe, data, work = (os.path.abspath(a) for a in sys.argv[1:4])
+import json
+
+arguments = sys.argv[1:]
+RUNNER = "cli"
+if arguments[:1] == ["--runner"]:
+    RUNNER, arguments = arguments[1], arguments[2:]
+if RUNNER not in ("cli", "python", "paraview") or len(arguments) != 3:
+    sys.exit(__doc__)
+exe, data, work = (os.path.abspath(a) for a in arguments)
 TIME_LIMIT = 60.0
 ADDRESS_SPACE = 6 << 30
 MAX_MUTATED = 2 << 20
@@ -219,27 +238,36 @@ def leftovers(folder, out):
     return found
 
 
+def wait_bounded(process, start):
+    """Waits for the process with wait4 (its own peak resident size), killing its process group
+    after TIME_LIMIT seconds: (status, usage, hung)."""
+    while True:
+        pid, status, usage = os.wait4(process.pid, os.WNOHANG)
+        if pid:
+            return status, usage, False
+        if time.monotonic() - start > TIME_LIMIT:
+            os.killpg(process.pid, signal.SIGKILL)
+            pid, status, usage = os.wait4(process.pid, 0)
+            return status, usage, True
+        time.sleep(0.01)
+
+
 def run(index_case):
     index, (name, folder, file) = index_case
-    out = os.path.join(outputs, "case%04d.png" % index)
-    command = [exe, "--size", "64x48", "--output", out, file]
+    if RUNNER == "cli":
+        out = os.path.join(outputs, "case%04d.png" % index)
+        command = [exe, "--size", "64x48", "--output", out, file]
+        program = "vtkstylize: "
+    else:
+        out = os.path.join(outputs, "case%04d" % index)
+        command = [sys.executable, exe, file, "-o", out, "--size", "64x48"]
+        program = "stylize_dataset.py: "
     start = time.monotonic()
     log = os.path.join(outputs, "case%04d.log" % index)
     with open(log, "wb") as err_file:
         process = subprocess.Popen(command, cwd=folder, stdout=subprocess.DEVNULL,
                                    stderr=err_file, preexec_fn=limits)
-    # waited for with wait4: the case's own peak resident size
-    hung = False
-    while True:
-        pid, status, usage = os.wait4(process.pid, os.WNOHANG)
-        if pid:
-            break
-        if time.monotonic() - start > TIME_LIMIT:
-            hung = True
-            os.killpg(process.pid, signal.SIGKILL)
-            pid, status, usage = os.wait4(process.pid, 0)
-            break
-        time.sleep(0.01)
+    status, usage, hung = wait_bounded(process, start)
     process.returncode = os.waitstatus_to_exitcode(status)
     stderr = open(log, "rb").read()
     os.remove(log)
@@ -252,27 +280,93 @@ def run(index_case):
              not (SANITIZED and "WARNING: AddressSanitizer failed to allocate" in line)]
     if hung:
         kind = "hang"
-    elif rc < 0 or rc >= 128 or "internal error" in err:
+    elif rc < 0 or rc >= 128 or "internal error" in err or "Traceback" in err:
         kind = "crash"
     elif rc == 0:
-        kind = "render" if os.path.isfile(out) and open(out, "rb").read(8) == b"\x89PNG\r\n\x1a\n" \
-            else "bad render"
+        kind = "render" if rendered(out) else "bad render"
     else:
         left = leftovers(folder, out)
         if left:
             kind = "partial file"
-        elif len(lines) == 1 and lines[0].startswith("vtkstylize: ") and rc in (1, 2):
+        elif len(lines) == 1 and lines[0].startswith(program) and rc in (1, 2):
             kind = "refusal"
         else:
             kind = "bad refusal"
     for f in leftovers(folder, out):
-        os.remove(f)
+        shutil.rmtree(f) if os.path.isdir(f) else os.remove(f)
     return name, kind, rc, seconds, (lines[-1] if lines else ""), usage.ru_maxrss
 
 
+PNG = b"\x89PNG\r\n\x1a\n"
+
+
+def rendered(out):
+    """The run's images are there: the PNG (cli) or the four of the example's styles."""
+    files = [out] if RUNNER == "cli" else [os.path.join(out, s + ".png")
+                                           for s in ("none", "comic", "pixel", "sketch")]
+    return all(os.path.isfile(f) and open(f, "rb").read(8) == PNG for f in files)
+
+
+def run_paraview():
+    """Every case through one pvbatch (render_corpus.py), restarted after a crash or a hang:
+    the results in case order."""
+    script = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                          "ParaView", "render_corpus.py")
+    listing = os.path.join(work, "cases.json")
+    with open(listing, "w") as f:
+        json.dump([[os.path.join(folder, file), folder] for _, folder, file in cases], f)
+    progress = os.path.join(work, "progress.txt")
+    results = {}
+    first = 0
+    while first < len(cases):
+        open(progress, "w").close()
+        log = open(os.path.join(work, "pvbatch-%04d.log" % first), "wb")
+        process = subprocess.Popen([exe, script, listing, progress, str(first)],
+                                   stdout=log, stderr=subprocess.STDOUT, preexec_fn=limits)
+        current, started, hung = first, time.monotonic(), False
+        while True:
+            pid, status, usage = os.wait4(process.pid, os.WNOHANG)
+            if pid:
+                break
+            lines = open(progress).read().splitlines()
+            begun = [l for l in lines if l.startswith("start ")]
+            if begun and int(begun[-1].split()[1]) != current:
+                current, started = int(begun[-1].split()[1]), time.monotonic()
+            if time.monotonic() - started > TIME_LIMIT:
+                hung = True
+                os.killpg(process.pid, signal.SIGKILL)
+                pid, status, usage = os.wait4(process.pid, 0)
+                break
+            time.sleep(0.05)
+        log.close()
+        done = {}
+        for line in open(progress).read().splitlines():
+            if line.startswith("done "):
+                _, index, kind, seconds, rss, message = (line.split(" ", 5) + [""])[:6]
+                done[int(index)] = (kind, float(seconds), int(rss), message)
+        for index, (kind, seconds, rss, message) in done.items():
+            results[index] = (cases[index][0], kind, 0, seconds, message, rss)
+        last = max(done) if done else first - 1
+        if last + 1 >= len(cases):
+            break
+        # the process ended (or was killed) during case last + 1
+        failed = last + 1
+        rc = os.waitstatus_to_exitcode(status)
+        kind = "hang" if hung else "crash"
+        if not hung and rc == 0:
+            kind = "crash"  # (it stopped without finishing the list)
+        results[failed] = (cases[failed][0], kind, rc, 0.0, "pvbatch exit %d" % rc,
+                           usage.ru_maxrss)
+        first = failed + 1
+    return [results[i] for i in range(len(cases))]
+
+
 start = time.monotonic()
-with ThreadPoolExecutor(max_workers=2) as pool:
-    results = list(pool.map(run, enumerate(cases)))
+if RUNNER == "paraview":
+    results = run_paraview()
+else:
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        results = list(pool.map(run, enumerate(cases)))
 peak_kb, peak_case = max((r[5], r[0]) for r in results)
 elapsed = time.monotonic() - start
 
@@ -286,7 +380,8 @@ print("| %d | %d | %d | %d | %d | %d | %d |" % (
     len(results), counts.get("refusal", 0), counts.get("render", 0), counts.get("crash", 0),
     counts.get("hang", 0), counts.get("partial file", 0),
     counts.get("bad refusal", 0) + counts.get("bad render", 0)))
-print("largest resident size of any case: %.0f MB (%s); %.0f s in all; slowest cases:" % (
+print("largest resident size %s: %.0f MB (%s); %.0f s in all; slowest cases:" % (
+    "of the pvbatch process (its peak up to the case)" if RUNNER == "paraview" else "of any case",
     peak_kb / 1024.0, peak_case, elapsed))
 for name, kind, rc, seconds, message, rss in sorted(results, key=lambda r: -r[3])[:5]:
     print("  %.1f s  %s (%s)" % (seconds, name, kind))

@@ -12,7 +12,8 @@ pixel.png and sketch.png at the requested size. Checks (each fails on a broken p
 - pixel art: every channel of every pixel is one of the pass's Levels values (0, 85, 170, 255
   by default), so the image has at most Levels^3 colours, and the image changes only at the
   borders of a PixelSize grid (blocks of art pixels);
-- a missing input file gives exit status 1, one line on stderr and no output folder.
+- a missing input file gives exit status 1, one line on stderr and no output folder; so does a
+  broken one (a polyhedron face naming a point that does not exist), with the reader's line.
 
 Run with the build's python folder on PYTHONPATH and a display (the suite does both); argv[1],
 when given, is the example script.
@@ -239,6 +240,30 @@ with tempfile.TemporaryDirectory(prefix="stylize-example-") as tmp:
     check(result.returncode == 1, "missing file: exit status %d" % result.returncode)
     check(len(result.stderr.strip().splitlines()) == 1, "missing file: stderr %r" % result.stderr)
     check(not os.path.exists(missing_out), "missing file: the output folder was created")
+
+    # A broken file (a polyhedron face naming point 999999, which crashed VTK's surface filter):
+    # the checked reader's one line, nothing written.
+    broken = os.path.join(tmp, "far_id.vtu")
+    with open(broken, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0">\n'
+                '<UnstructuredGrid><Piece NumberOfPoints="4" NumberOfCells="1">\n'
+                '<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">'
+                '0 0 0 1 0 0 0 1 0 0 0 1</DataArray></Points>\n<Cells>\n'
+                '<DataArray type="Int64" Name="connectivity" format="ascii">0 1 2 3</DataArray>\n'
+                '<DataArray type="Int64" Name="offsets" format="ascii">4</DataArray>\n'
+                '<DataArray type="UInt8" Name="types" format="ascii">42</DataArray>\n'
+                '<DataArray type="Int64" Name="faces" format="ascii">'
+                '4 3 0 1 2 3 0 1 3 3 0 2 3 3 1 2 999999</DataArray>\n'
+                '<DataArray type="Int64" Name="faceoffsets" format="ascii">17</DataArray>\n'
+                '</Cells></Piece></UnstructuredGrid></VTKFile>\n')
+    broken_out = os.path.join(tmp, "broken")
+    result = run_example([broken, "-o", broken_out])
+    print("== broken file: status %d, stderr %r" % (result.returncode, result.stderr))
+    check(result.returncode == 1, "broken file: exit status %d" % result.returncode)
+    lines = result.stderr.strip().splitlines()
+    check(len(lines) == 1 and "999999" in result.stderr and
+          lines[0].startswith("stylize_dataset.py: cannot read"), "broken file: stderr %r" % result.stderr)
+    check(not os.path.exists(broken_out), "broken file: the output folder was created")
 
 print("%d failure(s)" % len(failures))
 sys.exit(1 if failures else 0)
