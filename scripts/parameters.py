@@ -54,9 +54,9 @@ DIFF_LINES = 200  # --check shows at most this many lines of each stale file's d
 
 # The classes documented, in order.
 CLASSES = ["vtkStylizeLightingPass", "vtkStylizeGBufferPass", "vtkComicPass", "vtkPixelArtPass",
-           "vtkSketchPass", "vtkStylizePrincipalCurvatures"]
+           "vtkSketchPass", "vtkStylizePrincipalCurvatures", "vtkStylizeReader"]
 # The classes of the Filters module (the others are passes).
-FILTER_CLASSES = {"vtkStylizePrincipalCurvatures"}
+FILTER_CLASSES = {"vtkStylizePrincipalCurvatures", "vtkStylizeReader"}
 
 # Units recognized in a comment, first match wins (the phrase must say it is the unit).
 UNIT_PATTERNS = [
@@ -1073,8 +1073,13 @@ def xml_documentation(p, kind):
             sentence = "Range %s, default %s." % (rng, default)
         else:
             sentence = "Default %s." % default
+        # (the comment often ends with the same sentence: not said twice)
+        if sentence.lower() in parts[0].lower():
+            sentence = ""
+        if unit.strip() and unit.strip().lower() in parts[0].lower():
+            unit = ""
         parts.append(unit + sentence)
-    return " ".join(t for t in parts if t)
+    return " ".join(t.strip() for t in parts if t.strip())
 
 
 def wrap_xml_text(text, indent):
@@ -1160,9 +1165,17 @@ def xml_property(d, p, errors):
             hi = " ".join([xml_num(int(rng[1]) if kind == "int" else rng[1], loc, errors)] * size)
             L.append('        <%sRangeDomain name="range" min="%s" max="%s"/>' % (
                 "Int" if kind == "int" else "Double", lo, hi))
+    elif kind == "string" and p.name == "FileName":
+        L.append('        <FileListDomain name="files"/>')
     L.append("        <Documentation>")
     L.append(wrap_xml_text(xml_text(xml_documentation(p, kind)), "          "))
     L.append("        </Documentation>")
+    if kind == "string" and p.name == "FileName":
+        L.append("        <Hints>")
+        L.append("          <FileChooser extensions=\"%s\" file_description=\"%s\"/>" % (
+            " ".join(e.lstrip(".") for e in d.klass.GetSupportedExtensions().split()),
+            "Data files read with VTK Stylize's checks"))
+        L.append("        </Hints>")
     L.append("      </%s>" % element)
     return L
 
@@ -1225,6 +1238,19 @@ XML_FILTER_PROXIES = [
      "other data first). The Stylize view's Sketch draws along them with Direction Source "
      "Model: the direction chosen by Tangent Direction becomes the point data's tangents."),
 ]
+# (proxy name, class, label, help, information properties: (name, getter, documentation)):
+# ParaView sources (readers) of the Filters module. Not
+# registered for any extension (ParaView's own readers stay the ones File > Open picks): they
+# are in the Sources menu and in Python (paraview.simple.StylizeCheckedReader).
+XML_SOURCE_PROXIES = [
+    ("StylizeCheckedReader", "vtkStylizeReader", "Stylize Checked Reader",
+     "For files that may be broken or hostile: the same checks as the vtkstylize command, so "
+     "that such a file gives one error line instead of crashing, hanging or exhausting the "
+     "memory of the server.",
+     [("ErrorMessage", "GetErrorMessage",
+       "The reason the last read failed, one line (empty after a success); read it with "
+       "UpdatePropertyInformation() and GetPropertyValue(\"ErrorMessage\").")]),
+]
 
 
 def render_xml_filters(docs_by_class, errors):
@@ -1233,8 +1259,8 @@ def render_xml_filters(docs_by_class, errors):
          "  do not edit by hand: run /usr/bin/python3 scripts/parameters.py (ctest -R",
          "  docs.parameters fails when this file is out of date).",
          "",
-         "  One filter proxy per class of the Filters module, one property per user parameter",
-         "  (docs/PARAMETERS.md).",
+         "  One filter or source proxy per class of the Filters module, one property per user",
+         "  parameter (docs/PARAMETERS.md).",
          "-->",
          "<ServerManagerConfiguration>",
          '  <ProxyGroup name="filters">']
@@ -1258,6 +1284,33 @@ def render_xml_filters(docs_by_class, errors):
             if xml_kind(p) is None:
                 continue
             L.extend(xml_property(d, p, errors))
+        L.append("      <Hints>")
+        L.append('        <ShowInMenu category="VTK Stylize"/>')
+        L.append("      </Hints>")
+        L.append("    </SourceProxy>")
+    L.append("  </ProxyGroup>")
+    L.append('  <ProxyGroup name="sources">')
+    for name, cls, label, text, informations in XML_SOURCE_PROXIES:
+        d = docs_by_class[cls]
+        L.append('    <SourceProxy name="%s" class="%s" label="%s">' % (name, cls, xml_attr(label)))
+        L.append("      <Documentation>")
+        L.append(wrap_xml_text(xml_text(plain(d.brief) + " " + text), "        "))
+        L.append("      </Documentation>")
+        for p in d.params:
+            if xml_kind(p) is None:
+                continue
+            L.extend(xml_property(d, p, errors))
+        for info, getter, doc in informations:
+            if not hasattr(d.klass, getter):
+                errors.append("%s: no method %s for the information property %s" % (
+                    cls, getter, info))
+            L.extend(xml_open("StringVectorProperty", [
+                ("name", info), ("command", getter), ("information_only", "1"),
+                ("number_of_elements", "1"), ("default_values", "")], "      "))
+            L.append("        <Documentation>")
+            L.append(wrap_xml_text(xml_text(doc), "          "))
+            L.append("        </Documentation>")
+            L.append("      </StringVectorProperty>")
         L.append("      <Hints>")
         L.append('        <ShowInMenu category="VTK Stylize"/>')
         L.append("      </Hints>")
