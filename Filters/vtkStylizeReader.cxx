@@ -1093,11 +1093,7 @@ void ValidateBlocks(vtkDataObject* data, const std::string& what)
       {
         continue; // (not a dataset: the caller decides what to do with it)
       }
-      std::string name = "block " + std::to_string(index);
-      if (it->HasCurrentMetaData() && it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
-      {
-        name = it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME());
-      }
+      const std::string name = vtkStylizeReader::GetBlockName(it, index);
       const std::string leafWhat = what + " (block " + Quote(name) + ")";
       vtkSmartPointer<vtkDataSet> kept = WithoutNonFinitePoints(ds, leafWhat);
       ValidateDataSet(kept, leafWhat);
@@ -1133,6 +1129,17 @@ std::string vtkStylizeReader::GetSupportedExtensions()
 bool vtkStylizeReader::IsSupportedFile(const std::string& path)
 {
   return IsSupportedInput(path);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkStylizeReader::GetBlockName(vtkCompositeDataIterator* iterator, int index)
+{
+  if (iterator && iterator->HasCurrentMetaData() &&
+    iterator->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
+  {
+    return iterator->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME());
+  }
+  return "block " + std::to_string(index);
 }
 
 //------------------------------------------------------------------------------

@@ -49,6 +49,8 @@
 #include <string> // for std::string
 #include <vector> // for std::vector
 
+class vtkCompositeDataIterator;
+
 class VTKSTYLIZEFILTERS_EXPORT vtkStylizeReader : public vtkDataObjectAlgorithm
 {
 public:
@@ -89,6 +91,13 @@ public:
 
   /** Whether the file's extension (case-insensitive) is one of GetSupportedExtensions(). */
   static bool IsSupportedFile(const std::string& path);
+
+  /**
+   * The name this reader's messages give the leaf an iterator over a composite dataset is at:
+   * its NAME metadata, else "block INDEX" (index: the leaf's position among the non-empty
+   * leaves, from 0).
+   */
+  static std::string GetBlockName(vtkCompositeDataIterator* iterator, int index);
 
 protected:
   vtkStylizeReader();

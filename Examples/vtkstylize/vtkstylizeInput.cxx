@@ -228,12 +228,7 @@ void CollectParts(vtkDataObject* data, const std::optional<double>& isoValue,
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem(), ++index)
     {
       vtkDataObject* leaf = it->GetCurrentDataObject();
-      std::string name = "block " + std::to_string(index);
-      if (it->HasCurrentMetaData() &&
-        it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
-      {
-        name = it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME());
-      }
+      const std::string name = vtkStylizeReader::GetBlockName(it, index);
       if (vtkCompositeDataSet::SafeDownCast(leaf))
       {
         CollectParts(leaf, isoValue, what, parts);
