@@ -217,13 +217,23 @@ void vtkComicPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, c
 }
 
 //------------------------------------------------------------------------------
-double vtkComicPass::PointSize(const Frame& frame) const
+double vtkComicPass::GetPixelsPerPoint(int height, int tiles) const
 {
-  // Points -> pixels of the full (possibly tiled, magnified) image.
-  return this->ReferenceHeight > 0.0 ? frame.FullSize[1] / this->ReferenceHeight
-                                     : static_cast<double>(frame.TileScale[1]);
+  return this->PointSize(std::max(1, height), std::max(1, tiles) * this->WindowScale[1]);
 }
 
+//------------------------------------------------------------------------------
+double vtkComicPass::PointSize(double fullHeight, double tileScale) const
+{
+  // Points -> pixels of the full (possibly tiled, magnified) image.
+  return this->ReferenceHeight > 0.0 ? fullHeight / this->ReferenceHeight : tileScale;
+}
+
+//------------------------------------------------------------------------------
+double vtkComicPass::PointSize(const Frame& frame) const
+{
+  return this->PointSize(frame.FullSize[1], frame.TileScale[1]);
+}
 //------------------------------------------------------------------------------
 double vtkComicPass::GetReach(const Frame& frame)
 {
@@ -252,7 +262,8 @@ void vtkComicPass::RenderEdgeStage(const Frame& frame, const Plan& plan)
 void vtkComicPass::RenderCompositeStage(const Frame& frame, const Plan& plan)
 {
   // Away from the scene only the outline (within the edge stride of a surface) differs from
-  // the background, unless colour edges also find the background's own gradients.
+  // the background, unless colour edges also find the background's own gradients (or a
+  // figure's layer records the background as such).
   const int stride =
     std::max(1, static_cast<int>(std::lround(this->EdgeWidth * this->PointSize(frame))));
   this->RenderStageToOutput(
@@ -261,5 +272,5 @@ void vtkComicPass::RenderCompositeStage(const Frame& frame, const Plan& plan)
       this->SetStageUniforms(u, frame, plan);
       u.Texture("comicEdgeTexture", this->TextureSlot(EDGE_TEXTURE));
     },
-    plan.ColorEdges ? -1 : stride);
+    plan.ColorEdges || this->Layer >= FIGURE_INPUTS ? -1 : stride);
 }

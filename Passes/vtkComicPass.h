@@ -60,7 +60,6 @@ public:
     OBJECT = 1  ///< to the surface (object-space position): moves with the data
   };
 
-  /** What the pass writes: the comic image, or one of its layers (for figures and tests). */
   /** What orients the hatch lines. */
   enum HatchOrientations
   {
@@ -68,20 +67,25 @@ public:
     PRINCIPAL = 1 ///< around the form: the surface's direction of larger |curvature|
   };
 
+  /** What the pass writes: the comic image, or one of its layers (for figures and tests). */
   enum Layers
   {
-    COMIC = 0,  ///< the pattern times the edges (the comic image)
-    EDGES = 1,  ///< the edge factor e alone (white = no edge, black = full edge), gray
-    PATTERN = 2 ///< the dots and hatching alone, without edges
+    COMIC = 0,         ///< the pattern times the edges (the comic image)
+    EDGES = 1,         ///< the edge factor e alone (white = no edge, black = full edge), gray
+    PATTERN = 2,       ///< the dots and hatching alone, without edges
+    FIGURE_INPUTS = 3, ///< red the tone, green the hatch direction's step / 255, blue the surface
+    PAPER = 4          ///< the paper under the ink: the tint (Tinted) or white; the background
   };
 
   ///@{
   /**
-   * The layer written to the output: COMIC (default), EDGES or PATTERN. Values: COMIC, the pattern
-   * times the edges (the comic image); EDGES, the edge factor e alone (white = no edge, black =
-   * full edge), gray; PATTERN, the dots and hatching alone, without edges.
+   * The layer written to the output: COMIC (default), EDGES, PATTERN, FIGURE_INPUTS or PAPER.
+   * Values: COMIC, the pattern times the edges (the comic image); EDGES, the edge factor e alone
+   * (white = no edge, black = full edge), gray; PATTERN, the dots and hatching alone, without
+   * edges; FIGURE_INPUTS, red the tone, green the hatch direction's step / 255, blue the surface;
+   * PAPER, the paper under the ink: the tint (Tinted) or white; the background.
    */
-  vtkSetClampMacro(Layer, int, COMIC, PATTERN);
+  vtkSetClampMacro(Layer, int, COMIC, PAPER);
   vtkGetMacro(Layer, int);
   ///@}
 
@@ -284,6 +288,14 @@ public:
    */
   vtkSetClampMacro(ReferenceHeight, double, 0.0, 1.0e5);
   vtkGetMacro(ReferenceHeight, double);
+
+  /**
+   * Pixels per point in an image `height` pixels tall rendered in `tiles` x `tiles` tiles (a
+   * magnified screenshot; 1 otherwise), with the current ReferenceHeight and WindowScale: what
+   * the pass multiplies its lengths by. For readers of the pattern's geometry
+   * (vtkStylizeFigureWriter).
+   */
+  double GetPixelsPerPoint(int height, int tiles) const;
   ///@}
 
 protected:
@@ -328,6 +340,8 @@ protected:
   void SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, const Plan& plan);
   /** Pixels per point in this frame's full (possibly tiled, magnified) image. */
   double PointSize(const Frame& frame) const;
+  /** Pixels per point in an image fullHeight tall, tiles times the window (WindowScale in). */
+  double PointSize(double fullHeight, double tileScale) const;
   /** The edge taps (twice the stride for colour edges) and the principal field's reach. */
   double GetReach(const Frame& frame) override;
   /** Stage 1 (colour edges only): luminance of f_normal, k1 and k2 into the edge texture. */

@@ -12,9 +12,13 @@ STYLIZE_JOBS="${STYLIZE_JOBS:-$(nproc)}"
 # mpi-default-bin gives mpiexec for the 1-rank against 2-rank test; libqt5svg5 draws the
 # GUI's toolbar icons (Debian's paraview does not pull it in); libcli11-dev parses vtkstylize's
 # command line; libcgal-demo ships the public test meshes of the real-data test set
-# (Testing/RealData).
-STYLIZE_PACKAGES=(cmake make g++ libvtk9-dev python3-vtk9 python3-dev libglm-dev xvfb xauth x11-utils
-  libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5 libcli11-dev libcgal-demo)
+# (Testing/RealData). Vector figures: libcairo2-dev writes SVG and PDF, libpotrace-dev traces
+# outlines, fonts-liberation gives text VTK's Arial metrics; the tests rasterize figures back with
+# librsvg2-bin (rsvg-convert) and poppler-utils (pdftoppm); orbit animations are encoded (GIF,
+# MP4) by ffmpeg.
+STYLIZE_PACKAGES=(cmake make g++ pkg-config libvtk9-dev python3-vtk9 python3-dev libglm-dev xvfb xauth
+  x11-utils libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5 libcli11-dev
+  libcgal-demo libcairo2-dev libpotrace-dev fonts-liberation librsvg2-bin poppler-utils ffmpeg)
 
 stylize_install_dependencies() {
   local missing=()

@@ -595,13 +595,19 @@ void AddProgramOptions(OptionTable& t)
   t.Value("--style", "NAME", "style: " + StyleNames("|") + " (default: " + o.Style + ")",
      general, [](Options& opt, const std::string& v) { opt.Style = v; })
     ->check(OneOf(styles));
-  t.Value("--output", "FILE.png", "output PNG file, must end with .png (default: " + o.Output + ")",
+  t.Value("--output", "FILE",
+     "output file: .png (image), .svg or .pdf (vector figure: outlines, dots, hatch lines, art "
+     "pixels and text as vector shapes); with --orbit .png (numbered frames), .gif or .mp4 "
+     "(default: " + o.Output + ")",
      general, [](Options& opt, const std::string& v) { opt.Output = v; })
     ->check(CLI::Validator(
       [](std::string& v) -> std::string {
-        const bool png = v.size() >= 4 && Lower(v.substr(v.size() - 4)) == ".png";
-        return png ? std::string()
-                   : "invalid value " + Quote(v) + ": the file name must end with .png";
+        const std::string ext = v.size() >= 4 ? Lower(v.substr(v.size() - 4)) : std::string();
+        const bool known = ext == ".png" || ext == ".svg" || ext == ".pdf" || ext == ".gif" ||
+          ext == ".mp4";
+        return known ? std::string()
+                     : "invalid value " + Quote(v) +
+            ": the file name must end with .png, .svg, .pdf, .gif or .mp4";
       },
       ""));
   t.Value("--size", "WxH",
@@ -649,6 +655,26 @@ void AddProgramOptions(OptionTable& t)
      general,
      [](Options& opt, const std::string& v) { opt.Elevation = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(-MaxAngle, MaxAngle, false));
+  t.Value("--orbit", "N",
+     "an orbit animation: N frames, the camera turned by --orbit-degrees / N about the view-up "
+     "axis between frames; writes FILE-0000.png ... and, with --output FILE.gif or FILE.mp4, the "
+     "animation (ffmpeg); the patterns are anchored to the surface unless --anchor, "
+     "--dither-anchor or --noise-space say otherwise (default: no orbit)",
+     general, [](Options& opt, const std::string& v) { opt.Orbit = std::atoi(v.c_str()); })
+    ->check(NumberIn(1, MaxOrbitFrames, true));
+  t.Value("--orbit-degrees", "DEG",
+     "the orbit's azimuth sweep in degrees, negative turns the other way (default: 360)",
+     general,
+     [](Options& opt, const std::string& v) { opt.OrbitDegrees = std::strtod(v.c_str(), nullptr); })
+    ->check(NumberIn(-3600, 3600, false));
+  t.Value("--orbit-elevation", "DEG",
+     "the orbit's elevation in degrees: the camera is raised by it before the orbit (default: 0)",
+     general,
+     [](Options& opt, const std::string& v) { opt.OrbitElevation = std::strtod(v.c_str(), nullptr); })
+    ->check(NumberIn(-89, 89, false));
+  t.Value("--fps", "N", "frames per second of the .gif or .mp4 animation (default: 25)", general,
+     [](Options& opt, const std::string& v) { opt.FramesPerSecond = std::atoi(v.c_str()); })
+    ->check(NumberIn(1, 100, true));
   t.Value("--zoom", "F",
      "camera zoom factor, after a file's data is fitted to fill " +
        FormatNumber(100 * FrameFill) + "% of the image's width or height (default: " +
@@ -1005,6 +1031,19 @@ Options ParseCommandLine(int argc, char* argv[])
     return opt;
   }
   cl.Table.Apply(opt);
+  opt.AnchorGiven = cl.App.count("--anchor") + cl.App.count("--dither-anchor") +
+      cl.App.count("--noise-space") > 0;
+  {
+    const std::string ext = Lower(opt.Output.substr(opt.Output.size() - 4));
+    if (opt.Orbit > 0 && (ext == ".svg" || ext == ".pdf"))
+    {
+      UsageError("--orbit writes .png frames, a .gif or an .mp4, not " + Quote(opt.Output));
+    }
+    if (opt.Orbit == 0 && (ext == ".gif" || ext == ".mp4"))
+    {
+      UsageError("--output " + Quote(opt.Output) + " is an animation: give --orbit N");
+    }
+  }
   const std::vector<std::string>& positional = cl.Inputs;
   if (positional.size() > 1)
   {

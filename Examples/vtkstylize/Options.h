@@ -36,6 +36,7 @@ constexpr double MinZoom = 0.01;
 constexpr double MaxZoom = 100.0;
 
 // Camera defaults for the built-in scene (files use 0 / 0: looking down -z).
+constexpr int MaxOrbitFrames = 3600;
 constexpr double SceneAzimuth = 30.0;
 constexpr double SceneElevation = 20.0;
 /** Files: the share of the image's width or height the data fills before --zoom. */
@@ -85,6 +86,11 @@ struct Options
   PassSettings Passes;
   bool ModelDirections = false; // --direction-source model: compute the principal directions
   int Magnify = 1;
+  int Orbit = 0;                // --orbit N: frames of an orbit animation; 0: a still
+  double OrbitDegrees = 360.0;  // --orbit-degrees
+  double OrbitElevation = 0.0;  // --orbit-elevation
+  int FramesPerSecond = 25;     // --fps
+  bool AnchorGiven = false;     // --anchor, --dither-anchor or --noise-space was given
   int TimeStep = 0;
   bool TimeStepGiven = false; // --time-step was given (a warning when there is no INPUT)
   bool GBuffer = false;

@@ -9,6 +9,8 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
+#include "vtkStylizeFigureWriter.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
@@ -29,6 +31,8 @@
 #include <string>
 
 #include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -151,7 +155,7 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(vtkRenderer* ren, const Options& opt
   return window;
 }
 
-/** Renders the window into an image of the requested size and writes it to opt.Output. */
+/** Renders the window into an image of the requested size and writes it to output. */
 /**
  * Whether the last render drew some opaque surface, line or point: a depth between the near and
  * the far plane somewhere, in the style's G-buffer (a style writes the window's depth only where
@@ -202,7 +206,8 @@ bool DrewSomething(vtkRenderWindow* window)
     z, z + depth->GetNumberOfValues(), [](float v) { return v > 0.0f && v < 1.0f; });
 }
 
-bool RenderAndWrite(vtkRenderWindow* window, const Options& opt, const std::string& emptyFailure)
+bool RenderAndWrite(
+  vtkRenderWindow* window, const Options& opt, const std::string& output, const std::string& emptyFailure)
 {
   ClearVTKErrors();
   window->Render();
@@ -230,24 +235,48 @@ bool RenderAndWrite(vtkRenderWindow* window, const Options& opt, const std::stri
       std::to_string(opt.Height * opt.Magnify));
   }
 
-  // Encode, then write into a file that has no name until it is complete, and rename that over
-  // the output: never a partial output file, and nothing left behind even by SIGKILL (an
-  // O_TMPFILE file vanishes with the process; where the file system has none, a hidden named
-  // file beside the output, removed on failure and on catchable signals).
-  const std::string what = "cannot write " + Quote(opt.Output);
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->WriteToMemoryOn();
-  writer->Write();
-  CheckVTKErrors(what);
-  vtkUnsignedCharArray* png = writer->GetResult();
-  if (writer->GetErrorCode() != vtkErrorCode::NoError || !png)
+  // Encode (a PNG, or a vector figure drawn from the style's layers), then write into a file
+  // that has no name until it is complete, and rename that over the output: never a partial
+  // output file, and nothing left behind even by SIGKILL (an O_TMPFILE file vanishes with the
+  // process; where the file system has none, a hidden named file beside the output, removed on
+  // failure and on catchable signals).
+  const std::string what = "cannot write " + Quote(output);
+  const std::string ext = Lower(output.substr(output.size() - 4));
+  vtkSmartPointer<vtkUnsignedCharArray> encoded;
+  if (ext == ".svg" || ext == ".pdf")
   {
-    const char* code = vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode());
-    Fail(what + ": " + (code ? code : "PNG encoding failed"));
+    vtkNew<vtkStylizeFigureWriter> figure;
+    figure->SetRenderWindow(window);
+    figure->SetFormat(ext == ".svg" ? vtkStylizeFigureWriter::SVG : vtkStylizeFigureWriter::PDF);
+    figure->SetMagnification(opt.Magnify);
+    figure->WriteToMemoryOn();
+    if (!figure->Write())
+    {
+      Fail(what + ": " + figure->GetErrorMessage());
+    }
+    ClearVTKErrors();
+    if (*figure->GetWarning())
+    {
+      Warn(std::string("figure: ") + figure->GetWarning());
+    }
+    encoded = figure->GetResult();
   }
-  const unsigned char* bytes = png->GetPointer(0);
-  const std::size_t size = static_cast<std::size_t>(png->GetNumberOfValues());
+  else
+  {
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->WriteToMemoryOn();
+    writer->Write();
+    CheckVTKErrors(what);
+    encoded = writer->GetResult();
+    if (writer->GetErrorCode() != vtkErrorCode::NoError || !encoded)
+    {
+      const char* code = vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode());
+      Fail(what + ": " + (code ? code : "PNG encoding failed"));
+    }
+  }
+  const unsigned char* bytes = encoded->GetPointer(0);
+  const std::size_t size = static_cast<std::size_t>(encoded->GetNumberOfValues());
   const auto writeAll = [&](int fd) {
     for (std::size_t done = 0; done < size;)
     {
@@ -266,9 +295,9 @@ bool RenderAndWrite(vtkRenderWindow* window, const Options& opt, const std::stri
   };
   const mode_t mask = ::umask(0);
   ::umask(mask);
-  const std::string hidden = Directory(opt.Output) + "/." + BaseName(opt.Output) + ".XXXXXX";
+  const std::string hidden = Directory(output) + "/." + BaseName(output) + ".XXXXXX";
   TemporaryFileGuard temporary;
-  int fd = ::open(Directory(opt.Output).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+  int fd = ::open(Directory(output).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
   if (fd >= 0)
   {
     if (!writeAll(fd))
@@ -327,11 +356,66 @@ bool RenderAndWrite(vtkRenderWindow* window, const Options& opt, const std::stri
       Fail(what + ": " + std::strerror(error));
     }
   }
-  if (std::rename(temporary.Get().c_str(), opt.Output.c_str()) != 0)
+  if (std::rename(temporary.Get().c_str(), output.c_str()) != 0)
   {
     Fail(what + ": " + std::strerror(errno));
   }
   temporary.Release();
   return drawn;
+}
+
+void EncodeAnimation(const std::string& pattern, int fps, const std::string& output)
+{
+  const std::string what = "cannot write " + Quote(output);
+  const std::string temporary = Directory(output) + "/." + BaseName(output) + ".encoding" +
+    output.substr(output.size() - 4);
+  const bool gif = Lower(output.substr(output.size() - 4)) == ".gif";
+  std::vector<std::string> args = { "ffmpeg", "-nostdin", "-y", "-v", "error", "-framerate",
+    std::to_string(fps), "-i", pattern };
+  if (gif)
+  {
+    // one palette from all the frames' colours (comic: black, white and gray; pixel art: its
+    // palette), no dithering of its own
+    args.insert(args.end(), { "-vf", "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none", "-loop", "0" });
+  }
+  else
+  {
+    args.insert(args.end(), { "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264",
+      "-pix_fmt", "yuv420p", "-crf", "18" });
+  }
+  args.push_back(temporary);
+  std::vector<char*> argv;
+  for (std::string& a : args)
+  {
+    argv.push_back(a.data());
+  }
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  const int spawned = posix_spawnp(&pid, "ffmpeg", &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0)
+  {
+    Fail(what + ": ffmpeg could not be run (" + std::strerror(spawned) +
+      "; Debian: apt-get install ffmpeg); the frames are written");
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+  {
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  {
+    ::unlink(temporary.c_str());
+    Fail(what + ": ffmpeg failed (exit status " +
+      std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + "); the frames are written");
+  }
+  if (std::rename(temporary.c_str(), output.c_str()) != 0)
+  {
+    const int error = errno;
+    ::unlink(temporary.c_str());
+    Fail(what + ": " + std::strerror(error));
+  }
 }
 }

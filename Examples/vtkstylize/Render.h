@@ -30,11 +30,21 @@ void CheckOutputPath(const std::string& path);
 vtkSmartPointer<vtkRenderWindow> MakeWindow(vtkRenderer* ren, const Options& opt);
 
 /**
- * Renders the window into an image of the requested size and writes it to opt.Output. Returns
+ * Renders the window into an image of the requested size and writes it to `output`: a PNG, or
+ * a vector figure (.svg, .pdf: vtkStylizeFigureWriter). Returns
  * whether the render drew some opaque surface, line or point; when it drew none and
  * emptyFailure is not empty, fails with that message instead of writing the image.
  */
-bool RenderAndWrite(vtkRenderWindow* window, const Options& opt, const std::string& emptyFailure);
+bool RenderAndWrite(vtkRenderWindow* window, const Options& opt, const std::string& output,
+  const std::string& emptyFailure);
+
+/**
+ * Encodes the numbered PNG frames `pattern` (printf style, e.g. "orbit-%04d.png") into `output`
+ * (.gif: a palette of the frames' own colours, no dithering; .mp4: H.264) with ffmpeg, at fps
+ * frames per second, written whole and renamed. Fails with one line when ffmpeg is missing or
+ * fails.
+ */
+void EncodeAnimation(const std::string& pattern, int fps, const std::string& output);
 }
 
 #endif

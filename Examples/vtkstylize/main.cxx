@@ -27,7 +27,10 @@
 
 #include "vtkLogger.h"
 #include "vtkMath.h"
+#include "vtkCamera.h"
+#include "vtkComicPass.h"
 #include "vtkMultiBlockDataSet.h"
+#include "vtkPixelArtPass.h"
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -149,6 +152,72 @@ void ReportSanitizersTo(int fd)
     &fd);
 }
 #endif
+
+/**
+ * --orbit N: N frames, the camera turned by opt.OrbitDegrees / N about the view-up axis between
+ * them (after raising it by opt.OrbitElevation), written as STEM-0000.png ...; a .gif or .mp4
+ * output is then encoded from them. The patterns are anchored to the surface (comic dots and
+ * hatching, pixel-art dither, sketch noise) unless an anchor option was given: a pattern fixed
+ * to the screen swims over the turning surface. Returns whether every frame drew something.
+ */
+bool RenderOrbit(vtkRenderWindow* window, vtkRenderer* ren, const Options& opt,
+  const std::string& emptyFailure, std::vector<std::string>& written)
+{
+  if (!opt.AnchorGiven)
+  {
+    vtkRenderPass* pass = ren->GetPass();
+    if (auto* comic = vtkComicPass::SafeDownCast(pass))
+    {
+      comic->SetAnchor(vtkComicPass::OBJECT);
+    }
+    else if (auto* pixelArt = vtkPixelArtPass::SafeDownCast(pass))
+    {
+      pixelArt->SetDitherAnchor(vtkPixelArtPass::SURFACE);
+    }
+    else if (auto* sketch = vtkSketchPass::SafeDownCast(pass))
+    {
+      sketch->SetNoiseSpace(vtkSketchPass::OBJECT);
+    }
+  }
+  vtkCamera* camera = ren->GetActiveCamera();
+  if (opt.OrbitElevation != 0.0)
+  {
+    camera->Elevation(opt.OrbitElevation);
+    camera->OrthogonalizeViewUp();
+  }
+  const std::string ext = Lower(opt.Output.substr(opt.Output.size() - 4));
+  const std::string stem = opt.Output.substr(0, opt.Output.size() - 4);
+  const int digits = std::max(4, static_cast<int>(std::to_string(opt.Orbit - 1).size()));
+  auto frameName = [&](int f) {
+    std::string number = std::to_string(f);
+    return stem + "-" + std::string(digits - number.size(), '0') + number + ".png";
+  };
+  bool drawn = true;
+  for (int f = 0; f < opt.Orbit; ++f)
+  {
+    if (f > 0)
+    {
+      camera->Azimuth(opt.OrbitDegrees / opt.Orbit);
+      camera->OrthogonalizeViewUp();
+    }
+    ren->ResetCameraClippingRange();
+    drawn = RenderAndWrite(window, opt, frameName(f), emptyFailure) && drawn;
+    written.push_back(frameName(f));
+  }
+  if (ext == ".gif" || ext == ".mp4")
+  {
+    // the pattern is escaped for ffmpeg's printf-style numbering
+    std::string pattern;
+    for (char ch : stem)
+    {
+      pattern += ch == '%' ? std::string("%%") : std::string(1, ch);
+    }
+    EncodeAnimation(pattern + "-%0" + std::to_string(digits) + "d.png", opt.FramesPerSecond,
+      opt.Output);
+    written.push_back(opt.Output);
+  }
+  return drawn;
+}
 
 int Run(int argc, char* argv[])
 {
@@ -291,7 +360,18 @@ int Run(int argc, char* argv[])
   const std::string empty = "the picture would show nothing but the background: " + what +
     " has no extent (all its points lie at " + FormatNumber(bounds[0]) + ", " +
     FormatNumber(bounds[2]) + ", " + FormatNumber(bounds[4]) + ")";
-  if (!RenderAndWrite(window, opt, extentless ? empty : std::string()))
+  bool drawn = true;
+  std::vector<std::string> written;
+  if (opt.Orbit > 0)
+  {
+    drawn = RenderOrbit(window, ren, opt, extentless ? empty : std::string(), written);
+  }
+  else
+  {
+    drawn = RenderAndWrite(window, opt, opt.Output, extentless ? empty : std::string());
+    written.push_back(opt.Output);
+  }
+  if (!drawn)
   {
     std::string box;
     for (int i = 0; i < 3; ++i)
@@ -319,7 +399,11 @@ int Run(int argc, char* argv[])
     {
       WriteError("note: " + note);
     }
-    std::cout << opt.Output << "\n" << std::flush;
+    for (const std::string& path : written)
+    {
+      std::cout << path << "\n";
+    }
+    std::cout << std::flush;
   }
   return 0;
 }

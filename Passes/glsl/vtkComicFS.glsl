@@ -7,7 +7,8 @@
 //   COMIC_HATCH_PRINCIPAL hatch lines around the form, along the principal direction field
 //                         (vtkStylizeFieldFS, computed by the base before the composite stage)
 //   COMIC_TINTED          keep the data's hue under the ink
-//   COMIC_LAYER           0 the comic image, 1 the edge factor alone, 2 the pattern alone
+//   COMIC_LAYER           0 the comic image, 1 the edge factor alone, 2 the pattern alone,
+//                         3 the pattern's inputs (vector figures), 4 the paper under the ink
 // Lengths arrive in pixels of the final (possibly magnified) image, already multiplied by the
 // pixels-per-point factor on the CPU, so the shader is resolution-free.
 
@@ -229,6 +230,9 @@ void comicMain()
 #endif
 
   float pattern = tone;
+#if !defined(COMIC_HATCH)
+  float angleStep = 255.0;
+#endif
 #if defined(COMIC_DOTS) || defined(COMIC_HATCH)
 #ifdef COMIC_DOTS
   vec2 dotUV = comicRotate(plane / comicDotSpacing, comicDotDirection);
@@ -241,6 +245,7 @@ void comicMain()
   vec2 hatchUV = plane / comicHatchSpacing;
   float hatchAA = clamp(0.5 * max(fwidth(hatchUV.x), fwidth(hatchUV.y)), 1e-4, 0.5);
   float angle = comicHatchAngle;
+  float angleStep = 255.0; // the layer FIGURE_INPUTS's record of the direction: 255 = comicHatchAngle
 #ifdef COMIC_HATCH_PRINCIPAL
   // Around the form: the screen angle of the field's direction (larger |curvature|), in
   // comicHatchSteps steps over 180 degrees so that each region keeps straight lines.
@@ -253,7 +258,9 @@ void comicMain()
     if (dot(s, s) > 1e-12)
     {
       float stepAngle = 3.14159265 / float(max(comicHatchSteps, 1));
-      angle = stepAngle * floor(atan(s.y, s.x) / stepAngle + 0.5);
+      float k = floor(atan(s.y, s.x) / stepAngle + 0.5);
+      angle = stepAngle * k;
+      angleStep = mod(k, float(max(comicHatchSteps, 1)));
     }
   }
 #else
@@ -265,7 +272,9 @@ void comicMain()
     {
       float stepAngle = 3.14159265 / float(comicHatchDirections);
       float phi = atan(n.y, n.x);
-      angle += stepAngle * floor(phi / stepAngle + 0.5);
+      float k = floor(phi / stepAngle + 0.5);
+      angle += stepAngle * k;
+      angleStep = mod(k, float(comicHatchDirections));
     }
   }
 #endif
@@ -313,6 +322,16 @@ void comicMain()
   result = vec3(e);
 #elif COMIC_LAYER == 2
   result = background ? colour : vec3(pattern);
+#elif COMIC_LAYER == 3
+  // what vtkStylizeFigureWriter draws the dots and hatch lines from: the tone, the hatch
+  // direction's step (255: HatchAngle), 1 on surfaces
+  result = vec3(surface ? tone : 1.0, angleStep / 255.0, surface ? 1.0 : 0.0);
+#elif COMIC_LAYER == 4
+#ifdef COMIC_TINTED
+  result = background ? colour : paper;
+#else
+  result = background ? colour : vec3(1.0);
+#endif
 #endif
   if (stylizeDiscardBackground == 1 && background && e >= 1.0)
   {

@@ -1,6 +1,6 @@
 """VTK Stylize: non-photorealistic render passes for VTK, as one Python package.
 
-The package holds the project's two wrapped VTK modules, re-exported at package level:
+The package holds the project's three wrapped VTK modules, re-exported at package level:
 
 Render passes (module ``vtkstylize.vtkStylizePasses``):
 
@@ -29,6 +29,12 @@ Filters (module ``vtkstylize.vtkStylizeFilters``):
 - ``vtkStylizeOutputWindow``: an output window that records VTK's messages, for a program that
   reports the first failure in one line.
 
+Figures (module ``vtkstylize.vtkStylizeFigures``):
+
+- ``vtkStylizeFigureWriter``: a stylized render window as a vector figure (SVG, PDF): comic
+  outlines traced, dots and hatch lines exact, pixel art as rectangles, sketch pencil as an
+  image under vector outlines, text and scalar bars as vector text and shapes.
+
 And a small pure-Python layer:
 
 - ``STYLES``: the style names, ``("none", "comic", "pixel", "sketch")``.
@@ -39,6 +45,13 @@ And a small pure-Python layer:
 - ``configure(obj, **settings)``: the same setter calls on any VTK object, e.g. a style's
   lighting pass.
 - ``settings_of(obj)``: the setting names of a pass (or any VTK object or class).
+- ``save_figure(window, path, **settings)``: writes the window as a vector figure (``.svg`` or
+  ``.pdf``; settings of ``vtkStylizeFigureWriter`` by setter name); raises ``RuntimeError``
+  with the writer's one-line message on failure.
+- ``orbit(window, frames, path_pattern, degrees=360, elevation=0, surface_anchor=True)``: an
+  orbit animation: writes ``frames`` PNGs (``path_pattern % index``), the camera turned by
+  ``degrees / frames`` between them, the patterns anchored to the surface (restored after);
+  ``encode(path_pattern, output, fps=25)`` makes a ``.gif`` or ``.mp4`` of them with ffmpeg.
 
 Importing: put the build's ``python`` folder (``<build>/python``) or the installed ``python``
 folder on ``PYTHONPATH`` and use the interpreter VTK's Python is built for (``/usr/bin/python3``
@@ -67,6 +80,7 @@ from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLRenderPass as _vtkOpenGLRend
 
 from .vtkStylizePasses import *  # noqa: F401,F403
 from .vtkStylizeFilters import *  # noqa: F401,F403
+from .vtkStylizeFigures import *  # noqa: F401,F403
 from .vtkStylizePasses import vtkComicPass as _vtkComicPass
 from .vtkStylizePasses import vtkPixelArtPass as _vtkPixelArtPass
 from .vtkStylizePasses import vtkSketchPass as _vtkSketchPass
@@ -179,3 +193,105 @@ def apply_style(renderer, style, **settings):
         old_pass.ReleaseGraphicsResources(window)
     renderer.SetPass(new_pass)
     return new_pass
+
+
+def save_figure(window, path, **settings):
+    """Writes `window` (rendered with a style) as a vector figure at `path` (.svg or .pdf)."""
+    writer = vtkStylizeFigureWriter()
+    configure(writer, **settings)
+    writer.SetRenderWindow(window)
+    writer.SetFileName(str(path))
+    if not writer.Write():
+        raise RuntimeError(writer.GetErrorMessage())
+    return writer
+
+
+def _surface_anchor(style_pass):
+    """Anchors a style's pattern to the surface; returns the call that restores it."""
+    if isinstance(style_pass, _vtkComicPass):
+        old = style_pass.GetAnchor()
+        style_pass.SetAnchor(_vtkComicPass.OBJECT)
+        return lambda: style_pass.SetAnchor(old)
+    if isinstance(style_pass, _vtkPixelArtPass):
+        old = style_pass.GetDitherAnchor()
+        style_pass.SetDitherAnchor(_vtkPixelArtPass.SURFACE)
+        return lambda: style_pass.SetDitherAnchor(old)
+    if isinstance(style_pass, _vtkSketchPass):
+        old = style_pass.GetNoiseSpace()
+        style_pass.SetNoiseSpace(_vtkSketchPass.OBJECT)
+        return lambda: style_pass.SetNoiseSpace(old)
+    return lambda: None
+
+
+def orbit(window, frames, path_pattern, degrees=360.0, elevation=0.0, surface_anchor=True,
+          magnification=1):
+    """Renders an orbit of `frames` PNGs named ``path_pattern % i`` (e.g. "orbit-%04d.png").
+
+    The active camera of the window's first renderer is raised by `elevation` degrees, then
+    turned by ``degrees / frames`` about the view-up axis between frames. With `surface_anchor`
+    the styles' patterns (comic dots and hatching, pixel-art dither, sketch noise) are anchored
+    to the surface for the animation and restored afterwards. Returns the written paths.
+    """
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+    frames = int(frames)
+    if frames < 1:
+        raise ValueError("frames must be at least 1, got %r" % frames)
+    renderer = window.GetRenderers().GetFirstRenderer()
+    if renderer is None:
+        raise ValueError("the window has no renderer")
+    restores = []
+    if surface_anchor:
+        renderers = window.GetRenderers()
+        renderers.InitTraversal()
+        for _ in range(renderers.GetNumberOfItems()):
+            restores.append(_surface_anchor(renderers.GetNextItem().GetPass()))
+    camera = renderer.GetActiveCamera()
+    if elevation:
+        camera.Elevation(float(elevation))
+        camera.OrthogonalizeViewUp()
+    written = []
+    try:
+        for index in range(frames):
+            if index:
+                camera.Azimuth(float(degrees) / frames)
+                camera.OrthogonalizeViewUp()
+            renderer.ResetCameraClippingRange()
+            window.Render()
+            grab = vtkWindowToImageFilter()
+            grab.SetInput(window)
+            grab.SetInputBufferTypeToRGB()
+            grab.ReadFrontBufferOff()
+            grab.SetScale(int(magnification))
+            grab.Update()
+            writer = vtkPNGWriter()
+            writer.SetInputConnection(grab.GetOutputPort())
+            path = path_pattern % index
+            writer.SetFileName(path)
+            writer.Write()
+            written.append(path)
+    finally:
+        for restore in restores:
+            restore()
+    return written
+
+
+def encode(path_pattern, output, fps=25):
+    """Encodes the numbered PNGs `path_pattern` into `output` (.gif or .mp4) with ffmpeg."""
+    import subprocess
+    output = str(output)
+    if output.lower().endswith(".gif"):
+        codec = ["-vf", "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none",
+                 "-loop", "0"]
+    elif output.lower().endswith(".mp4"):
+        codec = ["-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
+                 "-crf", "18"]
+    else:
+        raise ValueError("the animation must end in .gif or .mp4, got %r" % output)
+    result = subprocess.run(["ffmpeg", "-nostdin", "-y", "-v", "error", "-framerate", str(int(fps)),
+                             "-i", str(path_pattern)] + codec + [output],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if result.returncode != 0:
+        raise RuntimeError("ffmpeg failed: " + result.stderr.strip().splitlines()[-1:][0]
+                           if result.stderr.strip() else "ffmpeg failed")
+    return output

@@ -1,0 +1,205 @@
+#!/usr/bin/env python3
+"""Flicker of the styles' patterns in an orbit animation: screen against surface anchors.
+
+For each mesh, style and anchor it renders a 1 degree per frame orbit (the camera's azimuth,
+perspective, the headlight) and measures, between consecutive frames, the share of surface
+points whose ink changes: every surface pixel of a frame is reprojected, from its object-space
+position (the G-buffer's), into the previous frame; the previous frame's gray is interpolated
+bilinearly there and both are thresholded at half (comic, sketch), or the art pixel's colour is
+compared (pixel art, nearest pixel); points hidden in the previous frame (their position there
+more than two pixels' size away) are left out. It also measures the pattern's screen scale with
+the surface anchor: the median over surface pixels of focal distance / depth, the factor by
+which an object-space pattern sized at the focal point differs from the still frame's screen
+spacing.
+
+With --check it fails unless, for the styles named by --require, the surface anchor's share is
+at most --max-ratio (default 1/3, the target) of the screen anchor's and the scale stays within
+20% of the still frame's.
+
+usage: orbit.py DATADIR [--meshes bunny,fandisk] [--styles comic,pixel,sketch] [--frames 7]
+                [--size 400x300] [--check] [--require comic]
+"""
+import argparse
+import math
+import os
+import sys
+
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+import vtkstylize
+
+ANCHORS = {
+    "comic": ("Anchor", vtkstylize.vtkComicPass.SCREEN, vtkstylize.vtkComicPass.OBJECT),
+    "pixel": ("DitherAnchor", vtkstylize.vtkPixelArtPass.SCREEN, vtkstylize.vtkPixelArtPass.SURFACE),
+    "sketch": ("NoiseSpace", vtkstylize.vtkSketchPass.SCREEN_SPACE, vtkstylize.vtkSketchPass.OBJECT),
+}
+
+
+def scene(path, width, height):
+    reader = vtkstylize.vtkStylizeReader()
+    reader.SetFileName(path)
+    reader.Update()
+    if reader.GetErrorMessage():
+        sys.exit("orbit.py: " + reader.GetErrorMessage())
+    surface = vtk.vtkGeometryFilter()
+    surface.SetInputData(reader.GetOutputDataObject(0))
+    normals = vtk.vtkPolyDataNormals()
+    normals.SetInputConnection(surface.GetOutputPort())
+    normals.SplittingOff()
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputConnection(normals.GetOutputPort())
+    mapper.ScalarVisibilityOff()
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    renderer = vtk.vtkRenderer()
+    renderer.AddActor(actor)
+    renderer.SetBackground(1, 1, 1)
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(width, height)
+    window.AddRenderer(renderer)
+    renderer.ResetCamera()
+    camera = renderer.GetActiveCamera()
+    camera.Azimuth(30)
+    camera.Elevation(20)
+    camera.OrthogonalizeViewUp()
+    renderer.ResetCamera()
+    return window, renderer
+
+
+def capture(window):
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGB()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    w, h, _ = grab.GetOutput().GetDimensions()
+    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(h, w, 3).astype(float)
+
+
+def positions(renderer, window):
+    gbuffer = vtkstylize.vtkStylizeGBufferPass()
+    gbuffer.SetChannels(vtkstylize.vtkStylizeGBufferPass.POSITION)
+    gbuffer.SetPositionSpace(vtkstylize.vtkStylizeGBufferPass.OBJECT)
+    style = renderer.GetPass()
+    renderer.SetPass(gbuffer)
+    window.Render()
+    out = vtk.vtkFloatArray()
+    gbuffer.DownloadChannel(vtkstylize.vtkStylizeGBufferPass.POSITION_BUFFER, out)
+    gbuffer.ReleaseGraphicsResources(window)
+    renderer.SetPass(style)
+    w, h = window.GetSize()
+    return vtk_to_numpy(out).reshape(h, w, 4).copy()
+
+
+def measure(window, renderer, style, anchor, frames):
+    w, h = window.GetSize()
+    setting, screen, surface = ANCHORS[style]
+    styled = vtkstylize.create_pass(style)
+    getattr(styled, "Set" + setting)(screen if anchor == "screen" else surface)
+    renderer.SetPass(styled)
+    camera = renderer.GetActiveCamera()
+    start = [camera.GetPosition(), camera.GetFocalPoint(), camera.GetViewUp()]
+    changed = counted = 0
+    scales = []
+    previous = None
+    for f in range(frames):
+        if f:
+            camera.Azimuth(1.0)
+            camera.OrthogonalizeViewUp()
+        renderer.ResetCameraClippingRange()
+        window.Render()
+        image = capture(window)
+        pos = positions(renderer, window)
+        matrix = camera.GetCompositeProjectionTransformMatrix(w / h, -1, 1)
+        m = np.array([[matrix.GetElement(i, j) for j in range(4)] for i in range(4)])
+        on = pos[..., 3] > 0.5
+        # the pattern's screen scale with an object-space pattern: focal distance / depth
+        eye = np.array(camera.GetPosition())
+        view = np.array(camera.GetDirectionOfProjection())
+        depth = (pos[..., :3] - eye) @ view
+        scales.append(float(np.median(camera.GetDistance() / depth[on])))
+        pixel_world = 2 * camera.GetDistance() * math.tan(math.radians(camera.GetViewAngle() / 2)) / h
+        if previous is not None:
+            p_image, p_pos, p_m, p_on = previous
+            ys, xs = np.nonzero(on)
+            q = np.c_[pos[ys, xs, :3], np.ones(len(ys))] @ p_m.T
+            ok = q[:, 3] > 0
+            x = (q[:, 0] / q[:, 3] * 0.5 + 0.5) * w - 0.5
+            y = (q[:, 1] / q[:, 3] * 0.5 + 0.5) * h - 0.5
+            x0 = np.floor(x).astype(int)
+            y0 = np.floor(y).astype(int)
+            ok &= (x0 >= 0) & (y0 >= 0) & (x0 + 1 < w) & (y0 + 1 < h)
+            x0, y0, x, y, ys, xs = x0[ok], y0[ok], x[ok], y[ok], ys[ok], xs[ok]
+            # the four neighbours on the surface, and the nearest one the same point (visible)
+            near_x = np.clip(np.rint(x).astype(int), 0, w - 1)
+            near_y = np.clip(np.rint(y).astype(int), 0, h - 1)
+            seen = p_on[y0, x0] & p_on[y0, x0 + 1] & p_on[y0 + 1, x0] & p_on[y0 + 1, x0 + 1]
+            gap = np.linalg.norm(p_pos[near_y, near_x, :3] - pos[ys, xs, :3], axis=1)
+            seen &= gap < 2.0 * pixel_world * np.maximum(1.0, depth[ys, xs] / camera.GetDistance())
+            if style == "pixel":
+                now = image[ys, xs]
+                before = p_image[near_y, near_x]
+                diff = np.any(now != before, axis=1)
+            else:
+                gray = image.mean(axis=2)
+                p_gray = p_image.mean(axis=2)
+                tx, ty = x - x0, y - y0
+                bilinear = (p_gray[y0, x0] * (1 - tx) * (1 - ty) + p_gray[y0, x0 + 1] * tx * (1 - ty) +
+                            p_gray[y0 + 1, x0] * (1 - tx) * ty + p_gray[y0 + 1, x0 + 1] * tx * ty)
+                diff = (gray[ys, xs] < 128) != (bilinear < 128)
+            changed += int(np.count_nonzero(diff & seen))
+            counted += int(np.count_nonzero(seen))
+        previous = (image, pos, m, on)
+    camera.SetPosition(start[0])
+    camera.SetFocalPoint(start[1])
+    camera.SetViewUp(start[2])
+    styled.ReleaseGraphicsResources(window)
+    return changed / max(1, counted), min(scales) / scales[0], max(scales) / scales[0], scales[0]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("datadir")
+    parser.add_argument("--meshes", default="bunny,fandisk")
+    parser.add_argument("--styles", default="comic,pixel,sketch")
+    parser.add_argument("--frames", type=int, default=7)
+    parser.add_argument("--size", default="400x300")
+    parser.add_argument("--check", action="store_true")
+    parser.add_argument("--require", default="comic")
+    parser.add_argument("--max-ratio", type=float, default=1.0 / 3.0,
+                        help="the largest surface/screen share --check accepts (the target: 1/3)")
+    args = parser.parse_args()
+    width, height = (int(v) for v in args.size.split("x"))
+    failures = []
+    print("%-8s %-6s %10s %10s %7s %22s" % ("mesh", "style", "screen %", "surface %", "ratio",
+                                              "scale vs still (range)"))
+    for mesh in args.meshes.split(","):
+        path = os.path.join(args.datadir, mesh + ".ply")
+        for style in args.styles.split(","):
+            window, renderer = scene(path, width, height)
+            screen = measure(window, renderer, style, "screen", args.frames)
+            surface = measure(window, renderer, style, "surface", args.frames)
+            ratio = surface[0] / max(1e-9, screen[0])
+            print("%-8s %-6s %10.2f %10.2f %7.2f %11.3f .. %.3f" % (
+                mesh, style, 100 * screen[0], 100 * surface[0], ratio, surface[1] * surface[3],
+                surface[2] * surface[3]))
+            sys.stdout.flush()
+            if style in args.require.split(","):
+                if ratio > args.max_ratio:
+                    failures.append("%s %s: surface/screen ratio %.2f > %.2f" % (
+                        mesh, style, ratio, args.max_ratio))
+                if not (0.8 <= surface[1] * surface[3] and surface[2] * surface[3] <= 1.2):
+                    failures.append("%s %s: pattern scale outside 20%% of the still frame's" % (mesh, style))
+            window.Finalize()
+    if args.check and failures:
+        for f in failures:
+            print("FAIL: " + f)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
