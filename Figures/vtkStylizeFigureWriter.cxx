@@ -20,6 +20,8 @@
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkViewport.h"
+#include "vtkWindow.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <cairo-pdf.h>
@@ -761,43 +763,32 @@ void DrawText(Canvas& c, vtkTextActor* text, vtkViewport* viewport, int magnific
     }
     start = end + 1;
   }
-  // the font size whose ink fills the box's height (VTK's box is the text's ink box)
-  cairo_set_font_size(c.Cr, 100.0);
+  // VTK's size: the text property's font size in points at the window's DPI; the lines stacked
+  // from the top of VTK's box, which spans the lines' ascent to descent
+  vtkWindow* window = viewport->GetVTKWindow();
+  const double dpi = window ? window->GetDPI() : 72.0;
+  const double spacing = tp->GetLineSpacing() > 0 ? tp->GetLineSpacing() : 1.0;
+  cairo_set_font_size(c.Cr, tp->GetFontSize() * dpi / 72.0);
   cairo_font_extents_t fe;
   cairo_font_extents(c.Cr, &fe);
-  const double spacing = tp->GetLineSpacing() > 0 ? tp->GetLineSpacing() : 1.0;
-  double inkTop = 0, inkBottom = 0;
-  for (size_t i = 0; i < lines.size(); ++i)
-  {
-    cairo_text_extents_t te;
-    cairo_text_extents(c.Cr, lines[i].c_str(), &te);
-    const double baseline = i * (fe.ascent + fe.descent) * spacing;
-    inkTop = i ? std::min(inkTop, baseline + te.y_bearing) : te.y_bearing;
-    inkBottom = i ? std::max(inkBottom, baseline + te.y_bearing + te.height)
-                  : te.y_bearing + te.height;
-  }
-  if (!(inkBottom > inkTop))
-  {
-    return;
-  }
-  const double scale = (y1 - y0) / (inkBottom - inkTop);
-  cairo_set_font_size(c.Cr, 100.0 * scale);
-  cairo_font_extents(c.Cr, &fe);
+  const double height = (fe.ascent + fe.descent) * (1.0 + (lines.size() - 1) * spacing);
+  // centred vertically in VTK's box (whose padding differs slightly from cairo's extents)
+  const double top = c.H - 0.5 * (y0 + y1) - 0.5 * height;
   double* rgb = tp->GetColor();
   cairo_set_source_rgba(c.Cr, rgb[0], rgb[1], rgb[2], tp->GetOpacity());
-  double baseline = c.H - y1 - inkTop * scale;
+  double baseline = top + fe.ascent;
   for (const std::string& line : lines)
   {
     cairo_text_extents_t te;
     cairo_text_extents(c.Cr, line.c_str(), &te);
-    double x = x0 - te.x_bearing;
+    double x = x0;
     if (hj == VTK_TEXT_CENTERED)
     {
-      x = 0.5 * (x0 + x1 - te.width) - te.x_bearing;
+      x = 0.5 * (x0 + x1 - te.x_advance);
     }
     else if (hj == VTK_TEXT_RIGHT)
     {
-      x = x1 - te.width - te.x_bearing;
+      x = x1 - te.x_advance;
     }
     cairo_move_to(c.Cr, x, baseline);
     cairo_show_text(c.Cr, line.c_str());
