@@ -9,6 +9,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPixelArtPass.h"
 #include "vtkPointData.h"
+#include "vtkPropCollection.h"
 #include "vtkPoints.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -36,7 +37,9 @@
 #include <cstring>
 #include <fcntl.h>
 #include <map>
+#include <spawn.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
@@ -227,17 +230,23 @@ void SetColor(cairo_t* cr, unsigned key, double alpha = 1.0)
     (key & 255) / 255.0, alpha);
 }
 
-/** Accesses a scalar bar's laid-out swatches and labels (protected in VTK). */
+/**
+ * Accesses a scalar bar's laid-out swatches and labels (protected in VTK) through pointers to
+ * the members, which apply to any vtkScalarBarActor (casting the bar to this class would not:
+ * it is not one).
+ */
 class ScalarBarPeek : public vtkScalarBarActor
 {
 public:
   static vtkScalarBarActorInternal* Layout(vtkScalarBarActor* bar)
   {
-    return static_cast<ScalarBarPeek*>(bar)->P;
+    vtkScalarBarActorInternal* vtkScalarBarActor::*member = &ScalarBarPeek::P;
+    return bar->*member;
   }
   static vtkTextActor* Title(vtkScalarBarActor* bar)
   {
-    return static_cast<ScalarBarPeek*>(bar)->TitleActor;
+    vtkTextActor* vtkScalarBarActor::*member = &ScalarBarPeek::TitleActor;
+    return bar->*member;
   }
 };
 }
@@ -299,26 +308,7 @@ bool vtkStylizeFigureWriter::CaptureLayer(int layer, const double* key, vtkImage
   {
     return false;
   }
-  auto* comic = vtkComicPass::SafeDownCast(style);
-  auto* pixelArt = vtkPixelArtPass::SafeDownCast(style);
-  auto* sketch = vtkSketchPass::SafeDownCast(style);
-  const int previous =
-    comic ? comic->GetLayer() : (pixelArt ? pixelArt->GetLayer() : sketch->GetLayer());
-  auto setLayer = [&](int l) {
-    if (comic)
-    {
-      comic->SetLayer(l);
-    }
-    else if (pixelArt)
-    {
-      pixelArt->SetLayer(l);
-    }
-    else
-    {
-      sketch->SetLayer(l);
-    }
-  };
-  setLayer(layer);
+  const int previous = SetStyleLayer(style, layer);
   struct Saved
   {
     vtkRenderer* Renderer;
@@ -355,8 +345,107 @@ bool vtkStylizeFigureWriter::CaptureLayer(int layer, const double* key, vtkImage
     s.Renderer->SetGradientBackground(s.Gradient);
     s.Renderer->SetTexturedBackground(s.Textured);
   }
-  setLayer(previous);
+  SetStyleLayer(style, previous);
   return out->GetNumberOfPoints() > 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeFigureWriter::SetStyleLayer(vtkStylizeStylePass* style, int layer)
+{
+  if (auto* comic = vtkComicPass::SafeDownCast(style))
+  {
+    const int previous = comic->GetLayer();
+    comic->SetLayer(layer);
+    return previous;
+  }
+  if (auto* pixelArt = vtkPixelArtPass::SafeDownCast(style))
+  {
+    const int previous = pixelArt->GetLayer();
+    pixelArt->SetLayer(layer);
+    return previous;
+  }
+  if (auto* sketch = vtkSketchPass::SafeDownCast(style))
+  {
+    const int previous = sketch->GetLayer();
+    sketch->SetLayer(layer);
+    return previous;
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkStylizeFigureWriter::EncodeAnimation(const char* pattern, int fps, const char* output)
+{
+  const std::string out = output ? output : "";
+  std::string ext = out.size() >= 4 ? out.substr(out.size() - 4) : std::string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  if (!pattern || !*pattern || (ext != ".gif" && ext != ".mp4"))
+  {
+    return "cannot encode \"" + out + "\": the animation must end in .gif or .mp4";
+  }
+  const std::string what = "cannot write \"" + out + "\"";
+  const size_t slash = out.find_last_of('/');
+  const std::string temporary = (slash == std::string::npos ? std::string() : out.substr(0, slash + 1)) +
+    "." + out.substr(slash == std::string::npos ? 0 : slash + 1) + ".encoding" + ext;
+  std::vector<std::string> args = { "ffmpeg", "-nostdin", "-y", "-v", "error", "-framerate",
+    std::to_string(std::min(120, std::max(1, fps))), "-i", pattern };
+  if (ext == ".gif")
+  {
+    // one palette from all the frames' colours (comic: black, white and gray; pixel art: its
+    // palette), no dithering of its own
+    args.insert(args.end(),
+      { "-vf", "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none",
+        "-loop", "0" });
+  }
+  else
+  {
+    args.insert(args.end(), { "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264",
+      "-pix_fmt", "yuv420p", "-crf", "18" });
+  }
+  args.push_back(temporary);
+  std::vector<char*> argv;
+  for (std::string& a : args)
+  {
+    argv.push_back(&a[0]);
+  }
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  const int spawned = posix_spawnp(&pid, "ffmpeg", &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0)
+  {
+    return what + ": ffmpeg could not be run (" + std::strerror(spawned) +
+      "; Debian: apt-get install ffmpeg); the frames are written";
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+  {
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  {
+    ::unlink(temporary.c_str());
+    return what + ": ffmpeg failed (exit status " +
+      std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + "); the frames are written";
+  }
+  if (std::rename(temporary.c_str(), out.c_str()) != 0)
+  {
+    const int error = errno;
+    ::unlink(temporary.c_str());
+    return what + ": " + std::strerror(error);
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeFigureWriter::RenderFrame()
+{
+  if (this->RenderWindow)
+  {
+    this->RenderWindow->Render();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -923,16 +1012,28 @@ int vtkStylizeFigureWriter::Write()
   if (this->RenderWindow)
   {
     // one render with the 2D actors in place, so that they lay themselves out
-    this->RenderWindow->Render();
+    this->RenderFrame();
     vtkRendererCollection* renderers = this->RenderWindow->GetRenderers();
     renderers->InitTraversal();
     while (vtkRenderer* ren = renderers->GetNextItem())
     {
-      vtkActor2DCollection* actors = ren->GetActors2D();
-      actors->InitTraversal();
-      while (vtkActor2D* actor = actors->GetNextActor2D())
+      // the 2D actors of the visible props (a hidden widget's representation keeps its text
+      // actor's own visibility on: ParaView's annotation)
+      vtkNew<vtkPropCollection> actors;
+      vtkPropCollection* props = ren->GetViewProps();
+      props->InitTraversal();
+      while (vtkProp* prop = props->GetNextProp())
       {
-        if (!actor->GetVisibility())
+        if (prop->GetVisibility())
+        {
+          prop->GetActors2D(actors);
+        }
+      }
+      actors->InitTraversal();
+      while (vtkProp* item = actors->GetNextProp())
+      {
+        auto* actor = vtkActor2D::SafeDownCast(item);
+        if (!actor || !actor->GetVisibility())
         {
           continue;
         }

@@ -176,6 +176,22 @@ public:
    */
   static std::string WriteFigure(vtkRenderWindow* window, const char* fileName);
 
+  /**
+   * Sets the Layer of a comic, pixel-art or sketch pass (their enums); returns the layer it had,
+   * or -1 for any other pass (left alone).
+   */
+  static int SetStyleLayer(vtkStylizeStylePass* style, int layer);
+
+  /**
+   * Encodes numbered PNG frames into an animation with ffmpeg (Debian: apt-get install ffmpeg):
+   * `pattern` is ffmpeg's printf-style frame name (frame-%04d.png), `fps` frames per second
+   * (clamped to [1, 120]), `output` ends in .gif (one palette from all the frames' colours, no
+   * dithering of ffmpeg's own, looping) or .mp4 (H.264, yuv420p, CRF 18, sides padded to even).
+   * The file is encoded under a hidden name beside it and renamed: a failure leaves no partial
+   * file. Returns "" on success, the failure's line otherwise (the frames are left as they are).
+   */
+  static std::string EncodeAnimation(const char* pattern, int fps, const char* output);
+
 protected:
   vtkStylizeFigureWriter();
   ~vtkStylizeFigureWriter() override;
@@ -193,6 +209,13 @@ protected:
    * actors are hidden. Returns false when nothing could be read.
    */
   virtual bool CaptureLayer(int layer, const double* key, vtkImageData* out);
+
+  /**
+   * Renders the window once as it is, so that the 2D actors lay themselves out before they are
+   * drawn as vectors: RenderWindow->Render() by default. A view that renders otherwise
+   * (ParaView's) overrides it.
+   */
+  virtual void RenderFrame();
 
   vtkRenderWindow* RenderWindow = nullptr;
   char* FileName = nullptr;

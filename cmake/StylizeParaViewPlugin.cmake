@@ -57,9 +57,9 @@ set(VTKSTYLIZE_PARAVIEW_PYTHONPATH "${_pv_python_path}")
 find_package(Python3 3.9 REQUIRED COMPONENTS Interpreter Development)
 find_package(ParaView 5.11 REQUIRED COMPONENTS RemotingViews)
 # The readers VTKStylize::Filters uses (vtkStylizeReader): requested from ParaView's VTK so that
-# their own dependencies (NetCDF, HDF5) are found too.
+# their own dependencies (NetCDF, HDF5) are found too; VTKStylize::Figures draws scalar bars.
 find_package(VTK REQUIRED COMPONENTS
-  FiltersExtraction IOCore IOLegacy IOXML IOXMLParser IOGeometry IOExodus IOEnSight IOPLY)
+  RenderingAnnotation FiltersExtraction IOCore IOLegacy IOXML IOXMLParser IOGeometry IOExodus IOEnSight IOPLY)
 include("${VTK_DIR}/vtkEncodeString.cmake")
 
 paraview_plugin_scan(

@@ -31,8 +31,6 @@
 #include <string>
 
 #include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -366,56 +364,11 @@ bool RenderAndWrite(
 
 void EncodeAnimation(const std::string& pattern, int fps, const std::string& output)
 {
-  const std::string what = "cannot write " + Quote(output);
-  const std::string temporary = Directory(output) + "/." + BaseName(output) + ".encoding" +
-    output.substr(output.size() - 4);
-  const bool gif = Lower(output.substr(output.size() - 4)) == ".gif";
-  std::vector<std::string> args = { "ffmpeg", "-nostdin", "-y", "-v", "error", "-framerate",
-    std::to_string(fps), "-i", pattern };
-  if (gif)
+  const std::string error =
+    vtkStylizeFigureWriter::EncodeAnimation(pattern.c_str(), fps, output.c_str());
+  if (!error.empty())
   {
-    // one palette from all the frames' colours (comic: black, white and gray; pixel art: its
-    // palette), no dithering of its own
-    args.insert(args.end(), { "-vf", "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none", "-loop", "0" });
-  }
-  else
-  {
-    args.insert(args.end(), { "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264",
-      "-pix_fmt", "yuv420p", "-crf", "18" });
-  }
-  args.push_back(temporary);
-  std::vector<char*> argv;
-  for (std::string& a : args)
-  {
-    argv.push_back(a.data());
-  }
-  argv.push_back(nullptr);
-  pid_t pid = -1;
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  const int spawned = posix_spawnp(&pid, "ffmpeg", &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0)
-  {
-    Fail(what + ": ffmpeg could not be run (" + std::strerror(spawned) +
-      "; Debian: apt-get install ffmpeg); the frames are written");
-  }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
-  {
-  }
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-  {
-    ::unlink(temporary.c_str());
-    Fail(what + ": ffmpeg failed (exit status " +
-      std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + "); the frames are written");
-  }
-  if (std::rename(temporary.c_str(), output.c_str()) != 0)
-  {
-    const int error = errno;
-    ::unlink(temporary.c_str());
-    Fail(what + ": " + std::strerror(error));
+    Fail(error);
   }
 }
 }

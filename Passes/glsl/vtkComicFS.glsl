@@ -165,26 +165,51 @@ vec2 comicRotate(vec2 v, vec2 cs)
 }
 
 // Halftone dots (eq. 10): ink where the distance to the cell centre is below the radius whose
-// disc covers 1 - I of the cell (continuous in I), anti-aliased over aa cell units. 1 = paper.
+// disc covers 1 - I of the cell (continuous in I), anti-aliased over aa cell units, keeping the
+// ink's area: the smooth edge adds 0.2 pi aa^2 to a disc, so the disc is drawn that much
+// smaller, and a dot smaller than the smooth edge is a blob of radius aa, lighter by its
+// excess (else the lightest tones would turn to gray specks where the cells are a few pixels
+// wide). 1 = paper.
 float comicDots(vec2 uv, float tone, float aa)
 {
   vec2 f = fract(uv) - 0.5;
   float d = length(f);
   float coverage = clamp(1.0 - tone, 0.0, 1.0);
   // disc area pi r^2 = coverage up to r = 0.5; then the corners fill until r = sqrt(0.5)
-  float r = coverage <= 0.785398 ? sqrt(coverage / 3.14159265)
-                                 : mix(0.5, 0.7072, (coverage - 0.785398) / 0.214602);
-  return coverage > 1e-4 ? smoothstep(r - aa, r + aa, d) : 1.0;
+  if (coverage > 0.785398)
+  {
+    float r = mix(0.5, 0.7072, (coverage - 0.785398) / 0.214602);
+    return smoothstep(r - aa, r + aa, d);
+  }
+  float r2 = coverage / 3.14159265;
+  float big = r2 - 0.2 * aa * aa;
+  if (big >= aa * aa)
+  {
+    float r = sqrt(big);
+    return smoothstep(r - aa, r + aa, d);
+  }
+  float scale = r2 / (1.2 * aa * aa);
+  return 1.0 - scale * (1.0 - smoothstep(0.0, 2.0 * aa, d));
 }
 
 // Hatch lines (eq. 11-12, reconstructed): u is the coordinate across the lines in spacing units;
-// the line is the band within half the width w (a fraction of the spacing) of an integer.
-// 1 = paper.
+// the line is the band within half the width w (a fraction of the spacing) of an integer,
+// anti-aliased over aa spacing units; a line narrower than the smooth edge is a band of half
+// width aa, lighter by its excess, so that the ink's area is kept. 1 = paper.
 float comicLines(float u, float w, float aa)
 {
   float t = abs(fract(u + 0.5) - 0.5);
   float hw = 0.5 * w;
-  return w >= 1.0 ? 0.0 : (w > 0.0 ? smoothstep(hw - aa, hw + aa, t) : 1.0);
+  if (w >= 1.0)
+  {
+    return 0.0;
+  }
+  if (w <= 0.0)
+  {
+    return 1.0;
+  }
+  return hw >= aa ? smoothstep(hw - aa, hw + aa, t)
+                  : 1.0 - (hw / aa) * (1.0 - smoothstep(0.0, 2.0 * aa, t));
 }
 
 void comicMain()

@@ -2,6 +2,7 @@
 
 #include "vtkBoundingBox.h"
 #include "vtkComicPass.h"
+#include "vtkImageData.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
@@ -10,12 +11,115 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSketchPass.h"
+#include "vtkStylizeFigureWriter.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
+#include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
 
 vtkStandardNewMacro(vtkPVStylizeView);
+
+namespace
+{
+/**
+ * vtkStylizeFigureWriter for the view: the style is the view's (ParaView keeps it in its
+ * synchronized renderers, not in the renderer), and every frame renders as the view renders
+ * (StillRender: the ranks composited, the style applied after compositing).
+ */
+class FigureWriter : public vtkStylizeFigureWriter
+{
+public:
+  static FigureWriter* New()
+  {
+    auto* writer = new FigureWriter;
+    writer->InitializeObjectBase();
+    return writer;
+  }
+  vtkTypeMacro(FigureWriter, vtkStylizeFigureWriter);
+  vtkPVStylizeView* View = nullptr;
+
+protected:
+  vtkStylizeStylePass* FindStylePass() override { return this->View->GetActiveStylePass(); }
+
+  void RenderFrame() override { this->View->StillRender(); }
+
+  bool CaptureLayer(int layer, const double* key, vtkImageData* out) override
+  {
+    return this->View->CaptureFigureLayer(layer, key, out);
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+bool vtkPVStylizeView::CaptureFigureLayer(int layer, const double* key, vtkImageData* out)
+{
+  vtkStylizeStylePass* style = this->GetActiveStylePass();
+  if (!style)
+  {
+    return false;
+  }
+  double background[3];
+  this->GetBackground(background);
+  const int mode = this->ColorMode;
+  const bool own = this->GetUseRenderViewSettingsForBackground();
+  if (key)
+  {
+    this->SetUseRenderViewSettingsForBackground(false);
+    this->SetBackgroundColorMode(vtkPVRenderView::DEFAULT);
+    this->SetBackground(key[0], key[1], key[2]);
+  }
+  const int previous = vtkStylizeFigureWriter::SetStyleLayer(style, layer);
+  this->StillRender();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(this->GetRenderWindow());
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  out->DeepCopy(grab->GetOutput());
+  vtkStylizeFigureWriter::SetStyleLayer(style, previous);
+  if (key)
+  {
+    this->SetUseRenderViewSettingsForBackground(own);
+    this->SetBackgroundColorMode(mode);
+    this->SetBackground(background);
+  }
+  return out->GetNumberOfPoints() > 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::EncodeAnimation(const char* pattern, int fps, const char* output)
+{
+  this->FigureResult.clear();
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!output || !*output || (controller && controller->GetLocalProcessId() > 0))
+  {
+    return;
+  }
+  this->FigureResult = vtkStylizeFigureWriter::EncodeAnimation(pattern, fps, output);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::WriteFigure(const char* fileName)
+{
+  this->FigureResult.clear();
+  if (!fileName || !*fileName)
+  {
+    return;
+  }
+  vtkNew<FigureWriter> writer;
+  writer->View = this;
+  writer->SetRenderWindow(this->GetRenderWindow());
+  writer->SetFileName(fileName);
+  // Every rank renders the layers (compositing is collective); the first writes the file.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  writer->SetWriteToMemory(controller && controller->GetLocalProcessId() > 0);
+  writer->Write();
+  this->FigureResult = writer->GetErrorMessage();
+  // the style's frame as it was
+  this->StillRender();
+}
 
 //------------------------------------------------------------------------------
 vtkPVStylizeView::vtkPVStylizeView()

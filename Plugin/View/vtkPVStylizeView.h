@@ -38,7 +38,10 @@
 #include "vtkSmartPointer.h"              // for vtkSmartPointer
 #include "vtkStylizeParaViewViewModule.h" // for export macro
 
+#include <string> // for std::string
+
 class vtkComicPass;
+class vtkImageData;
 class vtkPixelArtPass;
 class vtkSketchPass;
 class vtkStylizeGBufferPass;
@@ -129,6 +132,33 @@ public:
   /** The style pass in use (nullptr for the style None). */
   vtkStylizeStylePass* GetActiveStylePass();
 
+  /**
+   * Writes the view as a vector figure with vtkStylizeFigureWriter (SVG or PDF, from the name's
+   * extension; the view's size, no magnification): the style's layers are rendered as the view
+   * renders (on every rank, composited), and the first rank writes the file. An empty name does
+   * nothing. The view's FigureFileName property calls it (the stylize Python module's
+   * SaveStylizedFigure() sets it); GetFigureResult() is "" after a success, the failure's line
+   * otherwise.
+   */
+  void WriteFigure(const char* fileName);
+  const char* GetFigureResult() { return this->FigureResult.c_str(); }
+
+  /**
+   * Encodes numbered PNG frames into a .gif or .mp4 animation with ffmpeg, on the first rank
+   * (vtkStylizeFigureWriter::EncodeAnimation(): `pattern` is ffmpeg's printf-style frame name,
+   * `fps` frames per second). An empty output does nothing. The view's AnimationEncoding
+   * property calls it (the stylize Python module's SaveStylizedOrbit() sets it);
+   * GetFigureResult() is "" after a success, the failure's line otherwise.
+   */
+  void EncodeAnimation(const char* pattern, int fps, const char* output);
+
+  /**
+   * For WriteFigure(): renders the frame (StillRender()) with the style's Layer set to `layer`
+   * (restored afterwards) and reads it back, RGB, row 0 at the bottom; with `key` set the view's
+   * background is that flat colour for this frame. False when nothing could be read.
+   */
+  bool CaptureFigureLayer(int layer, const double* key, vtkImageData* out);
+
 protected:
   vtkPVStylizeView();
   ~vtkPVStylizeView() override;
@@ -171,6 +201,7 @@ protected:
   vtkSmartPointer<vtkStylizeLightingPass> LightingPass;
   vtkSmartPointer<vtkRenderPass> LightingDelegate;
   vtkSmartPointer<vtkStylizeGBufferPass> RankGBuffer;
+  std::string FigureResult;
 
 private:
   vtkPVStylizeView(const vtkPVStylizeView&) = delete;

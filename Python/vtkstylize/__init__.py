@@ -277,21 +277,10 @@ def orbit(window, frames, path_pattern, degrees=360.0, elevation=0.0, surface_an
 
 
 def encode(path_pattern, output, fps=25):
-    """Encodes the numbered PNGs `path_pattern` into `output` (.gif or .mp4) with ffmpeg."""
-    import subprocess
-    output = str(output)
-    if output.lower().endswith(".gif"):
-        codec = ["-vf", "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none",
-                 "-loop", "0"]
-    elif output.lower().endswith(".mp4"):
-        codec = ["-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
-                 "-crf", "18"]
-    else:
-        raise ValueError("the animation must end in .gif or .mp4, got %r" % output)
-    result = subprocess.run(["ffmpeg", "-nostdin", "-y", "-v", "error", "-framerate", str(int(fps)),
-                             "-i", str(path_pattern)] + codec + [output],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    if result.returncode != 0:
-        raise RuntimeError("ffmpeg failed: " + result.stderr.strip().splitlines()[-1:][0]
-                           if result.stderr.strip() else "ffmpeg failed")
-    return output
+    """Encodes the numbered PNGs `path_pattern` (ffmpeg's printf-style name, e.g.
+    "orbit-%04d.png") into `output` (.gif or .mp4) with ffmpeg, as vtkstylize --orbit does
+    (vtkStylizeFigureWriter.EncodeAnimation). Raises RuntimeError with the failure's line."""
+    error = vtkStylizeFigureWriter.EncodeAnimation(str(path_pattern), int(fps), str(output))
+    if error:
+        raise RuntimeError(error)
+    return str(output)

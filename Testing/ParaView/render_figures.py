@@ -1,0 +1,58 @@
+"""Writes each style as a PNG screenshot and as a vector figure, and an orbit, from pvbatch.
+
+    pvbatch-stylize render_figures.py OUTPUT_PREFIX
+
+The scene of render_styles.py (a Wavelet contour) in a 400x300 view, with the plugin's Python
+module (stylize_paraview, embedded in the plugin): OUTPUT_PREFIX-<style>.png (SaveScreenshot),
+-<style>.svg and .pdf (SaveStylizedFigure, one call each); then a 3-frame comic orbit,
+OUTPUT_PREFIX-orbit.gif with its frames OUTPUT_PREFIX-orbit-0000.png ... (SaveStylizedOrbit, one
+call); then the failures: a figure of the style None and an orbit to a .txt are refused with
+RuntimeError/ValueError, and the view's anchor is as it was after the orbit.
+"""
+import sys
+
+from paraview.simple import *  # noqa: F401,F403
+from stylize_pv_scene import make_contour, make_view, show_framed
+
+import stylize_paraview as stylize
+
+prefix = sys.argv[1]
+size = [400, 300]
+view = CreateView("StylizeView")
+make_view(view, size)
+show_framed(make_contour(), view)
+for style, name in [("Comic", "comic"), ("Pixel art", "pixel"), ("Sketch", "sketch")]:
+    view.Style = style
+    Render(view)
+    SaveScreenshot("%s-%s.png" % (prefix, name), view, ImageResolution=size)
+    for ext in ("svg", "pdf"):
+        stylize.SaveStylizedFigure("%s-%s.%s" % (prefix, name, ext), view)
+view.Style = "Comic"
+anchor = str(view.ComicAnchor)
+written = stylize.SaveStylizedOrbit(prefix + "-orbit.gif", view, frames=3, degrees=30)
+print("orbit: " + " ".join(written))
+if str(view.ComicAnchor) != anchor:
+    sys.exit("the orbit left ComicAnchor at %s (was %s)" % (view.ComicAnchor, anchor))
+refused = 0
+view.Style = "None"
+try:
+    stylize.SaveStylizedFigure(prefix + "-none.svg", view)
+except RuntimeError as error:
+    print("refused: %s" % error)
+    refused += 1
+view.Style = "Comic"
+try:
+    stylize.SaveStylizedOrbit(prefix + "-orbit.txt", view, frames=2)
+except ValueError as error:
+    print("refused: %s" % error)
+    refused += 1
+view.Style = "Sketch"
+try:
+    stylize.SaveStylizedFigure(prefix + "-figure.png", view)
+except RuntimeError as error:
+    print("refused: %s" % error)
+    refused += 1
+if refused != 3:
+    sys.exit("%d of 3 bad calls refused" % refused)
+Delete(view)
+print("rendered")
