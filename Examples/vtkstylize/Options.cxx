@@ -1043,6 +1043,12 @@ Options ParseCommandLine(int argc, char* argv[])
     {
       UsageError("--output " + Quote(opt.Output) + " is an animation: give --orbit N");
     }
+    if ((ext == ".svg" || ext == ".pdf") && opt.Style == "none")
+    {
+      // known before anything is read or rendered
+      UsageError("a vector figure (" + Quote(opt.Output) +
+        ") draws a style's layers: give --style comic, pixel or sketch, not none");
+    }
   }
   const std::vector<std::string>& positional = cl.Inputs;
   if (positional.size() > 1)
