@@ -12,12 +12,17 @@ the surface anchor: the median over surface pixels of focal distance / depth, th
 which an object-space pattern sized at the focal point differs from the still frame's screen
 spacing.
 
+With --margin M (a fraction of full ink, default 0) a gray pixel counts as changed only when it is
+a clear change of ink: both frames at least M away from half gray, on opposite sides. The strict
+count (0) also counts the anti-aliased rim of a dot or line whose gray crosses half by a few
+levels when the pixel grid moves a fraction of a pixel over it.
+
 With --check it fails unless, for the styles named by --require, the surface anchor's share is
 at most --max-ratio (default 1/3, the target) of the screen anchor's and the scale stays within
 20% of the still frame's.
 
 usage: orbit.py DATADIR [--meshes bunny,fandisk] [--styles comic,pixel,sketch] [--frames 7]
-                [--size 400x300] [--check] [--require comic]
+                [--size 400x300] [--margin 0] [--check] [--require comic] [--max-ratio 0.333]
 """
 import argparse
 import math
@@ -94,7 +99,7 @@ def positions(renderer, window):
     return vtk_to_numpy(out).reshape(h, w, 4).copy()
 
 
-def measure(window, renderer, style, anchor, frames):
+def measure(window, renderer, style, anchor, frames, margin=0.0):
     w, h = window.GetSize()
     setting, screen, surface = ANCHORS[style]
     styled = vtkstylize.create_pass(style)
@@ -149,7 +154,12 @@ def measure(window, renderer, style, anchor, frames):
                 tx, ty = x - x0, y - y0
                 bilinear = (p_gray[y0, x0] * (1 - tx) * (1 - ty) + p_gray[y0, x0 + 1] * tx * (1 - ty) +
                             p_gray[y0 + 1, x0] * (1 - tx) * ty + p_gray[y0 + 1, x0 + 1] * tx * ty)
-                diff = (gray[ys, xs] < 128) != (bilinear < 128)
+                now, before = gray[ys, xs], bilinear
+                diff = (now < 128) != (before < 128)
+                if margin > 0:
+                    # a clear change of ink: both frames away from half gray by the margin
+                    band = 255.0 * margin
+                    diff &= (np.abs(now - 127.5) > band) & (np.abs(before - 127.5) > band)
             changed += int(np.count_nonzero(diff & seen))
             counted += int(np.count_nonzero(seen))
         previous = (image, pos, m, on)
@@ -167,6 +177,8 @@ def main():
     parser.add_argument("--styles", default="comic,pixel,sketch")
     parser.add_argument("--frames", type=int, default=7)
     parser.add_argument("--size", default="400x300")
+    parser.add_argument("--margin", type=float, default=0.0,
+                        help="count only clear changes of ink: both grays this far from half")
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--require", default="comic")
     parser.add_argument("--max-ratio", type=float, default=1.0 / 3.0,
@@ -174,14 +186,17 @@ def main():
     args = parser.parse_args()
     width, height = (int(v) for v in args.size.split("x"))
     failures = []
+    if args.margin > 0:
+        print("clear changes of ink only: both grays at least %.0f%% of full ink from half" % (
+            100 * args.margin))
     print("%-8s %-6s %10s %10s %7s %22s" % ("mesh", "style", "screen %", "surface %", "ratio",
                                               "scale vs still (range)"))
     for mesh in args.meshes.split(","):
         path = os.path.join(args.datadir, mesh + ".ply")
         for style in args.styles.split(","):
             window, renderer = scene(path, width, height)
-            screen = measure(window, renderer, style, "screen", args.frames)
-            surface = measure(window, renderer, style, "surface", args.frames)
+            screen = measure(window, renderer, style, "screen", args.frames, args.margin)
+            surface = measure(window, renderer, style, "surface", args.frames, args.margin)
             ratio = surface[0] / max(1e-9, screen[0])
             print("%-8s %-6s %10.2f %10.2f %7.2f %11.3f .. %.3f" % (
                 mesh, style, 100 * screen[0], 100 * surface[0], ratio, surface[1] * surface[3],
