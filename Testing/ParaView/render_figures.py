@@ -34,24 +34,18 @@ print("orbit: " + " ".join(written))
 if str(view.ComicAnchor) != anchor:
     sys.exit("the orbit left ComicAnchor at %s (was %s)" % (view.ComicAnchor, anchor))
 refused = 0
-view.Style = "None"
-try:
-    stylize.SaveStylizedFigure(prefix + "-none.svg", view)
-except RuntimeError as error:
-    print("refused: %s" % error)
-    refused += 1
-view.Style = "Comic"
-try:
-    stylize.SaveStylizedOrbit(prefix + "-orbit.txt", view, frames=2)
-except ValueError as error:
-    print("refused: %s" % error)
-    refused += 1
-view.Style = "Sketch"
-try:
-    stylize.SaveStylizedFigure(prefix + "-figure.png", view)
-except RuntimeError as error:
-    print("refused: %s" % error)
-    refused += 1
+bad_calls = [  # (style, call, the exception it must raise)
+    ("None", lambda: stylize.SaveStylizedFigure(prefix + "-none.svg", view), RuntimeError),
+    ("Comic", lambda: stylize.SaveStylizedOrbit(prefix + "-orbit.txt", view, frames=2), ValueError),
+    ("Sketch", lambda: stylize.SaveStylizedFigure(prefix + "-figure.png", view), RuntimeError),
+]
+for style, call, expected in bad_calls:
+    view.Style = style
+    try:
+        call()
+    except expected as error:
+        print("refused: %s" % error)
+        refused += 1
 if refused != 3:
     sys.exit("%d of 3 bad calls refused" % refused)
 Delete(view)
