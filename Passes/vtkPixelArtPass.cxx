@@ -98,7 +98,9 @@ struct vtkPixelArtPass::Plan
   double Shift[2];     // the snap shift, pixels
   double ArtWorld;     // world size of an art pixel (times the depth in perspective)
   double AnchorUnit;   // world size of a dither cell on the surface
+  double TexelUnit;    // world size of a surface art pixel (a texel) at the focal point
   bool Fast, WriteDepth, Canny, Sobel, DepthEdges, NormalEdges, Edges, SurfaceAnchor;
+  bool Texels;         // SURFACE at full resolution: the art pixels are fixed to the surface
   std::vector<float> Colours; // the list palette (RGBA); empty for LEVELS and GRAYS
   SceneRequest Scene;
   std::string Defines;
@@ -340,13 +342,16 @@ bool vtkPixelArtPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
     this->GetSceneTexture(vtkStylizeGBufferPass::NORMAL_BUFFER),
     this->GetSceneTexture(vtkStylizeGBufferPass::POSITION_BUFFER),
     this->GetSceneTexture(vtkStylizeGBufferPass::DEPTH_BUFFER) };
+  const Inputs scene = inputs; // full resolution unless FAST
   if (!plan.Fast)
   {
     this->RenderReduceStage(frame, plan, inputs);
   }
   vtkTextureObject* edges = plan.Edges ? this->RenderEdgeStages(frame, plan, inputs) : nullptr;
   this->RenderArtStage(frame, plan, inputs, edges);
-  this->RenderUpsampleStage(frame, plan, inputs);
+  // Texels find their colour edges on the art pixels' smoothed gray.
+  this->RenderUpsampleStage(frame, plan, scene,
+    plan.Texels && (plan.Canny || plan.Sobel) ? this->TextureSlot(GRAY) : nullptr);
   return true;
 }
 
@@ -408,14 +413,20 @@ vtkPixelArtPass::Plan vtkPixelArtPass::PlanFrame(const vtkRenderState* s, const 
     r.Resolution[1] = p.Extent[1];
   }
 
-  // World size of an art pixel (depth edges) and of a dither cell on the surface.
+  // World size of an art pixel (depth edges), of a texel and of a dither cell on the surface.
   p.ArtWorld = frame.PixelWorld * p.Block[1];
-  p.AnchorUnit =
-    (frame.Parallel ? p.ArtWorld : p.ArtWorld * frame.Camera->GetDistance()) * this->DitherSize;
-  if (!(p.AnchorUnit > 0.0) || !std::isfinite(p.AnchorUnit))
+  p.TexelUnit = frame.Parallel ? p.ArtWorld : p.ArtWorld * frame.Camera->GetDistance();
+  if (!(p.TexelUnit > 0.0) || !std::isfinite(p.TexelUnit))
+  {
+    p.TexelUnit = 1.0;
+  }
+  p.AnchorUnit = p.TexelUnit * this->DitherSize;
+  if (!std::isfinite(p.AnchorUnit))
   {
     p.AnchorUnit = 1.0;
   }
+  // The surface's own art pixels need the full-resolution positions (not in FAST).
+  p.Texels = p.SurfaceAnchor && !p.Fast;
 
   auto define = [&p](bool on, const std::string& name) { AddDefine(p.Defines, on, name); };
   define(p.Fast, "PIXEL_FAST");
@@ -427,6 +438,7 @@ vtkPixelArtPass::Plan vtkPixelArtPass::PlanFrame(const vtkRenderState* s, const 
   define(p.SurfaceAnchor, "PIXEL_POSITIONS");
   define(p.Edges, "PIXEL_EDGES");
   define(p.SurfaceAnchor, "PIXEL_SURFACE_ANCHOR");
+  define(p.Texels, "PIXEL_TEXELS");
   define(this->StylizeBackground, "PIXEL_STYLIZE_BACKGROUND");
   define(p.WriteDepth, "PIXEL_WRITE_DEPTH");
   const int palette = p.Colours.empty() ? (this->Palette == GRAYS ? 1 : 0) : 2;
@@ -621,6 +633,7 @@ void vtkPixelArtPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame
     .Float("pixelArtWorld", p.ArtWorld)
     .Int("pixelParallel", frame.Parallel ? 1 : 0)
     .Float("pixelAnchorUnit", p.AnchorUnit)
+    .Float("pixelTexelUnit", p.TexelUnit)
     .Float3("pixelOutlineColor", this->OutlineColor[0], this->OutlineColor[1],
       this->OutlineColor[2]);
   this->SetSceneOutputUniforms(u, frame.Renderer);
@@ -714,9 +727,10 @@ void vtkPixelArtPass::RenderArtStage(
 }
 
 //------------------------------------------------------------------------------
-void vtkPixelArtPass::RenderUpsampleStage(const Frame& frame, const Plan& p, const Inputs& inputs)
+void vtkPixelArtPass::RenderUpsampleStage(
+  const Frame& frame, const Plan& p, const Inputs& inputs, vtkTextureObject* gray)
 {
   this->RenderStageToOutput(frame, UPSAMPLE_STAGE, p.WriteDepth, [&](vtkStylizeUniforms& u) {
-    this->SetStageUniforms(u, frame, p, inputs, nullptr, this->TextureSlot(ART));
+    this->SetStageUniforms(u, frame, p, inputs, gray, this->TextureSlot(ART));
   });
 }

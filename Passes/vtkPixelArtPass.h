@@ -40,7 +40,15 @@
  * art pixel so that the world origin falls on a grid corner; a panning camera then moves the
  * picture by whole art pixels and each art pixel keeps sampling the same part of the scene. The
  * dither pattern is anchored to the window (SCREEN), to that world-aligned grid (GRID), or to the
- * surface (SURFACE: the art pixel's object-space position, triplanar).
+ * surface (SURFACE). With SURFACE in FAITHFUL mode the surface's art pixels themselves are fixed
+ * to it, for animations: texels, cells of the object-space position projected on the coordinate
+ * plane facing the geometric normal (triplanar), each the world size of an art pixel at the
+ * focal point; a texel takes the lit colour at its centre and its own matrix entry, and its
+ * outlines are found on the texels (Canny's test along each texel axis on the art pixels'
+ * smoothed gray) and, for silhouettes and occluding contours, within one art pixel of them on
+ * the screen. In an orbit a point of the surface then keeps its colour from frame to frame,
+ * where a screen-aligned art pixel resamples it (docs/figures.md, flicker). In FAST mode
+ * (interactive) SURFACE anchors the dither only: the art pixel's object-space position.
  *
  * Lengths are in screen pixels of the window; a screenshot magnified through
  * vtkWindowToImageFilter (tiled rendering) multiplies them by its scale, so it shows the same
@@ -300,8 +308,10 @@ public:
   ///@{
   /**
    * SCREEN, GRID (default) or SURFACE. Values: SCREEN, the window's art-pixel grid; GRID, the
-   * art-pixel grid aligned to the world origin (moves with a pan); SURFACE, the surface: the art
-   * pixel's object-space position (triplanar).
+   * art-pixel grid aligned to the world origin (moves with a pan); SURFACE, the surface: in
+   * FAITHFUL mode the surface is drawn in texels fixed to it (art pixels of the object-space
+   * position, triplanar, their colour, dither and outlines moving with the surface: for
+   * animations), in FAST mode the dither follows the art pixel's object-space position.
    */
   vtkSetClampMacro(DitherAnchor, int, SCREEN, SURFACE);
   vtkGetMacro(DitherAnchor, int);
@@ -426,7 +436,8 @@ protected:
   void RenderArtStage(
     const Frame& frame, const Plan& plan, const Inputs& inputs, vtkTextureObject* edges);
   /** The art pixels into the output framebuffer (with the depth when needed). */
-  void RenderUpsampleStage(const Frame& frame, const Plan& plan, const Inputs& inputs);
+  void RenderUpsampleStage(
+    const Frame& frame, const Plan& plan, const Inputs& inputs, vtkTextureObject* gray);
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -10,7 +10,8 @@
 //   PIXEL_STAGE_UPSAMPLE    each screen pixel takes its art pixel's colour; writes the depth
 // Every stage but the last runs at the art-pixel resolution (pixelArtSize). Other defines:
 //   PIXEL_FAST, PIXEL_CANNY, PIXEL_SOBEL, PIXEL_DEPTH_EDGES, PIXEL_NORMAL_EDGES, PIXEL_NORMALS,
-//   PIXEL_POSITIONS, PIXEL_EDGES (an edge image exists), PIXEL_SURFACE_ANCHOR,
+//   PIXEL_POSITIONS, PIXEL_EDGES (an edge image exists), PIXEL_SURFACE_ANCHOR, PIXEL_TEXELS (the
+//   surface's art pixels are texels fixed to it: the upsample stage reads full resolution),
 //   PIXEL_STYLIZE_BACKGROUND, PIXEL_PALETTE (0 levels, 1 grays, 2 list), PIXEL_LAYER
 //   (0 pixel art, 1 pixelated, 2 edges).
 
@@ -39,6 +40,7 @@ uniform float pixelNormalThreshold;
 uniform float pixelArtWorld;     // world size of an art pixel: times depth (perspective) or as is
 uniform int pixelParallel;
 uniform float pixelAnchorUnit;   // world size of a dither cell (surface anchor)
+uniform float pixelTexelUnit;    // world size of a texel, a surface-fixed art pixel
 uniform vec3 pixelOutlineColor;
 
 // This fragment's art pixel (art-resolution stages) from the quad's texture coordinate.
@@ -266,7 +268,7 @@ void pixelMain()
 }
 #endif
 
-#ifdef PIXEL_STAGE_STYLIZE
+#if defined(PIXEL_STAGE_STYLIZE) || defined(PIXEL_TEXELS)
 // Eq. 11: the threshold (M[R] - 0.5) / 64 of dither cell q.
 float pixelThreshold(ivec2 q)
 {
@@ -301,6 +303,9 @@ vec3 pixelQuantize(vec3 c, float t)
 #endif
 }
 
+#endif
+
+#ifdef PIXEL_STAGE_STYLIZE
 void pixelMain()
 {
   ivec2 p = pixelArtCoord();
@@ -341,11 +346,235 @@ void pixelMain()
 #endif
 
 #ifdef PIXEL_STAGE_UPSAMPLE
+#ifdef PIXEL_TEXELS
+// Texels: art pixels fixed to the surface, so that they move with it in an animation. Texel
+// (i, j) of a surface point is the cell floor(plane / pixelTexelUnit) of its object-space
+// position projected on the coordinate plane facing its geometric normal (triplanar). Every
+// screen pixel of a texel takes the colour of the pixel nearest the texel's centre (one sample,
+// as a texture's nearest filtering would), dithered by the texel's matrix entry and quantized.
+// Outlines are found on the texels too, from the centres of the neighbouring texels: a texel
+// next to the background or to a surface far behind it (depth edges), and Canny's test along
+// each texel axis on their grays (a step of the gray above the thresholds that is a maximum
+// along that axis), so that they move with the surface as well.
+
+// The full-resolution object-space position at viewport pixel v (a = 0 off the surface).
+vec4 pixelScenePosition(ivec2 v)
+{
+  ivec2 e = v - pixelExtentOrigin;
+  if (e.x < 0 || e.y < 0 || e.x >= pixelExtentSize.x || e.y >= pixelExtentSize.y)
+  {
+    return vec4(0.0);
+  }
+  return texelFetch(stylizePositionTexture, e, 0);
+}
+
+vec2 pixelPlane(vec3 p, int axis)
+{
+  return axis == 0 ? p.yz : (axis == 1 ? p.zx : p.xy);
+}
+
+// The position's change per screen pixel along one axis, central where both neighbours are on
+// the surface, one-sided where one is, zero where neither is.
+vec3 pixelPositionStep(vec4 pos, ivec2 v, ivec2 step)
+{
+  vec4 ahead = pixelScenePosition(v + step);
+  vec4 behind = pixelScenePosition(v - step);
+  if (ahead.a > 0.5 && behind.a > 0.5)
+  {
+    return 0.5 * (ahead.xyz - behind.xyz);
+  }
+  return ahead.a > 0.5 ? ahead.xyz - pos.xyz : (behind.a > 0.5 ? pos.xyz - behind.xyz : vec3(0.0));
+}
+
+struct PixelTexel
+{
+  bool found;     // the centre was found on the texel
+  ivec2 cell;     // the texel's index on its plane
+  ivec2 centre;   // the viewport pixel nearest its centre
+  mat2 toScreen;  // screen pixels per texel step (the inverse of d(texel) / d(screen))
+};
+
+// The texel at viewport pixel v. Not found where the surface grazes the view or where the
+// texel's centre is not on the same texel (a texel cut by a silhouette).
+PixelTexel pixelTexelAt(ivec2 v)
+{
+  PixelTexel t;
+  t.found = false;
+  t.cell = ivec2(0);
+  t.centre = v;
+  t.toScreen = mat2(0.0);
+  vec4 pos = pixelScenePosition(v);
+  vec3 dx = pixelPositionStep(pos, v, ivec2(1, 0));
+  vec3 dy = pixelPositionStep(pos, v, ivec2(0, 1));
+  vec3 gn = abs(cross(dx, dy));
+  if (!(pos.a > 0.5) || !(max(gn.x, max(gn.y, gn.z)) > 0.0))
+  {
+    return t;
+  }
+  int axis = gn.x >= gn.y && gn.x >= gn.z ? 0 : (gn.y >= gn.z ? 1 : 2);
+  float unit = pixelTexelUnit;
+  vec2 uv = pixelPlane(pos.xyz, axis) / unit;
+  vec2 cell = floor(uv);
+  if (!stylizeIsFinite(cell.x) || !stylizeIsFinite(cell.y) || abs(cell.x) > 1.0e9 ||
+    abs(cell.y) > 1.0e9)
+  {
+    return t;
+  }
+  t.cell = ivec2(cell);
+  // J = d(uv) / d(screen); the centre is J^-1 (cell + 1/2 - uv) away.
+  mat2 J = mat2(pixelPlane(dx, axis), pixelPlane(dy, axis)) / unit;
+  float det = determinant(J);
+  float scale = dot(J[0], J[0]) + dot(J[1], J[1]);
+  if (!(abs(det) > 1.0e-3 * scale) || !stylizeIsFinite(det))
+  {
+    return t;
+  }
+  t.toScreen = inverse(J);
+  float reach = 2.0 * float(max(pixelBlock.x, pixelBlock.y)) + 2.0;
+  vec2 offset = clamp(t.toScreen * (cell + 0.5 - uv), vec2(-reach), vec2(reach));
+  // One Newton step from the first guess corrects for the surface's curvature.
+  vec4 guess = pixelScenePosition(v + ivec2(round(offset)));
+  if (guess.a > 0.5)
+  {
+    vec2 guessUV = pixelPlane(guess.xyz, axis) / unit;
+    offset = clamp(offset + t.toScreen * (cell + 0.5 - guessUV), vec2(-reach), vec2(reach));
+  }
+  t.centre = v + ivec2(round(offset));
+  vec4 at = pixelScenePosition(t.centre);
+  t.found = at.a > 0.5 && all(equal(floor(pixelPlane(at.xyz, axis) / unit), cell));
+  return t;
+}
+
+#ifdef PIXEL_EDGES
+// The neighbouring texel's centre (i, j) texel steps away, estimated from this texel's own.
+ivec2 pixelTexelStep(PixelTexel t, vec2 steps)
+{
+  vec2 offset = t.toScreen * steps;
+  float reach = 4.0 * float(max(pixelBlock.x, pixelBlock.y)) + 4.0;
+  return t.centre + ivec2(round(clamp(offset, vec2(-reach), vec2(reach))));
+}
+
+// The art pixels' smoothed gray (Canny's Gaussian, pixelInputTexture), bilinearly interpolated
+// at viewport pixel v: a smooth field that a texel's neighbours sample without aliasing.
+float pixelSceneGray(ivec2 v)
+{
+#if defined(PIXEL_CANNY) || defined(PIXEL_SOBEL)
+  vec2 a = (vec2(v - pixelGridOrigin) + 0.5) / vec2(pixelBlock) - 0.5;
+  ivec2 a0 = ivec2(floor(a));
+  vec2 f = a - vec2(a0);
+  float g00 = pixelFetch(pixelInputTexture, a0).r;
+  float g10 = pixelFetch(pixelInputTexture, a0 + ivec2(1, 0)).r;
+  float g01 = pixelFetch(pixelInputTexture, a0 + ivec2(0, 1)).r;
+  float g11 = pixelFetch(pixelInputTexture, a0 + ivec2(1, 1)).r;
+  return mix(mix(g00, g10, f.x), mix(g01, g11, f.x), f.y);
+#else
+  return 0.0;
+#endif
+}
+
+// Linear depth at viewport pixel v, 0 off the surface and outside the rendered extent.
+float pixelSceneDepth(ivec2 v)
+{
+  ivec2 e = v - pixelExtentOrigin;
+  if (e.x < 0 || e.y < 0 || e.x >= pixelExtentSize.x || e.y >= pixelExtentSize.y)
+  {
+    return 0.0;
+  }
+  return texelFetch(stylizeLinearDepthTexture, e, 0).r;
+}
+
+// Silhouettes and occluding contours at the screen's resolution: the pixel is within one art
+// pixel of the background or of a surface far behind it (the nearer side is outlined).
+bool pixelSilhouetteNear(ivec2 v)
+{
+  float z = pixelSceneDepth(v);
+  float world = pixelParallel == 1 ? pixelArtWorld : pixelArtWorld * z;
+  int reach = max(pixelBlock.x, pixelBlock.y);
+  int steps = min(reach, 8);
+  const ivec2 dirs[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),
+    ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
+  for (int d = 0; d < 8; ++d)
+  {
+    for (int i = 1; i <= steps; ++i)
+    {
+      // diagonals reach as far as the sides (the art pixel's half-diagonal is not outlined)
+      int r = (i * reach + steps - 1) / steps;
+      ivec2 q = v + dirs[d] * (d < 4 ? r : max(1, (r * 7) / 10));
+      float zq = pixelSceneDepth(q);
+      if (!(zq > 0.0) || (zq > z && (zq - z) > pixelDepthThreshold * world))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+bool pixelTexelOutline(PixelTexel t)
+{
+  const vec2 axes[2] = vec2[2](vec2(1.0, 0.0), vec2(0.0, 1.0));
+  for (int a = 0; a < 2; ++a)
+  {
+    // The grays of the texels -2 .. 2 along this axis (off the surface: the nearer texel's).
+    float f[5];
+    f[2] = pixelSceneGray(t.centre);
+    const int order[4] = int[4](-1, 1, -2, 2); // the nearer texels first
+    for (int n = 0; n < 4; ++n)
+    {
+      int i = order[n];
+      ivec2 q = pixelTexelStep(t, float(i) * axes[a]);
+      f[i + 2] = pixelSceneDepth(q) > 0.0 ? pixelSceneGray(q) : f[i + 2 - sign(i)];
+    }
+#if defined(PIXEL_CANNY) || defined(PIXEL_SOBEL)
+    // Sobel's response to a ramp is 8 times its slope per art pixel: the thresholds in slope.
+    float m = 0.5 * abs(f[3] - f[1]) * 8.0;
+#ifdef PIXEL_CANNY
+    float ahead = 0.5 * abs(f[4] - f[2]) * 8.0;
+    float behind = 0.5 * abs(f[2] - f[0]) * 8.0;
+    float eps = 1e-5 * max(m, 1e-6);
+    if (m >= pixelHigh && m >= ahead - eps && m > behind + eps)
+    {
+      return true;
+    }
+#else
+    if (m >= pixelHigh)
+    {
+      return true;
+    }
+#endif
+#endif
+  }
+  return false;
+}
+#endif
+#endif
+
 void pixelMain()
 {
   ivec2 v = clamp(ivec2(texCoord * vec2(pixelViewportSize)), ivec2(0), pixelViewportSize - 1);
   ivec2 k = clamp((v - pixelGridOrigin) / pixelBlock, ivec2(0), pixelArtSize - 1);
   vec4 art = texelFetch(pixelArtTexture, k, 0);
+#ifdef PIXEL_TEXELS
+  PixelTexel t = pixelTexelAt(v);
+  if (pixelScenePosition(v).a > 0.5)
+  {
+    // A texel whose centre is not on it (cut by a silhouette, grazing) takes this pixel's colour
+    // and its art pixel's outline.
+    ivec2 sample = t.found ? t.centre : v;
+    vec4 c4 = texelFetch(stylizeColorTexture, sample - pixelExtentOrigin, 0);
+    ivec2 cell =
+      t.found ? ivec2(floor(vec2(t.cell) / float(pixelDitherSize))) : k + pixelDitherOrigin;
+    float threshold = 0.5 + (pixelThreshold(cell) - 0.5) * pixelDitherStrength;
+#ifdef PIXEL_EDGES
+    bool outline = pixelSilhouetteNear(v) || (t.found && pixelTexelOutline(t));
+#else
+    bool outline = false;
+#endif
+    float opacity = stylizeIsFinite(c4.a) ? clamp(c4.a, 0.0, 1.0) : 1.0;
+    vec3 colour = pixelQuantize(stylizeSaturateFinite(c4.rgb), threshold);
+    art = outline ? vec4(pixelOutlineColor, 2.0) : vec4(colour, 1.0 + 0.5 * opacity);
+  }
+#endif
   if (stylizeDiscardBackground == 1 && art.a < 0.5)
   {
     discard;

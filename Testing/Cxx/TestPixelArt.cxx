@@ -1080,7 +1080,10 @@ int TestPixelArtExtremes(int argc, char* argv[])
         pass->GetLastGrid(block, grid);
         std::printf("%-48s grid %dx%d of %d px: %.2f%% non-white\n", tag.c_str(), grid[0],
           grid[1], block[0], 100.0 * fraction);
-        if (grid[0] == 1 && grid[1] == 1)
+        // (A faithful SURFACE anchor draws the surface in texels fixed to it, each the world size
+        // of an art pixel at the focal point: one art pixel may then cover several.)
+        const bool texels = mode == P::FAITHFUL && pass->GetDitherAnchor() == P::SURFACE;
+        if (grid[0] == 1 && grid[1] == 1 && !texels)
         {
           // One art pixel: one uniform colour (faithful: the image's average; fast: one sample).
           int d[3];

@@ -15,7 +15,12 @@ spacing.
 With --margin M (a fraction of full ink, default 0) a gray pixel counts as changed only when it is
 a clear change of ink: both frames at least M away from half gray, on opposite sides. The strict
 count (0) also counts the anti-aliased rim of a dot or line whose gray crosses half by a few
-levels when the pixel grid moves a fraction of a pixel over it.
+levels when the pixel grid moves a fraction of a pixel over it. For pixel art (hard edges, no
+gray to threshold) a margin above 0 counts a clear change of colour: the point's colour is none
+of the colours of the four pixels around its reprojected position in the previous frame. The
+strict count (nearest pixel) also counts a point within half a pixel of a colour edge that the
+edge's rasterization put on the other side: an edge fixed to the surface can be drawn only to the
+nearest pixel, so about a quarter pixel in every texel's width flips by the pixel grid alone.
 
 With --check it fails unless, for the styles named by --require, the surface anchor's share is
 at most --max-ratio (default 1/3, the target) of the screen anchor's and the scale stays within
@@ -146,8 +151,14 @@ def measure(window, renderer, style, anchor, frames, margin=0.0):
             seen &= gap < 2.0 * pixel_world * np.maximum(1.0, depth[ys, xs] / camera.GetDistance())
             if style == "pixel":
                 now = image[ys, xs]
-                before = p_image[near_y, near_x]
-                diff = np.any(now != before, axis=1)
+                if margin > 0:
+                    # a clear change of colour: none of the four pixels around the point had it
+                    diff = np.ones(len(ys), bool)
+                    for dy in (0, 1):
+                        for dx in (0, 1):
+                            diff &= np.any(p_image[y0 + dy, x0 + dx] != now, axis=1)
+                else:
+                    diff = np.any(now != p_image[near_y, near_x], axis=1)
             else:
                 gray = image.mean(axis=2)
                 p_gray = p_image.mean(axis=2)
@@ -187,8 +198,8 @@ def main():
     width, height = (int(v) for v in args.size.split("x"))
     failures = []
     if args.margin > 0:
-        print("clear changes of ink only: both grays at least %.0f%% of full ink from half" % (
-            100 * args.margin))
+        print("clear changes of ink only: both grays at least %.0f%% of full ink from half; pixel "
+              "art: a colour none of the four pixels around the point had" % (100 * args.margin))
     print("%-8s %-6s %10s %10s %7s %22s" % ("mesh", "style", "screen %", "surface %", "ratio",
                                               "scale vs still (range)"))
     for mesh in args.meshes.split(","):
