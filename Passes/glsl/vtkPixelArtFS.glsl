@@ -574,6 +574,16 @@ void pixelMain()
     vec3 colour = pixelQuantize(stylizeSaturateFinite(c4.rgb), threshold);
     art = outline ? vec4(pixelOutlineColor, 2.0) : vec4(colour, 1.0 + 0.5 * opacity);
   }
+  else if (art.a >= 0.5)
+  {
+    // The background next to the surface: its own colour, not the art pixel's surface colour or
+    // outline (the silhouettes are outlined on the surface's side above).
+    vec3 c = stylizeSaturateFinite(texelFetch(stylizeColorTexture, v - pixelExtentOrigin, 0).rgb);
+#ifdef PIXEL_STYLIZE_BACKGROUND
+    c = pixelQuantize(c, 0.5 + (pixelThreshold(k + pixelDitherOrigin) - 0.5) * pixelDitherStrength);
+#endif
+    art = vec4(c, 0.0);
+  }
 #endif
   if (stylizeDiscardBackground == 1 && art.a < 0.5)
   {
