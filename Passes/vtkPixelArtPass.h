@@ -45,10 +45,10 @@
  * plane facing the geometric normal (triplanar), each the world size of an art pixel at the
  * focal point; a texel takes the lit colour at its centre and its own matrix entry, and its
  * outlines are found on the texels (Canny's test along each texel axis on the art pixels'
- * smoothed gray) and, for silhouettes and occluding contours, within one art pixel of them on
- * the screen. In an orbit a point of the surface then keeps its colour from frame to frame,
- * where a screen-aligned art pixel resamples it (docs/figures.md, flicker). In FAST mode
- * (interactive) SURFACE anchors the dither only: the art pixel's object-space position.
+ * smoothed gray; creases are not drawn) and, for silhouettes and occluding contours, within one
+ * art pixel of them on the screen. In an orbit a point of the surface then keeps its colour from
+ * frame to frame, where a screen-aligned art pixel resamples it (docs/figures.md, flicker). In
+ * FAST mode (interactive) SURFACE anchors the dither only: the art pixel's object-space position.
  *
  * Lengths are in screen pixels of the window; a screenshot magnified through
  * vtkWindowToImageFilter (tiled rendering) multiplies them by its scale, so it shows the same

@@ -352,10 +352,11 @@ void pixelMain()
 // position projected on the coordinate plane facing its geometric normal (triplanar). Every
 // screen pixel of a texel takes the colour of the pixel nearest the texel's centre (one sample,
 // as a texture's nearest filtering would), dithered by the texel's matrix entry and quantized.
-// Outlines are found on the texels too, from the centres of the neighbouring texels: a texel
-// next to the background or to a surface far behind it (depth edges), and Canny's test along
-// each texel axis on their grays (a step of the gray above the thresholds that is a maximum
-// along that axis), so that they move with the surface as well.
+// Colour outlines are found on the texels too, so that they move with the surface: Canny's test
+// along each texel axis on the grays at the neighbouring texels' centres (a step above the high
+// threshold that is a maximum along that axis; no hysteresis). Silhouettes and occluding
+// contours, which no texel holds still, are outlined on the screen: the surface pixels within one
+// art pixel of the background or of a surface far behind. Normal edges (creases) are not drawn.
 
 // The full-resolution object-space position at viewport pixel v (a = 0 off the surface).
 vec4 pixelScenePosition(ivec2 v)
@@ -555,11 +556,11 @@ void pixelMain()
   ivec2 k = clamp((v - pixelGridOrigin) / pixelBlock, ivec2(0), pixelArtSize - 1);
   vec4 art = texelFetch(pixelArtTexture, k, 0);
 #ifdef PIXEL_TEXELS
-  PixelTexel t = pixelTexelAt(v);
   if (pixelScenePosition(v).a > 0.5)
   {
     // A texel whose centre is not on it (cut by a silhouette, grazing) takes this pixel's colour
-    // and its art pixel's outline.
+    // and its art pixel's dither entry.
+    PixelTexel t = pixelTexelAt(v);
     ivec2 sample = t.found ? t.centre : v;
     vec4 c4 = texelFetch(stylizeColorTexture, sample - pixelExtentOrigin, 0);
     ivec2 cell =
