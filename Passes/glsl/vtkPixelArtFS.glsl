@@ -358,20 +358,21 @@ void pixelMain()
 // contours, which no texel holds still, are outlined on the screen: the surface pixels within one
 // art pixel of the background or of a surface far behind. Normal edges (creases) are not drawn.
 
-// The full-resolution object-space position at viewport pixel v (a = 0 off the surface).
-vec4 pixelScenePosition(ivec2 v)
+// A full-resolution channel at viewport pixel v; 0 outside the rendered extent.
+vec4 pixelSceneFetch(sampler2D channel, ivec2 v)
 {
   ivec2 e = v - pixelExtentOrigin;
   if (e.x < 0 || e.y < 0 || e.x >= pixelExtentSize.x || e.y >= pixelExtentSize.y)
   {
     return vec4(0.0);
   }
-  return texelFetch(stylizePositionTexture, e, 0);
+  return texelFetch(channel, e, 0);
 }
 
-vec2 pixelPlane(vec3 p, int axis)
+// The object-space position at viewport pixel v (a = 0 off the surface).
+vec4 pixelScenePosition(ivec2 v)
 {
-  return axis == 0 ? p.yz : (axis == 1 ? p.zx : p.xy);
+  return pixelSceneFetch(stylizePositionTexture, v);
 }
 
 // The position's change per screen pixel along one axis, central where both neighbours are on
@@ -412,9 +413,9 @@ PixelTexel pixelTexelAt(ivec2 v)
   {
     return t;
   }
-  int axis = gn.x >= gn.y && gn.x >= gn.z ? 0 : (gn.y >= gn.z ? 1 : 2);
+  int axis = stylizeTriplanarAxis(gn);
   float unit = pixelTexelUnit;
-  vec2 uv = pixelPlane(pos.xyz, axis) / unit;
+  vec2 uv = stylizePlaneCoordinates(pos.xyz, axis) / unit;
   vec2 cell = floor(uv);
   if (!stylizeIsFinite(cell.x) || !stylizeIsFinite(cell.y) || abs(cell.x) > 1.0e9 ||
     abs(cell.y) > 1.0e9)
@@ -423,7 +424,7 @@ PixelTexel pixelTexelAt(ivec2 v)
   }
   t.cell = ivec2(cell);
   // J = d(uv) / d(screen); the centre is J^-1 (cell + 1/2 - uv) away.
-  mat2 J = mat2(pixelPlane(dx, axis), pixelPlane(dy, axis)) / unit;
+  mat2 J = mat2(stylizePlaneCoordinates(dx, axis), stylizePlaneCoordinates(dy, axis)) / unit;
   float det = determinant(J);
   float scale = dot(J[0], J[0]) + dot(J[1], J[1]);
   if (!(abs(det) > 1.0e-3 * scale) || !stylizeIsFinite(det))
@@ -437,12 +438,12 @@ PixelTexel pixelTexelAt(ivec2 v)
   vec4 guess = pixelScenePosition(v + ivec2(round(offset)));
   if (guess.a > 0.5)
   {
-    vec2 guessUV = pixelPlane(guess.xyz, axis) / unit;
+    vec2 guessUV = stylizePlaneCoordinates(guess.xyz, axis) / unit;
     offset = clamp(offset + t.toScreen * (cell + 0.5 - guessUV), vec2(-reach), vec2(reach));
   }
   t.centre = v + ivec2(round(offset));
   vec4 at = pixelScenePosition(t.centre);
-  t.found = at.a > 0.5 && all(equal(floor(pixelPlane(at.xyz, axis) / unit), cell));
+  t.found = at.a > 0.5 && all(equal(floor(stylizePlaneCoordinates(at.xyz, axis) / unit), cell));
   return t;
 }
 
@@ -476,12 +477,7 @@ float pixelSceneGray(ivec2 v)
 // Linear depth at viewport pixel v, 0 off the surface and outside the rendered extent.
 float pixelSceneDepth(ivec2 v)
 {
-  ivec2 e = v - pixelExtentOrigin;
-  if (e.x < 0 || e.y < 0 || e.x >= pixelExtentSize.x || e.y >= pixelExtentSize.y)
-  {
-    return 0.0;
-  }
-  return texelFetch(stylizeLinearDepthTexture, e, 0).r;
+  return pixelSceneFetch(stylizeLinearDepthTexture, v).r;
 }
 
 // Silhouettes and occluding contours at the screen's resolution: the pixel is within one art

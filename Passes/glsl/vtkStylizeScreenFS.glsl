@@ -2,6 +2,19 @@
 #ifndef VTK_STYLIZE_SCREEN
 #define VTK_STYLIZE_SCREEN
 
+// The coordinate plane facing normal n (0: yz, 1: zx, 2: xy; ties go to the earlier), and a
+// point's coordinates on it: the two halves of a triplanar projection.
+int stylizeTriplanarAxis(vec3 n)
+{
+  vec3 a = abs(n);
+  return a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+}
+
+vec2 stylizePlaneCoordinates(vec3 p, int axis)
+{
+  return axis == 0 ? p.yz : (axis == 1 ? p.zx : p.xy);
+}
+
 // Triplanar projection of the object-space position stored at pixel p (a = 1 on surfaces) on
 // the coordinate plane facing its geometric normal, found from the neighbouring positions.
 // Returns `fallback` where there is no surface.
@@ -13,9 +26,8 @@ vec2 stylizeTriplanar(sampler2D positions, ivec2 p, ivec2 size, vec2 fallback)
   vec4 px = texelFetch(positions, p + sx, 0);
   vec4 py = texelFetch(positions, p + sy, 0);
   vec3 gn = cross((px.xyz - pos.xyz) * float(sx.x), (py.xyz - pos.xyz) * float(sy.y));
-  gn = (px.a > 0.5 && py.a > 0.5) ? abs(gn) : vec3(0.0, 0.0, 1.0);
-  vec2 plane = gn.x >= gn.y && gn.x >= gn.z ? pos.yz : (gn.y >= gn.z ? pos.zx : pos.xy);
-  return pos.a > 0.5 ? plane : fallback;
+  gn = (px.a > 0.5 && py.a > 0.5) ? gn : vec3(0.0, 0.0, 1.0);
+  return pos.a > 0.5 ? stylizePlaneCoordinates(pos.xyz, stylizeTriplanarAxis(gn)) : fallback;
 }
 
 // Sobel responses (gx, gy) of a 3x3 neighbourhood, divided by 8: the mean central difference
