@@ -39,6 +39,13 @@ namespace
 {
 constexpr int NoiseTextureSize = 64;
 constexpr int NoiseCell = 8; // lattice period of Perlin and cell size of Worley, texels
+constexpr double SparseDots = 0.05; // SPARSE: the share of texels that hold a dot
+// SPARSE: the smallest texel, window pixels. The strokes are then wider than a pixel's
+// sampling can alias (their profile is band-limited), so a sub-pixel motion moves them
+// smoothly; at 1 point on a 600-pixel image (0.56 pixel) they are resampled.
+constexpr double SparseMinimumTexel = 1.7;
+// SPARSE: the shortest LIC step, texels (10 steps each side: strokes of 10 texels or more).
+constexpr double SparseStepPerTexel = 0.5;
 constexpr int InteractiveSteps = 4; // LIC steps on each side in the interactive variant
 
 // Uniform value in [0, 1) from a 32-bit generator, the same on every standard library.
@@ -288,6 +295,16 @@ void vtkSketchPass::GenerateNoise(int kind, int size, vtkFloatArray* out)
     });
     return;
   }
+  if (kind == SPARSE)
+  {
+    // Paper (1) with dark dots (0) on SparseDots of the texels: each dot, convolved along the
+    // field, draws one stroke.
+    for (vtkIdType i = 0; i < total; ++i)
+    {
+      out->SetValue(i, Uniform(rng) < SparseDots ? 0.0f : 1.0f);
+    }
+    return;
+  }
   for (vtkIdType i = 0; i < total; ++i)
   {
     out->SetValue(i, static_cast<float>(Uniform(rng)));
@@ -300,7 +317,7 @@ void vtkSketchPass::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   static const char* const layers[] = { "sketch", "directions", "strokes", "tone" };
   static const char* const directions[] = { "minimum", "maximum", "bisector" };
-  static const char* const noises[] = { "white", "perlin", "worley" };
+  static const char* const noises[] = { "white", "perlin", "worley", "sparse" };
   os << indent << "Layer: " << layers[this->Layer] << "\n";
   os << indent << "DirectionSource: " << (this->DirectionSource == MODEL ? "model" : "screen")
      << "\n";
@@ -542,6 +559,7 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   p.Defines = FieldDefines(f);
   auto define = [&p](bool on, const std::string& name) { AddDefine(p.Defines, on, name); };
   define(!p.ObjectNoise, "SKETCH_NOISE_SCREEN");
+  define(p.ObjectNoise && this->Noise == SPARSE, "SKETCH_NOISE_INTERPOLATED");
   define(this->LicMode == SCREEN_2D, "SKETCH_SCREEN_LIC");
   define(cross, "SKETCH_CROSS");
   define(p.Contrast, "SKETCH_CONTRAST");
@@ -573,7 +591,16 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   p.BlurSize[0] = (frame.Size[0] + stride - 1) / stride;
   p.BlurSize[1] = (frame.Size[1] + stride - 1) / stride;
   p.BlurRadius = finite(this->BlurRadius, self->GetBlurRadiusMinValue()) * p.PointSize;
-  const double noiseSize = finite(this->NoiseSize, self->GetNoiseSizeMinValue());
+  double noiseSize = finite(this->NoiseSize, self->GetNoiseSizeMinValue());
+  if (this->Noise == SPARSE)
+  {
+    // At least SparseMinimumTexel pixels of the window (a magnified screenshot: of the tiles),
+    // and steps at least SparseStepPerTexel texels long as a texel is wide (on a small
+    // image the points' steps would otherwise turn the strokes into spots).
+    noiseSize = std::max(noiseSize, SparseMinimumTexel * frame.TileScale[1] / p.PointSize);
+    p.StepLength = std::max(p.StepLength,
+      SparseStepPerTexel * noiseSize * this->Steps / std::max(p.Steps, 1));
+  }
   p.NoiseUnit = p.ObjectNoise ? noiseSize * p.PointSize * p.FocalPixel : noiseSize * p.PointSize;
   return p;
 }

@@ -99,7 +99,8 @@ public:
   {
     WHITE = 0,  ///< hard pencil
     PERLIN = 1, ///< medium
-    WORLEY = 2  ///< soft
+    WORLEY = 2, ///< soft
+    SPARSE = 3  ///< separate strokes that hold still in animations
   };
 
   /** Where the noise is fixed. */
@@ -313,10 +314,13 @@ public:
 
   ///@{
   /**
-   * The noise: WHITE (default), PERLIN or WORLEY. Values: WHITE, hard pencil; PERLIN, medium;
-   * WORLEY, soft.
+   * The noise: WHITE (default), PERLIN, WORLEY or SPARSE. Values: WHITE, hard pencil; PERLIN,
+   * medium; WORLEY, soft; SPARSE, separate strokes that hold still in animations (dark dots on
+   * 5% of the texels, filtered trilinearly and read at the object-space position interpolated
+   * between pixels; a texel spans at least 1.7 pixels of the window, so that a stroke moves with
+   * the surface instead of being resampled by the pixels: the default of orbit animations).
    */
-  vtkSetClampMacro(Noise, int, WHITE, WORLEY);
+  vtkSetClampMacro(Noise, int, WHITE, SPARSE);
   vtkGetMacro(Noise, int);
   ///@}
 

@@ -15,10 +15,10 @@ Both render as the view renders (under MPI every rank takes part; the first writ
 
 # The patterns each style (the view's Style value) anchors to the surface in an orbit: (view
 # property, surface value): comic Object, pixel art Surface, sketch Object.
-_SURFACE_ANCHORS = {
-    1: ("ComicAnchor", 1),
-    2: ("PixelArtDitherAnchor", 2),
-    3: ("SketchNoiseSpace", 0),
+_SURFACE_ANCHORS = {  # style: the (property, value) pairs that anchor it to the surface
+    1: [("ComicAnchor", 1)],
+    2: [("PixelArtDitherAnchor", 2)],
+    3: [("SketchNoiseSpace", 0), ("SketchNoise", 3)],  # object space, SPARSE noise
 }
 
 
@@ -77,9 +77,9 @@ def SaveStylizedOrbit(output, view=None, frames=36, degrees=360.0, elevation=0.0
     by degrees / frames about the view-up axis between frames, and restored afterwards. Writes
     STEM-0000.png ... (STEM is `output` without its extension); when `output` ends in .gif or
     .mp4 they are also encoded into it with ffmpeg (as vtkstylize --orbit). With
-    `surface_anchor` the style's pattern (comic dots and hatching, pixel-art dither, sketch
-    noise) is anchored to the surface for the orbit, so that it does not swim. Returns the
-    written paths."""
+    `surface_anchor` the style's pattern (comic dots and hatching, pixel-art texels, sketch
+    noise: object space and the SPARSE noise) is anchored to the surface for the orbit, so that
+    it does not swim. Returns the written paths."""
     import os
     from paraview import simple
     view = _view(view)
@@ -90,10 +90,9 @@ def SaveStylizedOrbit(output, view=None, frames=36, degrees=360.0, elevation=0.0
     if ext.lower() not in (".png", ".gif", ".mp4"):
         raise ValueError("the orbit's output must end in .png, .gif or .mp4, got %r" % output)
     restore = []
-    anchor = _SURFACE_ANCHORS.get(_element(view, "Style")) if surface_anchor else None
-    if anchor:
-        restore.append((anchor[0], _element(view, anchor[0])))
-        _set_element(view, anchor[0], anchor[1])
+    for name, value in _SURFACE_ANCHORS.get(_element(view, "Style"), []) if surface_anchor else []:
+        restore.append((name, _element(view, name)))
+        _set_element(view, name, value)
     camera = view.GetActiveCamera()
     saved = (camera.GetPosition(), camera.GetFocalPoint(), camera.GetViewUp())
     digits = max(4, len(str(frames - 1)))

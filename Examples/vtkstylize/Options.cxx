@@ -659,7 +659,8 @@ void AddProgramOptions(OptionTable& t)
      "an orbit animation: N frames, the camera turned by --orbit-degrees / N about the view-up "
      "axis between frames; writes FILE-0000.png ... and, with --output FILE.gif or FILE.mp4, the "
      "animation (ffmpeg); the patterns are anchored to the surface unless --anchor, "
-     "--dither-anchor or --noise-space say otherwise (default: no orbit)",
+     "--dither-anchor or --noise-space say otherwise (pixel art in texels; the sketch with "
+     "--noise sparse unless --noise is given) (default: no orbit)",
      general, [](Options& opt, const std::string& v) { opt.Orbit = std::atoi(v.c_str()); })
     ->check(NumberIn(1, MaxOrbitFrames, true));
   t.Value("--orbit-degrees", "DEG",
@@ -1033,6 +1034,7 @@ Options ParseCommandLine(int argc, char* argv[])
   cl.Table.Apply(opt);
   opt.AnchorGiven = cl.App.count("--anchor") + cl.App.count("--dither-anchor") +
       cl.App.count("--noise-space") > 0;
+  opt.NoiseGiven = cl.App.count("--noise") > 0;
   {
     const std::string ext = Lower(opt.Output.substr(opt.Output.size() - 4));
     if (opt.Orbit > 0 && (ext == ".svg" || ext == ".pdf"))

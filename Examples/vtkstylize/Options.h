@@ -91,6 +91,7 @@ struct Options
   double OrbitElevation = 0.0;  // --orbit-elevation
   int FramesPerSecond = 25;     // --fps
   bool AnchorGiven = false;     // --anchor, --dither-anchor or --noise-space was given
+  bool NoiseGiven = false;      // --noise was given
   int TimeStep = 0;
   bool TimeStepGiven = false; // --time-step was given (a warning when there is no INPUT)
   bool GBuffer = false;

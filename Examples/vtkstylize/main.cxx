@@ -177,6 +177,10 @@ bool RenderOrbit(vtkRenderWindow* window, vtkRenderer* ren, const Options& opt,
     else if (auto* sketch = vtkSketchPass::SafeDownCast(pass))
     {
       sketch->SetNoiseSpace(vtkSketchPass::OBJECT);
+      if (!opt.NoiseGiven)
+      {
+        sketch->SetNoise(vtkSketchPass::SPARSE); // strokes that hold still
+      }
     }
   }
   vtkCamera* camera = ren->GetActiveCamera();

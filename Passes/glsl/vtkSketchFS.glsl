@@ -4,7 +4,8 @@
 // that select what is compiled:
 //   SKETCH_STAGE_BLUR_X, SKETCH_STAGE_BLUR_Y   the strided Gaussian blur of the lit luminance
 //   SKETCH_STAGE_FINAL     strokes (LIC) and tone into the output
-//   SKETCH_NOISE_SCREEN, SKETCH_SCREEN_LIC, SKETCH_CROSS, SKETCH_CONTRAST, SKETCH_TINTED,
+//   SKETCH_NOISE_SCREEN, SKETCH_NOISE_INTERPOLATED, SKETCH_SCREEN_LIC, SKETCH_CROSS,
+//   SKETCH_CONTRAST, SKETCH_TINTED,
 //   SKETCH_LAYER 0|1|2|3 (sketch, directions, strokes, tone)
 // Lengths arrive in pixels of this viewport or in world units, converted on the CPU.
 
@@ -83,13 +84,42 @@ vec4 sketchFieldAt(vec2 f, vec3 ref, float expected, float tol)
   return wsum > 1e-4 ? acc / wsum : vec4(0.0);
 }
 
-float sketchNoiseAt(vec2 f)
+// The noise at continuous pixel position f. Object noise: at the object-space position of the
+// nearest pixel (WHITE: the one-pixel pencil), or (SKETCH_NOISE_INTERPOLATED, SPARSE) at the
+// position interpolated bilinearly between the neighbouring pixels on the same surface (linear
+// depth within tol of expected), so that a point of the surface reads the same noise whatever
+// the pixels' positions.
+float sketchNoiseAt(vec2 f, float expected, float tol)
 {
 #ifdef SKETCH_NOISE_SCREEN
   return texture(sketchNoise, vec3((f + fieldPixelOffset) * sketchNoiseScale, 0.5)).r;
-#else
+#elif !defined(SKETCH_NOISE_INTERPOLATED)
   vec4 pos = texelFetch(stylizePositionTexture, clamp(ivec2(f), ivec2(0), fieldSize - 1), 0);
   return texture(sketchNoise, pos.xyz * sketchNoiseScale).r;
+#else
+  vec2 g = f - 0.5;
+  vec2 fl = floor(g);
+  vec2 t = g - fl;
+  ivec2 i0 = ivec2(fl);
+  vec3 acc = vec3(0.0);
+  float wsum = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    ivec2 o = ivec2(k & 1, k >> 1);
+    ivec2 q = clamp(i0 + o, ivec2(0), fieldSize - 1);
+    vec4 pos = texelFetch(stylizePositionTexture, q, 0);
+    float z = texelFetch(sketchField, q, 0).w;
+    float w = (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y);
+    if (!(pos.a > 0.5) || !(z > 0.0) || abs(z - expected) > tol)
+    {
+      continue;
+    }
+    acc += w * pos.xyz;
+    wsum += w;
+  }
+  vec3 p = wsum > 1e-4 ? acc / wsum :
+    texelFetch(stylizePositionTexture, clamp(ivec2(f), ivec2(0), fieldSize - 1), 0).xyz;
+  return texture(sketchNoise, p * sketchNoiseScale).r;
 #endif
 }
 
@@ -141,7 +171,7 @@ float sketchStroke(ivec2 p, vec3 x0, vec3 dir0, vec3 n0, bool across)
         break; // the stroke left the surface
       }
       float w = 1.0 - (float(k) + along) / kernel;
-      float v = sketchNoiseAt(f);
+      float v = sketchNoiseAt(f, e.w, tol);
       sum += w * v;
       wsum += w;
       w2sum += w * w;
@@ -169,7 +199,7 @@ float sketchStroke(ivec2 p, vec3 x0, vec3 dir0, vec3 n0, bool across)
   }
   if (!(wsum > 0.0))
   {
-    return 0.5 + (sketchNoiseAt(f0) - sketchNoiseStats.x) * 0.25 * sketchStrokeContrast /
+    return 0.5 + (sketchNoiseAt(f0, -x0.z, tol) - sketchNoiseStats.x) * 0.25 * sketchStrokeContrast /
       max(sketchNoiseStats.y, 1e-4);
   }
   // Normalize: the weighted mean of independent samples has deviation sigma sqrt(w2) / w.

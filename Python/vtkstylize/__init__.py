@@ -217,9 +217,15 @@ def _surface_anchor(style_pass):
         style_pass.SetDitherAnchor(_vtkPixelArtPass.SURFACE)
         return lambda: style_pass.SetDitherAnchor(old)
     if isinstance(style_pass, _vtkSketchPass):
-        old = style_pass.GetNoiseSpace()
+        # object space, and the noise whose strokes hold still (SPARSE)
+        old = (style_pass.GetNoiseSpace(), style_pass.GetNoise())
         style_pass.SetNoiseSpace(_vtkSketchPass.OBJECT)
-        return lambda: style_pass.SetNoiseSpace(old)
+        style_pass.SetNoise(_vtkSketchPass.SPARSE)
+
+        def restore():
+            style_pass.SetNoiseSpace(old[0])
+            style_pass.SetNoise(old[1])
+        return restore
     return lambda: None
 
 
@@ -229,8 +235,8 @@ def orbit(window, frames, path_pattern, degrees=360.0, elevation=0.0, surface_an
 
     The active camera of the window's first renderer is raised by `elevation` degrees, then
     turned by ``degrees / frames`` about the view-up axis between frames. With `surface_anchor`
-    the styles' patterns (comic dots and hatching, pixel-art dither, sketch noise) are anchored
-    to the surface for the animation and restored afterwards. Returns the written paths.
+    the styles' patterns (comic dots and hatching, pixel-art texels, sketch noise: object space
+    and the SPARSE noise) are anchored to the surface for the animation and restored afterwards. Returns the written paths.
     """
     from vtkmodules.vtkIOImage import vtkPNGWriter
     from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter

@@ -73,6 +73,7 @@ int TestSketchRegression(int argc, char* argv[])
     { "tone", [](vtkRenderer*, P* p) { p->SetLayer(P::TONE); } },
     { "perlin", [](vtkRenderer*, P* p) { p->SetNoise(P::PERLIN); } },
     { "worley", [](vtkRenderer*, P* p) { p->SetNoise(P::WORLEY); } },
+    { "sparse", [](vtkRenderer*, P* p) { p->SetNoise(P::SPARSE); } },
     { "bisector", [](vtkRenderer*, P* p) { p->SetDirection(P::BISECTOR); } },
     { "minimum", [](vtkRenderer*, P* p) { p->SetDirection(P::MINIMUM); } },
     { "neighbors-2", [](vtkRenderer*, P* p) {
@@ -120,7 +121,8 @@ int TestSketchRegression(int argc, char* argv[])
 int TestSketchNoise(int, char*[])
 {
   const int n = 32;
-  for (int kind : { vtkSketchPass::WHITE, vtkSketchPass::PERLIN, vtkSketchPass::WORLEY })
+  for (int kind :
+    { vtkSketchPass::WHITE, vtkSketchPass::PERLIN, vtkSketchPass::WORLEY, vtkSketchPass::SPARSE })
   {
     vtkNew<vtkFloatArray> noise;
     vtkSketchPass::GenerateNoise(kind, n, noise);
@@ -155,7 +157,19 @@ int TestSketchNoise(int, char*[])
       kind, lo, hi, mean, sd, inside, seam);
     STYLIZE_CHECK(lo >= 0.0 && hi <= 1.0, "noise %d: out of [0, 1]", kind);
     STYLIZE_CHECK(seam < 1.5 * inside + 0.01, "noise %d: not periodic", kind);
-    if (kind == vtkSketchPass::WHITE)
+    if (kind == vtkSketchPass::SPARSE)
+    {
+      // paper (1) with dark dots (0) on 5% of the texels
+      long long other = 0;
+      for (vtkIdType i = 0; i < noise->GetNumberOfTuples(); ++i)
+      {
+        const float v = noise->GetValue(i);
+        other += (v == 0.0f || v == 1.0f) ? 0 : 1;
+      }
+      STYLIZE_CHECK(other == 0 && std::abs((1.0 - mean) - 0.05) < 0.005,
+        "sparse noise: %lld values neither 0 nor 1, dots on %.4f of the texels", other, 1.0 - mean);
+    }
+    else if (kind == vtkSketchPass::WHITE)
     {
       STYLIZE_CHECK(std::abs(mean - 0.5) < 0.01 && std::abs(sd - std::sqrt(1.0 / 12.0)) < 0.01,
         "white noise: mean %.3f sd %.3f", mean, sd);

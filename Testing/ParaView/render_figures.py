@@ -6,8 +6,9 @@ The scene of render_styles.py (a Wavelet contour) in a 400x300 view, with the pl
 module (stylize_paraview, embedded in the plugin): OUTPUT_PREFIX-<style>.png (SaveScreenshot),
 -<style>.svg and .pdf (SaveStylizedFigure, one call each); then a 3-frame comic orbit,
 OUTPUT_PREFIX-orbit.gif with its frames OUTPUT_PREFIX-orbit-0000.png ... (SaveStylizedOrbit, one
-call); then the failures: a figure of the style None and an orbit to a .txt are refused with
-RuntimeError/ValueError, and the view's anchor is as it was after the orbit.
+call), the view's anchor as it was after the orbit, and a 2-frame sketch orbit after which the
+view's noise settings are as they were; then the failures: a figure of the style None and an
+orbit to a .txt are refused with RuntimeError/ValueError.
 """
 import sys
 
@@ -33,6 +34,14 @@ written = stylize.SaveStylizedOrbit(prefix + "-orbit.gif", view, frames=3, degre
 print("orbit: " + " ".join(written))
 if str(view.ComicAnchor) != anchor:
     sys.exit("the orbit left ComicAnchor at %s (was %s)" % (view.ComicAnchor, anchor))
+# The sketch's orbit uses the object-space SPARSE noise and gives the view's noise back.
+view.Style = "Sketch"
+noise = (str(view.SketchNoise), str(view.SketchNoiseSpace))
+written = stylize.SaveStylizedOrbit(prefix + "-sketch-orbit.png", view, frames=2, degrees=2)
+print("sketch orbit: " + " ".join(written))
+if (str(view.SketchNoise), str(view.SketchNoiseSpace)) != noise:
+    sys.exit("the orbit left the sketch's noise at %s, %s (was %s)" % (
+        view.SketchNoise, view.SketchNoiseSpace, noise))
 refused = 0
 bad_calls = [  # (style, call, the exception it must raise)
     ("None", lambda: stylize.SaveStylizedFigure(prefix + "-none.svg", view), RuntimeError),

@@ -51,6 +51,9 @@ for name in ["comic", "pixel", "sketch"]:
 paths, images = vector_content(prefix + "-comic.svg")
 if images or paths < 10:
     failures.append("comic SVG: %d paths, %d embedded images (vectors expected)" % (paths, images))
+sketch_frames = ["%s-sketch-orbit-%04d.png" % (prefix, f) for f in range(2)]
+if not all(os.path.exists(f) for f in sketch_frames):
+    failures.append("sketch orbit frames missing: %s" % sketch_frames)
 frames = ["%s-orbit-%04d.png" % (prefix, f) for f in range(3)]
 if not all(os.path.exists(f) for f in frames):
     failures.append("orbit frames missing: %s" % [f for f in frames if not os.path.exists(f)])

@@ -2,7 +2,7 @@
 """Flicker of the styles' patterns in an orbit animation: screen against surface anchors.
 
 For each mesh, style and anchor it renders a 1 degree per frame orbit (the camera's azimuth,
-perspective, the headlight) and measures, between consecutive frames, the share of surface
+perspective, the headlight; the sketch with the SPARSE noise that animations use) and measures, between consecutive frames, the share of surface
 points whose ink changes: every surface pixel of a frame is reprojected, from its object-space
 position (the G-buffer's), into the previous frame; the previous frame's gray is interpolated
 bilinearly there and both are thresholded at half (comic, sketch), or the art pixel's colour is
@@ -109,6 +109,10 @@ def measure(window, renderer, style, anchor, frames, margin=0.0):
     setting, screen, surface = ANCHORS[style]
     styled = vtkstylize.create_pass(style)
     getattr(styled, "Set" + setting)(screen if anchor == "screen" else surface)
+    if style == "sketch":
+        # the noise animations use (vtkstylize --orbit, vtkstylize.orbit, SaveStylizedOrbit),
+        # fixed to the screen or to the surface
+        styled.SetNoise(vtkstylize.vtkSketchPass.SPARSE)
     renderer.SetPass(styled)
     camera = renderer.GetActiveCamera()
     start = [camera.GetPosition(), camera.GetFocalPoint(), camera.GetViewUp()]
