@@ -23,7 +23,8 @@ edge's rasterization put on the other side: an edge fixed to the surface can be 
 nearest pixel, so about a quarter pixel in every texel's width flips by the pixel grid alone.
 
 With --check it fails unless, for the styles named by --require, the surface anchor's share is
-at most --max-ratio (default 1/3, the target) of the screen anchor's and the scale stays within
+at most --max-ratio (default 1/3, the target; or per style, e.g. comic=0.45,pixel=0.6) of the
+screen anchor's and the scale stays within
 20% of the still frame's.
 
 usage: orbit.py DATADIR [--meshes bunny,fandisk] [--styles comic,pixel,sketch] [--frames 7]
@@ -196,10 +197,14 @@ def main():
                         help="count only clear changes of ink: both grays this far from half")
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--require", default="comic")
-    parser.add_argument("--max-ratio", type=float, default=1.0 / 3.0,
+    parser.add_argument("--max-ratio", default=str(1.0 / 3.0),
                         help="the largest surface/screen share --check accepts (the target: 1/3)")
     args = parser.parse_args()
     width, height = (int(v) for v in args.size.split("x"))
+    if "=" in args.max_ratio:
+        limits = {k: float(v) for k, v in (item.split("=") for item in args.max_ratio.split(","))}
+    else:
+        limits = {style: float(args.max_ratio) for style in args.styles.split(",")}
     failures = []
     if args.margin > 0:
         print("clear changes of ink only: both grays at least %.0f%% of full ink from half; pixel "
@@ -218,9 +223,10 @@ def main():
                 surface[2] * surface[3]))
             sys.stdout.flush()
             if style in args.require.split(","):
-                if ratio > args.max_ratio:
+                limit = limits.get(style, 1.0 / 3.0)
+                if ratio > limit:
                     failures.append("%s %s: surface/screen ratio %.2f > %.2f" % (
-                        mesh, style, ratio, args.max_ratio))
+                        mesh, style, ratio, limit))
                 if not (0.8 <= surface[1] * surface[3] and surface[2] * surface[3] <= 1.2):
                     failures.append("%s %s: pattern scale outside 20%% of the still frame's" % (mesh, style))
             window.Finalize()
