@@ -234,9 +234,11 @@ def orbit(window, frames, path_pattern, degrees=360.0, elevation=0.0, surface_an
     """Renders an orbit of `frames` PNGs named ``path_pattern % i`` (e.g. "orbit-%04d.png").
 
     The active camera of the window's first renderer is raised by `elevation` degrees, then
-    turned by ``degrees / frames`` about the view-up axis between frames. With `surface_anchor`
-    the styles' patterns (comic dots and hatching, pixel-art texels, sketch noise: object space
-    and the SPARSE noise) are anchored to the surface for the animation and restored afterwards. Returns the written paths.
+    turned by ``degrees / frames`` about the view-up axis between frames, and restored
+    afterwards (as SaveStylizedOrbit in ParaView does). With `surface_anchor` the styles'
+    patterns (comic dots and hatching, pixel-art texels, sketch noise: object space and the
+    SPARSE noise) are anchored to the surface for the animation and restored afterwards.
+    Returns the written paths.
     """
     from vtkmodules.vtkIOImage import vtkPNGWriter
     from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
@@ -253,11 +255,12 @@ def orbit(window, frames, path_pattern, degrees=360.0, elevation=0.0, surface_an
         for _ in range(renderers.GetNumberOfItems()):
             restores.append(_surface_anchor(renderers.GetNextItem().GetPass()))
     camera = renderer.GetActiveCamera()
-    if elevation:
-        camera.Elevation(float(elevation))
-        camera.OrthogonalizeViewUp()
+    saved = (camera.GetPosition(), camera.GetFocalPoint(), camera.GetViewUp())
     written = []
     try:
+        if elevation:
+            camera.Elevation(float(elevation))
+            camera.OrthogonalizeViewUp()
         for index in range(frames):
             if index:
                 camera.Azimuth(float(degrees) / frames)
@@ -277,6 +280,10 @@ def orbit(window, frames, path_pattern, degrees=360.0, elevation=0.0, surface_an
             writer.Write()
             written.append(path)
     finally:
+        camera.SetPosition(saved[0])
+        camera.SetFocalPoint(saved[1])
+        camera.SetViewUp(saved[2])
+        renderer.ResetCameraClippingRange()
         for restore in restores:
             restore()
     return written
