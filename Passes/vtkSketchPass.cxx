@@ -594,9 +594,9 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   double noiseSize = finite(this->NoiseSize, self->GetNoiseSizeMinValue());
   if (this->Noise == SPARSE)
   {
-    // At least SparseMinimumTexel pixels of the window (a magnified screenshot: of the tiles),
-    // and steps at least SparseStepPerTexel texels long as a texel is wide (on a small
-    // image the points' steps would otherwise turn the strokes into spots).
+    // A texel of at least SparseMinimumTexel pixels of the window (a magnified screenshot: of
+    // its tiles), and steps of at least SparseStepPerTexel texels (on a small image the steps
+    // in points would otherwise turn the strokes into spots).
     noiseSize = std::max(noiseSize, SparseMinimumTexel * frame.TileScale[1] / p.PointSize);
     p.StepLength = std::max(p.StepLength,
       SparseStepPerTexel * noiseSize * this->Steps / std::max(p.Steps, 1));

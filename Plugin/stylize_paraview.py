@@ -13,9 +13,10 @@ Embedded in the VTKStylize plugin; importable once the plugin is loaded::
 Both render as the view renders (under MPI every rank takes part; the first writes).
 """
 
-# The patterns each style (the view's Style value) anchors to the surface in an orbit: (view
-# property, surface value): comic Object, pixel art Surface, sketch Object.
-_SURFACE_ANCHORS = {  # style: the (property, value) pairs that anchor it to the surface
+# The patterns each style (the view's Style value) anchors to the surface in an orbit, as (view
+# property, surface value) pairs: comic Object, pixel art Surface (texels), sketch Object with
+# the Sparse noise.
+_SURFACE_ANCHORS = {
     1: [("ComicAnchor", 1)],
     2: [("PixelArtDitherAnchor", 2)],
     3: [("SketchNoiseSpace", 0), ("SketchNoise", 3)],  # object space, SPARSE noise

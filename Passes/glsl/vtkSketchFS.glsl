@@ -199,7 +199,8 @@ float sketchStroke(ivec2 p, vec3 x0, vec3 dir0, vec3 n0, bool across)
   }
   if (!(wsum > 0.0))
   {
-    return 0.5 + (sketchNoiseAt(f0, -x0.z, tol) - sketchNoiseStats.x) * 0.25 * sketchStrokeContrast /
+    float start = sketchNoiseAt(f0, -x0.z, tol);
+    return 0.5 + (start - sketchNoiseStats.x) * 0.25 * sketchStrokeContrast /
       max(sketchNoiseStats.y, 1e-4);
   }
   // Normalize: the weighted mean of independent samples has deviation sigma sqrt(w2) / w.
