@@ -58,29 +58,43 @@ uniform float sketchCross;       // cross-hatching below this tone
 uniform vec3 sketchPencil;
 uniform vec3 sketchPaper;
 
-// The field at continuous pixel position f, bilinear over the taps on the stroke's surface
-// (depth within tol of the expected depth), directions flipped to agree with ref. w = 0: none.
-vec4 sketchFieldAt(vec2 f, vec3 ref, float expected, float tol)
+// The four pixels around continuous pixel position f (taps, their field entries) and their
+// bilinear weights, a weight 0 where the pixel is not on the stroke's surface: no field there,
+// or its linear depth farther than tol from the expected depth.
+vec4 sketchSurfaceTaps(vec2 f, float expected, float tol, out ivec2 taps[4], out vec4 entries[4])
 {
   vec2 g = f - 0.5;
   vec2 fl = floor(g);
   vec2 t = g - fl;
   ivec2 i0 = ivec2(fl);
-  vec4 acc = vec4(0.0);
-  float wsum = 0.0;
+  vec4 weights = vec4(0.0);
   for (int k = 0; k < 4; ++k)
   {
     ivec2 o = ivec2(k & 1, k >> 1);
-    ivec2 q = clamp(i0 + o, ivec2(0), fieldSize - 1);
-    vec4 e = texelFetch(sketchField, q, 0);
-    float w = (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y);
-    if (!(e.w > 0.0) || abs(e.w - expected) > tol)
-    {
-      continue;
-    }
-    acc += w * vec4(dot(e.xyz, ref) < 0.0 ? -e.xyz : e.xyz, e.w);
-    wsum += w;
+    taps[k] = clamp(i0 + o, ivec2(0), fieldSize - 1);
+    entries[k] = texelFetch(sketchField, taps[k], 0);
+    bool on = entries[k].w > 0.0 && !(abs(entries[k].w - expected) > tol);
+    weights[k] = on ? (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y) : 0.0;
   }
+  return weights;
+}
+
+// The field at continuous pixel position f, bilinear over the taps on the stroke's surface
+// (depth within tol of the expected depth), directions flipped to agree with ref. w = 0: none.
+vec4 sketchFieldAt(vec2 f, vec3 ref, float expected, float tol)
+{
+  ivec2 taps[4];
+  vec4 e[4];
+  vec4 w = sketchSurfaceTaps(f, expected, tol, taps, e);
+  vec4 acc = vec4(0.0);
+  for (int k = 0; k < 4; ++k)
+  {
+    if (w[k] > 0.0) // (a tap off the surface is left out, not multiplied by 0)
+    {
+      acc += w[k] * vec4(dot(e[k].xyz, ref) < 0.0 ? -e[k].xyz : e[k].xyz, e[k].w);
+    }
+  }
+  float wsum = w.x + w.y + w.z + w.w;
   return wsum > 1e-4 ? acc / wsum : vec4(0.0);
 }
 
@@ -97,25 +111,19 @@ float sketchNoiseAt(vec2 f, float expected, float tol)
   vec4 pos = texelFetch(stylizePositionTexture, clamp(ivec2(f), ivec2(0), fieldSize - 1), 0);
   return texture(sketchNoise, pos.xyz * sketchNoiseScale).r;
 #else
-  vec2 g = f - 0.5;
-  vec2 fl = floor(g);
-  vec2 t = g - fl;
-  ivec2 i0 = ivec2(fl);
+  ivec2 taps[4];
+  vec4 entries[4];
+  vec4 w = sketchSurfaceTaps(f, expected, tol, taps, entries);
   vec3 acc = vec3(0.0);
   float wsum = 0.0;
   for (int k = 0; k < 4; ++k)
   {
-    ivec2 o = ivec2(k & 1, k >> 1);
-    ivec2 q = clamp(i0 + o, ivec2(0), fieldSize - 1);
-    vec4 pos = texelFetch(stylizePositionTexture, q, 0);
-    float z = texelFetch(sketchField, q, 0).w;
-    float w = (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y);
-    if (!(pos.a > 0.5) || !(z > 0.0) || abs(z - expected) > tol)
+    vec4 pos = texelFetch(stylizePositionTexture, taps[k], 0);
+    if (w[k] > 0.0 && pos.a > 0.5)
     {
-      continue;
+      acc += w[k] * pos.xyz;
+      wsum += w[k];
     }
-    acc += w * pos.xyz;
-    wsum += w;
   }
   vec3 p = wsum > 1e-4 ? acc / wsum :
     texelFetch(stylizePositionTexture, clamp(ivec2(f), ivec2(0), fieldSize - 1), 0).xyz;
