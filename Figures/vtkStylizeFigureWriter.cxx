@@ -4,6 +4,9 @@
 #include "vtkActor2DCollection.h"
 #include "vtkCellArray.h"
 #include "vtkComicPass.h"
+#include "vtkContext2D.h"
+#include "vtkContextActor.h"
+#include "vtkContextScene.h"
 #include "vtkCoordinate.h"
 #include "vtkImageData.h"
 #include "vtkObjectFactory.h"
@@ -18,6 +21,7 @@
 #include "vtkScalarBarActorInternal.h"
 #include "vtkSketchPass.h"
 #include "vtkSmartPointer.h"
+#include "vtkStylizeCairoContextDevice2D.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
 #include "vtkUnsignedCharArray.h"
@@ -257,7 +261,7 @@ struct vtkStylizeFigureWriter::Internals
   std::vector<unsigned char> Bytes;
   vtkNew<vtkUnsignedCharArray> Result;
   /** The 2D actors hidden while the layers render, with their visibility. */
-  std::vector<std::pair<vtkActor2D*, int>> Hidden;
+  std::vector<std::pair<vtkProp*, int>> Hidden;
 };
 
 //------------------------------------------------------------------------------
@@ -1004,7 +1008,7 @@ int vtkStylizeFigureWriter::Write()
   // The 2D actors: hidden while the layers render, drawn as vectors afterwards.
   struct Overlay
   {
-    vtkActor2D* Actor;
+    vtkProp* Actor;
     vtkRenderer* Renderer;
   };
   std::vector<Overlay> overlays;
@@ -1027,24 +1031,24 @@ int vtkStylizeFigureWriter::Write()
         if (prop->GetVisibility())
         {
           prop->GetActors2D(actors);
+          // a vtkContextActor is a 2D overlay but not a vtkActor2D
+          if (vtkContextActor::SafeDownCast(prop))
+          {
+            actors->AddItem(prop);
+          }
         }
       }
       actors->InitTraversal();
-      while (vtkProp* item = actors->GetNextProp())
+      while (vtkProp* actor = actors->GetNextProp())
       {
-        auto* actor = vtkActor2D::SafeDownCast(item);
-        if (!actor || !actor->GetVisibility())
+        if (!(vtkActor2D::SafeDownCast(actor) || vtkContextActor::SafeDownCast(actor)) ||
+          !actor->GetVisibility())
         {
           continue;
         }
-        if (vtkTextActor::SafeDownCast(actor) || vtkScalarBarActor::SafeDownCast(actor))
-        {
-          overlays.push_back({ actor, ren });
-        }
-        else
-        {
-          leftOut.emplace_back(actor->GetClassName());
-        }
+        // drawn after the layers: as text, through vtkContext2D, or as a scalar bar; what none
+        // of them draws is named in the warning
+        overlays.push_back({ actor, ren });
         this->Internal->Hidden.emplace_back(actor, actor->GetVisibility());
         actor->VisibilityOff();
       }
@@ -1293,6 +1297,7 @@ int vtkStylizeFigureWriter::Write()
     }
   }
 
+  vtkNew<vtkStylizeCairoContextDevice2D> device;
   for (const Overlay& o : overlays)
   {
     o.Actor->SetVisibility(1);
@@ -1300,15 +1305,36 @@ int vtkStylizeFigureWriter::Write()
     {
       DrawText(c, text, o.Renderer, this->Magnification);
     }
-    else if (auto* bar = vtkScalarBarActor::SafeDownCast(o.Actor))
+    else
     {
-      DrawScalarBar(c, bar, o.Renderer, this->Magnification);
+      // what paints itself through vtkContext2D (a vtkContextActor's scene, ParaView's scalar
+      // bars), as vectors; 2D actors magnified with the page
+      device->SetTarget(c.Cr, c.H, this->Magnification);
+      device->Begin(o.Renderer);
+      vtkNew<vtkContext2D> painter;
+      painter->Begin(device);
+      const bool painted = this->PaintContextOverlay(o.Actor, o.Renderer, painter);
+      painter->End();
+      device->End();
+      c.Paths += device->GetNumberOfShapes();
+      c.Texts += device->GetNumberOfTexts();
+      c.Images += device->GetNumberOfImages();
+      auto* bar = vtkScalarBarActor::SafeDownCast(o.Actor);
+      if (!painted && bar)
+      {
+        DrawScalarBar(c, bar, o.Renderer, this->Magnification);
+      }
+      else if (!painted)
+      {
+        leftOut.emplace_back(o.Actor->GetClassName());
+      }
     }
     o.Actor->SetVisibility(0);
   }
   if (!leftOut.empty())
   {
-    this->Warning += "left out the 2D actors drawn by neither text nor scalar bar (";
+    this->Warning += "left out the 2D actors that are neither text, scalar bars nor painted "
+                     "through vtkContext2D (";
     for (size_t i = 0; i < leftOut.size(); ++i)
     {
       this->Warning += (i ? ", " : "") + leftOut[i];
@@ -1385,6 +1411,24 @@ int vtkStylizeFigureWriter::Write()
     return fail(what + std::strerror(error));
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeFigureWriter::PaintContextOverlay(
+  vtkProp* actor, vtkViewport* viewport, vtkContext2D* painter)
+{
+  auto* contextActor = vtkContextActor::SafeDownCast(actor);
+  vtkContextScene* scene = contextActor ? contextActor->GetScene() : nullptr;
+  if (!scene || !painter)
+  {
+    return false;
+  }
+  if (auto* renderer = vtkRenderer::SafeDownCast(viewport))
+  {
+    scene->SetRenderer(renderer);
+  }
+  scene->Paint(painter);
+  return true;
 }
 
 //------------------------------------------------------------------------------

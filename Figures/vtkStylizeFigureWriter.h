@@ -24,7 +24,11 @@
  *   colour, SketchOutlineWidth points wide (0: none).
  * - **Text and scalar bars** (vtkTextActor, vtkScalarBarActor, in any renderer of the window):
  *   vector text in the actor's colour, fitted to the box VTK lays the text out in, and the
- *   bar's colour swatches as rectangles. Other 2D actors are left out (GetWarning names them).
+ *   bar's colour swatches as rectangles. 2D actors that paint through vtkContext2D (a
+ *   vtkContextActor's scene; ParaView's vtkContext2DScalarBarActor through the plugin's view)
+ *   are painted as vectors: shapes in the pen's and brush's colours, text as the glyph outlines
+ *   of VTK's text renderer, a colour strip as a linear gradient (PaintContextOverlay). Other 2D
+ *   actors are left out (GetWarning names them).
  *
  * The figure's unit is the image pixel: a W x H window at Magnification m gives a page of
  * mW x mH (SVG pixels, PDF points), which rasterizes back to the PNG's size at 96 dpi (SVG) or
@@ -42,10 +46,13 @@
 
 #include <string> // for std::string
 
+class vtkContext2D;
 class vtkImageData;
+class vtkProp;
 class vtkRenderWindow;
 class vtkStylizeStylePass;
 class vtkUnsignedCharArray;
+class vtkViewport;
 
 class VTKSTYLIZEFIGURES_EXPORT vtkStylizeFigureWriter : public vtkObject
 {
@@ -216,6 +223,16 @@ protected:
    * (ParaView's) overrides it.
    */
   virtual void RenderFrame();
+
+  /**
+   * Paints a 2D actor that draws through vtkContext2D into `painter`, whose device writes the
+   * figure's vector shapes (vtkStylizeCairoContextDevice2D: its coordinates are the viewport's
+   * pixels, as on the screen). Returns true when it painted the actor. By default it paints a
+   * vtkContextActor's scene; a view with 2D actors of its own kind (ParaView's
+   * vtkContext2DScalarBarActor) overrides it. Text actors are drawn before, and a
+   * vtkScalarBarActor this leaves alone is drawn from its layout afterwards.
+   */
+  virtual bool PaintContextOverlay(vtkProp* actor, vtkViewport* viewport, vtkContext2D* painter);
 
   vtkRenderWindow* RenderWindow = nullptr;
   char* FileName = nullptr;

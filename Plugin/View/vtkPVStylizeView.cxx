@@ -2,6 +2,7 @@
 
 #include "vtkBoundingBox.h"
 #include "vtkComicPass.h"
+#include "vtkContext2DScalarBarActor.h"
 #include "vtkImageData.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
@@ -47,6 +48,24 @@ protected:
   bool CaptureLayer(int layer, const double* key, vtkImageData* out) override
   {
     return this->View->CaptureFigureLayer(layer, key, out);
+  }
+
+  // ParaView's colour legends paint themselves through vtkContext2D (their layout is not
+  // vtkScalarBarActor's): painted into the figure's device, as vectors.
+  bool PaintContextOverlay(vtkProp* actor, vtkViewport* viewport, vtkContext2D* painter) override
+  {
+    if (auto* bar = vtkContext2DScalarBarActor::SafeDownCast(actor))
+    {
+      // only the first rank writes the figure (and lays the legend out: the others' legends
+      // may never have rendered, and would paint with no viewport)
+      vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+      if (!controller || controller->GetLocalProcessId() == 0)
+      {
+        bar->Paint(painter);
+      }
+      return true;
+    }
+    return this->Superclass::PaintContextOverlay(actor, viewport, painter);
   }
 };
 }

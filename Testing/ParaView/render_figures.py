@@ -4,7 +4,9 @@
 
 The scene of render_styles.py (a Wavelet contour) in a 400x300 view, with the plugin's Python
 module (stylize_paraview, embedded in the plugin): OUTPUT_PREFIX-<style>.png (SaveScreenshot),
--<style>.svg and .pdf (SaveStylizedFigure, one call each); then a 3-frame comic orbit,
+-<style>.svg and .pdf (SaveStylizedFigure, one call each); the comic with ParaView's colour
+legend (the contour coloured by its normals' z): OUTPUT_PREFIX-bar.png, .svg, .pdf; then a
+3-frame comic orbit,
 OUTPUT_PREFIX-orbit.gif with its frames OUTPUT_PREFIX-orbit-0000.png ... (SaveStylizedOrbit, one
 call), the view's anchor as it was after the orbit, and a 2-frame sketch orbit after which the
 view's noise settings are as they were; then the failures: a figure of the style None and an
@@ -28,7 +30,19 @@ for style, name in [("Comic", "comic"), ("Pixel art", "pixel"), ("Sketch", "sket
     SaveScreenshot("%s-%s.png" % (prefix, name), view, ImageResolution=size)
     for ext in ("svg", "pdf"):
         stylize.SaveStylizedFigure("%s-%s.%s" % (prefix, name, ext), view)
+# ParaView's colour legend (a vtkContext2DScalarBarActor, not a vtkScalarBarActor) painted into
+# the figure as vectors: the contour coloured by its normals' z, the legend shown.
 view.Style = "Comic"
+contour = FindSource("Contour1")
+display = GetDisplayProperties(contour, view)
+ColorBy(display, ("POINTS", "Normals", "Z"))
+display.SetScalarBarVisibility(view, True)
+Render(view)
+SaveScreenshot(prefix + "-bar.png", view, ImageResolution=size)
+for ext in ("svg", "pdf"):
+    stylize.SaveStylizedFigure("%s-bar.%s" % (prefix, ext), view)
+display.SetScalarBarVisibility(view, False)
+ColorBy(display, None)
 anchor = str(view.ComicAnchor)
 written = stylize.SaveStylizedOrbit(prefix + "-orbit.gif", view, frames=3, degrees=30)
 print("orbit: " + " ".join(written))

@@ -9,7 +9,9 @@ GIF). Checked, as realdata.figures checks vtkstylize's figures: each figure rast
 view's size (rsvg-convert, pdftocairo) against the screenshot, SSIM >= 0.95 for comic and
 sketch, identical for pixel art; the comic SVG holds vector dots or hatch lines and traced
 outlines and no embedded image; the orbit's frames differ from each other (the camera turned)
-and the GIF holds 3 frames (ffprobe); bad calls are refused with a Python exception.
+and the GIF holds 3 frames (ffprobe); bad calls are refused with a Python exception. ParaView's
+colour legend (vtkContext2DScalarBarActor) is in the comic figure as vectors: SSIM >= 0.95 over
+the image and over the legend's corner, no embedded image.
 """
 import os
 import subprocess
@@ -20,6 +22,8 @@ sys.path.insert(0, os.path.join(HERE, "..", "RealData"))
 from figures import SSIM_MIN, rasterize, read_png, vector_content  # noqa: E402
 from pvbatch_script import run_render_script  # noqa: E402
 from vtkstylize_testing import vtkStylizeImageMetrics as M  # noqa: E402
+import vtk  # noqa: E402
+from vtk.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 prefix, log = run_render_script(sys.argv[1], "render_figures.py", sys.argv[2], "figure")
 failures = []
@@ -48,6 +52,44 @@ for name in ["comic", "pixel", "sketch"]:
                 figure, differ))
         if name != "pixel" and ssim < SSIM_MIN:
             failures.append("%s: SSIM %.4f < %.2f" % (figure, ssim, SSIM_MIN))
+# ParaView's colour legend, painted through vtkContext2D as vectors: the figure matches the
+# screenshot over the whole image and over the legend's corner (which holds the legend's colours:
+# without it the figure's corner is the background alone).
+reference = read_png(prefix + "-bar.png")
+w, h, _ = reference.GetDimensions()
+corner = [int(0.7 * w), w - 1, 0, int(0.7 * h)]
+
+
+def crop(image):
+    voi = vtk.vtkExtractVOI()
+    voi.SetInputData(image)
+    voi.SetVOI(corner + [0, 0])
+    voi.Update()
+    return voi.GetOutput()
+
+
+reds = vtk_to_numpy(crop(reference).GetPointData().GetScalars())
+legend = int(((reds[:, 0].astype(int) - reds[:, 2]) > 60).sum())
+if legend < 20:
+    failures.append("the screenshot's corner holds no legend (%d red pixels)" % legend)
+for ext in ("svg", "pdf"):
+    figure = "%s-bar.%s" % (prefix, ext)
+    if not os.path.exists(figure):
+        failures.append("%s: not written" % figure)
+        continue
+    png = "%s-bar-%s.png" % (prefix, ext)
+    rasterize(figure, png, w, h)
+    image = read_png(png)
+    ssim = M.SSIM(reference, image, 255.0)
+    corner_ssim = M.SSIM(crop(reference), crop(image), 255.0)
+    print("| comic + legend | %s | %d | %.4f (legend's corner %.4f) | |" % (
+        ext, os.path.getsize(figure), ssim, corner_ssim))
+    if ssim < SSIM_MIN or corner_ssim < SSIM_MIN:
+        failures.append("%s: SSIM %.4f, legend's corner %.4f (< %.2f)" % (
+            figure, ssim, corner_ssim, SSIM_MIN))
+paths, images = vector_content(prefix + "-bar.svg")
+if images:
+    failures.append("comic SVG with the legend: %d embedded images (vectors expected)" % images)
 paths, images = vector_content(prefix + "-comic.svg")
 if images or paths < 10:
     failures.append("comic SVG: %d paths, %d embedded images (vectors expected)" % (paths, images))
