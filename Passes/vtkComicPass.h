@@ -271,7 +271,8 @@ public:
   /**
    * Pattern anchoring: SCREEN (default) or OBJECT. Values: SCREEN, to the image: the classic look;
    * the pattern stays while the scene moves; OBJECT, to the surface (object-space position): moves
-   * with the data.
+   * with the data (where the surface turns away and its cells shrink below two pixels, the
+   * pattern fades to the tone rather than alias).
    */
   vtkSetClampMacro(Anchor, int, SCREEN, OBJECT);
   vtkGetMacro(Anchor, int);

@@ -316,9 +316,10 @@ public:
   /**
    * The noise: WHITE (default), PERLIN, WORLEY or SPARSE. Values: WHITE, hard pencil; PERLIN,
    * medium; WORLEY, soft; SPARSE, separate strokes that hold still in animations (dark dots on
-   * 5% of the texels, filtered trilinearly and read at the object-space position interpolated
-   * between pixels; a texel spans at least 1.7 pixels of the window, so that a stroke moves with
-   * the surface instead of being resampled by the pixels: the default of orbit animations).
+   * 5% of the texels, read at the object-space position interpolated between pixels and
+   * prefiltered over the pixel's footprint on the surface (mipmapped); a texel spans at least
+   * 1.7 pixels of the window, so that a stroke moves with the surface instead of being resampled
+   * by the pixels: the default of orbit animations).
    */
   vtkSetClampMacro(Noise, int, WHITE, SPARSE);
   vtkGetMacro(Noise, int);

@@ -327,6 +327,23 @@ void comicMain()
   // Zones (eq. 13-14): dots above a1, hatching below a2, a continuous blend between.
   float t = comicBright > comicDark ? clamp((tone - comicDark) / (comicBright - comicDark), 0.0, 1.0)
                                     : step(comicDark, tone);
+#ifdef COMIC_OBJECT_ANCHOR
+  // Anchored to the surface, the cells shrink on the screen where the surface turns away; below
+  // two pixels a cell cannot be drawn without aliasing (its dot or line falls between pixels
+  // differently as the surface moves: moire on the still, flicker in an orbit), so the pattern
+  // fades to its mean (the tone; the paper between lines of a fixed HatchWidth) as its cells go
+  // from two pixels to one.
+#if defined(COMIC_DOTS)
+  dots = mix(dots, tone, smoothstep(0.25, 0.5, dotAA));
+#endif
+#if defined(COMIC_HATCH)
+  float hatchMean = 1.0 - clamp(width, 0.0, 1.0);
+#ifdef COMIC_CROSS
+  hatchMean *= crossed ? hatchMean : 1.0;
+#endif
+  hatch = mix(hatch, comicHatchWidth > 0.0 ? hatchMean : tone, smoothstep(0.25, 0.5, hatchAA));
+#endif
+#endif
   pattern = mix(hatch, dots, t);
 #endif
   if (!surface)

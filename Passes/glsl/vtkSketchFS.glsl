@@ -116,18 +116,30 @@ float sketchNoiseAt(vec2 f, float expected, float tol)
   vec4 w = sketchSurfaceTaps(f, expected, tol, taps, entries);
   vec3 acc = vec3(0.0);
   float wsum = 0.0;
+  vec4 pos[4];
+  bool on[4];
   for (int k = 0; k < 4; ++k)
   {
-    vec4 pos = texelFetch(stylizePositionTexture, taps[k], 0);
-    if (w[k] > 0.0 && pos.a > 0.5)
+    pos[k] = texelFetch(stylizePositionTexture, taps[k], 0);
+    on[k] = pos[k].a > 0.5 && entries[k].w > 0.0 && !(abs(entries[k].w - expected) > tol);
+    if (w[k] > 0.0 && pos[k].a > 0.5)
     {
-      acc += w[k] * pos.xyz;
+      acc += w[k] * pos[k].xyz;
       wsum += w[k];
     }
   }
   vec3 p = wsum > 1e-4 ? acc / wsum :
     texelFetch(stylizePositionTexture, clamp(ivec2(f), ivec2(0), fieldSize - 1), 0).xyz;
-  return texture(sketchNoise, p * sketchNoiseScale).r;
+  // Prefiltered over the pixel's footprint on the surface (the object-space step to the next
+  // pixel in x and y, from the taps on the surface): where the surface is seen at a grazing
+  // angle the noise's texels are narrower than a pixel across it, and read at a point they would
+  // alias as the pixels move over them; the mipmapped noise averages them instead.
+  vec3 dx = on[0] && on[1] ? pos[1].xyz - pos[0].xyz
+                           : (on[2] && on[3] ? pos[3].xyz - pos[2].xyz : vec3(0.0));
+  vec3 dy = on[0] && on[2] ? pos[2].xyz - pos[0].xyz
+                           : (on[1] && on[3] ? pos[3].xyz - pos[1].xyz : vec3(0.0));
+  return textureGrad(sketchNoise, p * sketchNoiseScale, dx * sketchNoiseScale,
+    dy * sketchNoiseScale).r;
 #endif
 }
 

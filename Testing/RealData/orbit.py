@@ -27,8 +27,15 @@ at most --max-ratio (default 1/3, the target; or per style, e.g. comic=0.45,pixe
 screen anchor's and the scale stays within
 20% of the still frame's.
 
+--degrees sets the turn per frame (1, the target's), --light scene fixes the light in the world
+where the first frame's headlight is (the shading then stays on the surface, so what changes is
+the pattern's own doing). Both anchors' counts grow with the motion per frame in pixels, the
+screen anchor's in proportion while the surface anchor's residue (pattern features redrawn on a
+moved pixel grid) grows less, so the ratio falls as the image grows or the turn per frame does.
+
 usage: orbit.py DATADIR [--meshes bunny,fandisk] [--styles comic,pixel,sketch] [--frames 7]
-                [--size 400x300] [--margin 0] [--check] [--require comic] [--max-ratio 0.333]
+                [--size 400x300] [--degrees 1] [--light head|scene] [--margin 0] [--check]
+                [--require comic] [--max-ratio 0.333]
 """
 import argparse
 import math
@@ -48,7 +55,7 @@ ANCHORS = {
 }
 
 
-def scene(path, width, height):
+def scene(path, width, height, light="head"):
     reader = vtkstylize.vtkStylizeReader()
     reader.SetFileName(path)
     reader.Update()
@@ -77,6 +84,14 @@ def scene(path, width, height):
     camera.Elevation(20)
     camera.OrthogonalizeViewUp()
     renderer.ResetCamera()
+    if light == "scene":
+        # a light fixed in the world where the first frame's headlight is: the shading stays on
+        # the surface, so what changes is the pattern's own doing
+        fixed = vtk.vtkLight()
+        fixed.SetLightTypeToSceneLight()
+        fixed.SetPosition(camera.GetPosition())
+        fixed.SetFocalPoint(camera.GetFocalPoint())
+        renderer.AddLight(fixed)
     return window, renderer
 
 
@@ -105,7 +120,7 @@ def positions(renderer, window):
     return vtk_to_numpy(out).reshape(h, w, 4).copy()
 
 
-def measure(window, renderer, style, anchor, frames, margin=0.0):
+def measure(window, renderer, style, anchor, frames, margin=0.0, degrees=1.0):
     w, h = window.GetSize()
     setting, screen, surface = ANCHORS[style]
     styled = vtkstylize.create_pass(style)
@@ -122,7 +137,7 @@ def measure(window, renderer, style, anchor, frames, margin=0.0):
     previous = None
     for f in range(frames):
         if f:
-            camera.Azimuth(1.0)
+            camera.Azimuth(degrees)
             camera.OrthogonalizeViewUp()
         renderer.ResetCameraClippingRange()
         window.Render()
@@ -195,6 +210,11 @@ def main():
     parser.add_argument("--size", default="400x300")
     parser.add_argument("--margin", type=float, default=0.0,
                         help="count only clear changes of ink: both grays this far from half")
+    parser.add_argument("--degrees", type=float, default=1.0,
+                        help="the camera's turn per frame (the target is stated for 1 degree)")
+    parser.add_argument("--light", choices=("head", "scene"), default="head",
+                        help="head: the camera's headlight (the shading turns with the camera); "
+                        "scene: a light fixed in the world (the shading stays on the surface)")
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--require", default="comic")
     parser.add_argument("--max-ratio", default=str(1.0 / 3.0),
@@ -214,9 +234,11 @@ def main():
     for mesh in args.meshes.split(","):
         path = os.path.join(args.datadir, mesh + ".ply")
         for style in args.styles.split(","):
-            window, renderer = scene(path, width, height)
-            screen = measure(window, renderer, style, "screen", args.frames, args.margin)
-            surface = measure(window, renderer, style, "surface", args.frames, args.margin)
+            window, renderer = scene(path, width, height, args.light)
+            screen = measure(window, renderer, style, "screen", args.frames, args.margin,
+                             args.degrees)
+            surface = measure(window, renderer, style, "surface", args.frames, args.margin,
+                              args.degrees)
             ratio = surface[0] / max(1e-9, screen[0])
             print("%-8s %-6s %10.2f %10.2f %7.2f %11.3f .. %.3f" % (
                 mesh, style, 100 * screen[0], 100 * surface[0], ratio, surface[1] * surface[3],
