@@ -43,7 +43,7 @@
  * surface (SURFACE). With SURFACE in FAITHFUL mode the surface's art pixels themselves are fixed
  * to it, for animations: texels, cells of the object-space position projected on the coordinate
  * plane facing the geometric normal (triplanar), each the world size of an art pixel at the
- * focal point; a texel takes the lit colour at its centre and its own matrix entry, and its
+ * focal point; a texel takes the mean lit colour over it and its own matrix entry, and its
  * outlines are found on the texels (Canny's test along each texel axis on the art pixels'
  * smoothed gray; creases are not drawn) and, for silhouettes and occluding contours, within one
  * art pixel of them on the screen. In an orbit a point of the surface then keeps its colour from

@@ -350,8 +350,8 @@ void pixelMain()
 // Texels: art pixels fixed to the surface, so that they move with it in an animation. Texel
 // (i, j) of a surface point is the cell floor(plane / pixelTexelUnit) of its object-space
 // position projected on the coordinate plane facing its geometric normal (triplanar). Every
-// screen pixel of a texel takes the colour of the pixel nearest the texel's centre (one sample,
-// as a texture's nearest filtering would), dithered by the texel's matrix entry and quantized.
+// screen pixel of a texel takes the texel's mean lit colour (pixelTexelColour), dithered by the
+// texel's matrix entry and quantized.
 // Colour outlines are found on the texels too, so that they move with the surface: Canny's test
 // along each texel axis on the grays at the neighbouring texels' centres (a step above the high
 // threshold that is a maximum along that axis; no hysteresis). Silhouettes and occluding
@@ -393,6 +393,8 @@ struct PixelTexel
   bool found;     // the centre was found on the texel
   ivec2 cell;     // the texel's index on its plane
   ivec2 centre;   // the viewport pixel nearest its centre
+  vec2 at;        // its centre, continuous (viewport pixels, pixel v's centre at v)
+  int axis;       // the coordinate plane it lies on
   mat2 toScreen;  // screen pixels per texel step (the inverse of d(texel) / d(screen))
 };
 
@@ -404,6 +406,8 @@ PixelTexel pixelTexelAt(ivec2 v)
   t.found = false;
   t.cell = ivec2(0);
   t.centre = v;
+  t.at = vec2(v);
+  t.axis = 2;
   t.toScreen = mat2(0.0);
   vec4 pos = pixelScenePosition(v);
   vec3 dx = pixelPositionStep(pos, v, ivec2(1, 0));
@@ -414,6 +418,7 @@ PixelTexel pixelTexelAt(ivec2 v)
     return t;
   }
   int axis = stylizeTriplanarAxis(gn);
+  t.axis = axis;
   float unit = pixelTexelUnit;
   vec2 uv = stylizePlaneCoordinates(pos.xyz, axis) / unit;
   vec2 cell = floor(uv);
@@ -441,10 +446,37 @@ PixelTexel pixelTexelAt(ivec2 v)
     vec2 guessUV = stylizePlaneCoordinates(guess.xyz, axis) / unit;
     offset = clamp(offset + t.toScreen * (cell + 0.5 - guessUV), vec2(-reach), vec2(reach));
   }
+  t.at = vec2(v) + offset;
   t.centre = v + ivec2(round(offset));
   vec4 at = pixelScenePosition(t.centre);
   t.found = at.a > 0.5 && all(equal(floor(stylizePlaneCoordinates(at.xyz, axis) / unit), cell));
   return t;
+}
+
+// The texel's lit colour: the mean of the pixels at 3 x 3 points spread over it (those on the
+// surface and on this texel), as the faithful art pixel is the mean of its block. One pixel's
+// colour, the one nearest the centre, changed as the surface moved a fraction of a pixel (a
+// scan's lighting varies from pixel to pixel), and a texel near a quantization level flipped.
+vec4 pixelTexelColour(PixelTexel t)
+{
+  vec4 sum = vec4(0.0);
+  float n = 0.0;
+  for (int j = 0; j < 3; ++j)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      vec2 s = (vec2(i, j) - 1.0) / 3.0;
+      ivec2 q = ivec2(round(t.at + t.toScreen * s));
+      vec4 pos = pixelScenePosition(q);
+      if (pos.a > 0.5 &&
+        all(equal(floor(stylizePlaneCoordinates(pos.xyz, t.axis) / pixelTexelUnit), vec2(t.cell))))
+      {
+        sum += pixelSceneFetch(stylizeColorTexture, q);
+        n += 1.0;
+      }
+    }
+  }
+  return n > 0.0 ? sum / n : pixelSceneFetch(stylizeColorTexture, t.centre);
 }
 
 #ifdef PIXEL_EDGES
@@ -557,8 +589,7 @@ void pixelMain()
     // A texel whose centre is not on it (cut by a silhouette, grazing) takes this pixel's colour
     // and its art pixel's dither entry.
     PixelTexel t = pixelTexelAt(v);
-    ivec2 sample = t.found ? t.centre : v;
-    vec4 c4 = texelFetch(stylizeColorTexture, sample - pixelExtentOrigin, 0);
+    vec4 c4 = t.found ? pixelTexelColour(t) : texelFetch(stylizeColorTexture, v - pixelExtentOrigin, 0);
     ivec2 cell =
       t.found ? ivec2(floor(vec2(t.cell) / float(pixelDitherSize))) : k + pixelDitherOrigin;
     float threshold = 0.5 + (pixelThreshold(cell) - 0.5) * pixelDitherStrength;
