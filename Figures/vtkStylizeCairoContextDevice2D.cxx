@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 vtkStandardNewMacro(vtkStylizeCairoContextDevice2D);
