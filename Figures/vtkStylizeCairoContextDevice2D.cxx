@@ -232,33 +232,8 @@ void vtkStylizeCairoContextDevice2D::DrawLines(float* f, int n, unsigned char* c
 
 void vtkStylizeCairoContextDevice2D::DrawPoints(float* points, int n, unsigned char* colors, int nc)
 {
-  if (!this->Cr || !points)
-  {
-    return;
-  }
   // square points of PointSize pixels, as OpenGL draws them
-  const double half = 0.5 * std::max(1.0f, this->PointSize) * this->Scale;
-  this->Open();
-  for (int i = 0; i < n; ++i)
-  {
-    const unsigned char* c = this->Pen->GetColor();
-    unsigned char rgba[4] = { c[0], c[1], c[2], c[3] };
-    if (colors && nc >= 3)
-    {
-      rgba[0] = colors[nc * i];
-      rgba[1] = colors[nc * i + 1];
-      rgba[2] = colors[nc * i + 2];
-      rgba[3] = nc > 3 ? colors[nc * i + 3] : 255;
-    }
-    double x, y;
-    this->ToPage(points[2 * i], points[2 * i + 1], x, y);
-    cairo_new_path(this->Cr);
-    cairo_rectangle(this->Cr, x - half, y - half, 2 * half, 2 * half);
-    cairo_set_source_rgba(this->Cr, rgba[0] / 255.0, rgba[1] / 255.0, rgba[2] / 255.0, rgba[3] / 255.0);
-    cairo_fill(this->Cr);
-    ++this->Shapes;
-  }
-  this->Close();
+  this->DrawMarkers(VTK_MARKER_SQUARE, false, points, n, colors, nc);
 }
 
 void vtkStylizeCairoContextDevice2D::DrawPointSprites(
@@ -388,6 +363,27 @@ void vtkStylizeCairoContextDevice2D::DrawColoredPolygon(
   this->Close();
 }
 
+namespace
+{
+/**
+ * Appends the points of an elliptic arc about (x, y), radii (rx, ry), from angle a0 to a1
+ * (degrees), in 1-degree steps (exact to well under a pixel at any radius of a legend); reversed
+ * runs from a1 to a0.
+ */
+void AppendArc(std::vector<float>& p, double x, double y, double rx, double ry, double a0,
+  double a1, bool reversed = false)
+{
+  const int steps = std::max(2, static_cast<int>(std::ceil(std::fabs(a1 - a0))));
+  for (int k = 0; k <= steps; ++k)
+  {
+    const int i = reversed ? steps - k : k;
+    const double a = vtkMath::RadiansFromDegrees(a0 + (a1 - a0) * i / steps);
+    p.push_back(static_cast<float>(x + rx * std::cos(a)));
+    p.push_back(static_cast<float>(y + ry * std::sin(a)));
+  }
+}
+}
+
 void vtkStylizeCairoContextDevice2D::DrawEllipseWedge(float x, float y, float outRx, float outRy,
   float inRx, float inRy, float startAngle, float stopAngle)
 {
@@ -395,23 +391,10 @@ void vtkStylizeCairoContextDevice2D::DrawEllipseWedge(float x, float y, float ou
   {
     return;
   }
-  // as a polygon of 1-degree steps (exact to well under a pixel at any radius of a legend)
-  const double a0 = vtkMath::RadiansFromDegrees(static_cast<double>(startAngle));
-  const double a1 = vtkMath::RadiansFromDegrees(static_cast<double>(stopAngle));
-  const int steps = std::max(2, static_cast<int>(std::ceil(std::fabs(stopAngle - startAngle))));
+  // the outer arc, then the inner one back: a polygon the brush fills
   std::vector<float> p;
-  for (int i = 0; i <= steps; ++i)
-  {
-    const double a = a0 + (a1 - a0) * i / steps;
-    p.push_back(static_cast<float>(x + outRx * std::cos(a)));
-    p.push_back(static_cast<float>(y + outRy * std::sin(a)));
-  }
-  for (int i = steps; i >= 0; --i)
-  {
-    const double a = a0 + (a1 - a0) * i / steps;
-    p.push_back(static_cast<float>(x + inRx * std::cos(a)));
-    p.push_back(static_cast<float>(y + inRy * std::sin(a)));
-  }
+  AppendArc(p, x, y, outRx, outRy, startAngle, stopAngle);
+  AppendArc(p, x, y, inRx, inRy, startAngle, stopAngle, true);
   this->DrawPolygon(p.data(), static_cast<int>(p.size() / 2));
 }
 
@@ -422,16 +405,8 @@ void vtkStylizeCairoContextDevice2D::DrawEllipticArc(
   {
     return;
   }
-  const double a0 = vtkMath::RadiansFromDegrees(static_cast<double>(startAngle));
-  const double a1 = vtkMath::RadiansFromDegrees(static_cast<double>(stopAngle));
-  const int steps = std::max(2, static_cast<int>(std::ceil(std::fabs(stopAngle - startAngle))));
   std::vector<float> p;
-  for (int i = 0; i <= steps; ++i)
-  {
-    const double a = a0 + (a1 - a0) * i / steps;
-    p.push_back(static_cast<float>(x + rX * std::cos(a)));
-    p.push_back(static_cast<float>(y + rY * std::sin(a)));
-  }
+  AppendArc(p, x, y, rX, rY, startAngle, stopAngle);
   // the brush fills it, the pen outlines it (as vtkOpenGLContextDevice2D)
   this->Open();
   this->PathThrough(p.data(), static_cast<int>(p.size() / 2), true);
