@@ -27,6 +27,19 @@ at most --max-ratio (default 1/3, the target; or per style, e.g. comic=0.45,pixe
 screen anchor's and the scale stays within
 20% of the still frame's.
 
+With --sampling K (default 1) the frames are rendered at K times --size in one piece with the
+style's WindowScale K: the picture of a K-times magnified screenshot (vtkstylize --magnify K), the
+same picture at higher detail, so that every pixel of --size is measured at K x K surface points.
+At 1 the count is of pixels, and it includes a rasterization floor that no pattern fixed to the
+surface escapes: its dots, lines and texel edges are redrawn on a pixel grid that moves under
+them, so the pixels along every edge flip as the grid shifts by a fraction of a pixel (an
+anti-aliased rim crossing half gray, a hard edge drawn to the nearest pixel). That floor falls
+as 1/K, while what the screen anchor's pattern does (it slides over the surface) does not: the
+share of surface points, what the target is about, is measured at K = 3 or more.
+--control draws the pattern alone (no outlines, a light fixed in the world): with the surface
+anchor the comic's and pixel art's pictures are then a function of the surface point, and what
+their count measures is the rasterization floor alone.
+
 --degrees sets the turn per frame (1, the target's), --light scene fixes the light in the world
 where the first frame's headlight is (the shading then stays on the surface, so what changes is
 the pattern's own doing). Both anchors' counts grow with the motion per frame in pixels, the
@@ -34,7 +47,8 @@ screen anchor's in proportion while the surface anchor's residue (pattern featur
 moved pixel grid) grows less, so the ratio falls as the image grows or the turn per frame does.
 
 usage: orbit.py DATADIR [--meshes bunny,fandisk] [--styles comic,pixel,sketch] [--frames 7]
-                [--size 400x300] [--degrees 1] [--light head|scene] [--margin 0] [--check]
+                [--size 400x300] [--degrees 1] [--light head|scene] [--margin 0] [--sampling 1]
+                [--control] [--check]
                 [--require comic] [--max-ratio 0.333]
 """
 import argparse
@@ -120,11 +134,22 @@ def positions(renderer, window):
     return vtk_to_numpy(out).reshape(h, w, 4).copy()
 
 
-def measure(window, renderer, style, anchor, frames, margin=0.0, degrees=1.0):
+def measure(window, renderer, style, anchor, frames, margin=0.0, degrees=1.0, sampling=1,
+            control=False):
     w, h = window.GetSize()
     setting, screen, surface = ANCHORS[style]
     styled = vtkstylize.create_pass(style)
     getattr(styled, "Set" + setting)(screen if anchor == "screen" else surface)
+    # the window is sampling times the size: the lengths the style gives in pixels grow with it
+    styled.SetWindowScale(sampling, sampling)
+    if control:
+        # the pattern alone: no outlines (the sketch draws none)
+        if style == "comic":
+            styled.SetEdges(False)
+        elif style == "pixel":
+            styled.SetEdgeDetector(vtkstylize.vtkPixelArtPass.NO_EDGES)
+            styled.SetDepthEdges(False)
+            styled.SetNormalEdges(False)
     if style == "sketch":
         # the noise animations use (vtkstylize --orbit, vtkstylize.orbit, SaveStylizedOrbit),
         # fixed to the screen or to the surface
@@ -215,6 +240,12 @@ def main():
     parser.add_argument("--light", choices=("head", "scene"), default="head",
                         help="head: the camera's headlight (the shading turns with the camera); "
                         "scene: a light fixed in the world (the shading stays on the surface)")
+    parser.add_argument("--sampling", type=int, default=1, choices=range(1, 9), metavar="K",
+                        help="measure the K-times magnified picture: K x K surface points per "
+                        "pixel of --size (1: pixels, rasterization floor included)")
+    parser.add_argument("--control", action="store_true",
+                        help="the pattern alone: no outlines, a light fixed in the world (the "
+                        "count of a pattern fixed to the surface: the rasterization floor)")
     parser.add_argument("--check", action="store_true")
     parser.add_argument("--require", default="comic")
     parser.add_argument("--max-ratio", default=str(1.0 / 3.0),
@@ -226,6 +257,13 @@ def main():
     else:
         limits = {style: float(args.max_ratio) for style in args.styles.split(",")}
     failures = []
+    light = "scene" if args.control else args.light
+    if args.sampling > 1:
+        print("the %d-times magnified picture (%dx%d): %d x %d surface points per pixel" % (
+            args.sampling, width * args.sampling, height * args.sampling, args.sampling,
+            args.sampling))
+    if args.control:
+        print("control: the pattern alone (no outlines, a light fixed in the world)")
     if args.margin > 0:
         print("clear changes of ink only: both grays at least %.0f%% of full ink from half; pixel "
               "art: a colour none of the four pixels around the point had" % (100 * args.margin))
@@ -234,11 +272,11 @@ def main():
     for mesh in args.meshes.split(","):
         path = os.path.join(args.datadir, mesh + ".ply")
         for style in args.styles.split(","):
-            window, renderer = scene(path, width, height, args.light)
+            window, renderer = scene(path, width * args.sampling, height * args.sampling, light)
             screen = measure(window, renderer, style, "screen", args.frames, args.margin,
-                             args.degrees)
+                             args.degrees, args.sampling, args.control)
             surface = measure(window, renderer, style, "surface", args.frames, args.margin,
-                              args.degrees)
+                              args.degrees, args.sampling, args.control)
             ratio = surface[0] / max(1e-9, screen[0])
             print("%-8s %-6s %10.2f %10.2f %7.2f %11.3f .. %.3f" % (
                 mesh, style, 100 * screen[0], 100 * surface[0], ratio, surface[1] * surface[3],
