@@ -34,7 +34,7 @@ At 1 the count is of pixels, and it includes a rasterization floor that no patte
 surface escapes: its dots, lines and texel edges are redrawn on a pixel grid that moves under
 them, so the pixels along every edge flip as the grid shifts by a fraction of a pixel (an
 anti-aliased rim crossing half gray, a hard edge drawn to the nearest pixel). That floor falls
-as 1/K, while what the screen anchor's pattern does (it slides over the surface) does not: the
+as K grows, while what the screen anchor's pattern does (it slides over the surface) does not: the
 share of surface points, what the target is about, is measured at K = 3 or more.
 --control draws the pattern alone (no outlines, a light fixed in the world): with the surface
 anchor the comic's and pixel art's pictures are then a function of the surface point, and what
