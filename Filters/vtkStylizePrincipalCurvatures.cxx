@@ -15,6 +15,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkTriangleFilter.h"
 
 #include <algorithm>
@@ -78,6 +79,415 @@ Vec Rotate(const Vec& a, const Vec& b, const Vec& x)
   const double c = Dot(a, b);
   const Vec v = Cross(a, b);
   return Add(Add(Scale(x, c), Cross(v, x)), Scale(v, Dot(v, x) / (1.0 + c)));
+}
+
+/** The triangulated surface with each vertex's normal and tangent frame (u, v, normal). */
+struct Surface
+{
+  std::vector<std::array<vtkIdType, 3>> Faces; // non-degenerate triangles (distinct ids)
+  std::vector<Vec> P;                           // the points
+  std::vector<Vec> Normal;                      // unit where Valid
+  std::vector<bool> Valid;                      // the normal is defined
+  std::vector<Vec> FrameU, FrameV;              // unit tangents where Framed
+  std::vector<bool> Framed;                     // the vertex has a face and a valid normal
+};
+
+/** The triangles of the input's polygons and strips (the points are unchanged). */
+std::vector<std::array<vtkIdType, 3>> Triangles(vtkPolyData* input)
+{
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(input->GetPoints());
+  surface->SetPolys(input->GetPolys());
+  surface->SetStrips(input->GetStrips());
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(surface);
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  if (input->GetNumberOfPoints() > 0 &&
+    (input->GetNumberOfPolys() > 0 || input->GetNumberOfStrips() > 0))
+  {
+    triangles->Update();
+  }
+  vtkPolyData* tri = triangles->GetOutput();
+  std::vector<std::array<vtkIdType, 3>> faces;
+  if (tri && tri->GetPolys())
+  {
+    vtkCellArray* polys = tri->GetPolys();
+    vtkIdType n;
+    const vtkIdType* ids;
+    for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+    {
+      if (n == 3 && ids[0] != ids[1] && ids[1] != ids[2] && ids[0] != ids[2])
+      {
+        faces.push_back({ ids[0], ids[1], ids[2] });
+      }
+    }
+  }
+  return faces;
+}
+
+/**
+ * The points and unit point normals of s: the input's normals (useInput and the input has
+ * 3-component point normals), or corner-angle weighted face normals. Valid marks the points
+ * whose normal could be normalized.
+ */
+void ComputeNormals(vtkPolyData* input, bool useInput, Surface& s)
+{
+  const vtkIdType np = input->GetNumberOfPoints();
+  s.P.assign(static_cast<size_t>(np), Vec{ 0, 0, 0 });
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    input->GetPoint(i, s.P[i].data());
+  }
+  s.Normal.assign(static_cast<size_t>(np), Vec{ 0, 0, 0 });
+  vtkDataArray* inNormals = input->GetPointData()->GetNormals();
+  if (useInput && inNormals && inNormals->GetNumberOfComponents() == 3)
+  {
+    for (vtkIdType i = 0; i < np; ++i)
+    {
+      inNormals->GetTuple(i, s.Normal[i].data());
+    }
+  }
+  else
+  {
+    const std::vector<Vec>& p = s.P;
+    for (const auto& f : s.Faces)
+    {
+      Vec fn = Cross(Sub(p[f[1]], p[f[0]]), Sub(p[f[2]], p[f[0]]));
+      if (!Normalize(fn))
+      {
+        continue;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        Vec a = Sub(p[f[(k + 1) % 3]], p[f[k]]);
+        Vec b = Sub(p[f[(k + 2) % 3]], p[f[k]]);
+        if (!Normalize(a) || !Normalize(b))
+        {
+          continue;
+        }
+        const double angle = std::acos(std::max(-1.0, std::min(1.0, Dot(a, b))));
+        s.Normal[f[k]] = Add(s.Normal[f[k]], Scale(fn, angle));
+      }
+    }
+  }
+  s.Valid.assign(static_cast<size_t>(np), false);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    s.Valid[i] = Normalize(s.Normal[i]);
+  }
+}
+
+/**
+ * Each vertex's tangent frame: u along the first edge of its first face, projected onto the
+ * tangent plane (any tangent when that edge is along the normal), v = normal x u.
+ */
+void ComputeFrames(Surface& s)
+{
+  const size_t np = s.P.size();
+  s.FrameU.assign(np, Vec{ 0, 0, 0 });
+  s.FrameV.assign(np, Vec{ 0, 0, 0 });
+  s.Framed.assign(np, false);
+  for (const auto& f : s.Faces)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType i = f[k];
+      if (s.Framed[i] || !s.Valid[i])
+      {
+        continue;
+      }
+      Vec e = Sub(s.P[f[(k + 1) % 3]], s.P[i]);
+      e = Sub(e, Scale(s.Normal[i], Dot(e, s.Normal[i])));
+      if (!Normalize(e))
+      {
+        e = Perpendicular(s.Normal[i]);
+      }
+      s.FrameU[i] = e;
+      s.FrameV[i] = Cross(s.Normal[i], e);
+      s.Framed[i] = true;
+    }
+  }
+}
+
+/** One face's second fundamental form (FE, FF, FG) in its own frame (T, B, N). */
+struct FaceForm
+{
+  Vec E[3];         // edge k, opposite corner k: E[0] = p2 - p1, E[1] = p0 - p2, E[2] = p1 - p0
+  Vec T, B, N;      // unit: along E[0], in-plane normal to it, the face normal
+  double TwiceArea; // |E[0] x E[1]|, in world units squared
+  double FE, FF, FG;
+};
+
+/**
+ * Fits the face's second fundamental form, by least squares, to the change of the vertex
+ * normals along its three edges. False for a degenerate face (no area, or a singular system,
+ * as where a parametric surface closes on itself) or a non-finite result.
+ */
+bool FitFaceForm(const Surface& s, const std::array<vtkIdType, 3>& f, FaceForm& form)
+{
+  const std::vector<Vec>& p = s.P;
+  form.E[0] = Sub(p[f[2]], p[f[1]]);
+  form.E[1] = Sub(p[f[0]], p[f[2]]);
+  form.E[2] = Sub(p[f[1]], p[f[0]]);
+  const Vec* e = form.E;
+  form.T = e[0];
+  form.N = Cross(e[0], e[1]);
+  form.TwiceArea = Norm(form.N);
+  if (!Normalize(form.T) || !Normalize(form.N))
+  {
+    return false;
+  }
+  const Vec& t = form.T;
+  form.B = Cross(form.N, t);
+  const Vec& b = form.B;
+  // Least squares for (e, f, g): [u v 0; 0 u v] x = [dn.t; dn.b] over the three edges.
+  double m[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+  double r[3] = { 0, 0, 0 };
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec dn = Sub(s.Normal[f[(k + 2) % 3]], s.Normal[f[(k + 1) % 3]]);
+    const double u = Dot(e[k], t), v = Dot(e[k], b);
+    const double du = Dot(dn, t), dv = Dot(dn, b);
+    m[0][0] += u * u;
+    m[0][1] += u * v;
+    m[1][1] += u * u + v * v;
+    m[1][2] += u * v;
+    m[2][2] += v * v;
+    r[0] += u * du;
+    r[1] += v * du + u * dv;
+    r[2] += v * dv;
+  }
+  m[1][0] = m[0][1];
+  m[2][1] = m[1][2];
+  // The system scaled to unit trace (vtkMath's pivot test is absolute: a tiny face would fail
+  // it), and a singular system skipped here, before vtkMath warns about it.
+  const double trace = m[0][0] + m[1][1] + m[2][2];
+  if (!(trace > 0.0) || !std::isfinite(trace))
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    r[i] /= trace;
+    for (int j = 0; j < 3; ++j)
+    {
+      m[i][j] /= trace;
+    }
+  }
+  if (!(std::abs(vtkMath::Determinant3x3(m)) > 1e-9))
+  {
+    return false;
+  }
+  double* rows[3] = { m[0], m[1], m[2] };
+  if (!vtkMath::SolveLinearSystem(rows, r, 3))
+  {
+    return false;
+  }
+  form.FE = r[0];
+  form.FF = r[1];
+  form.FG = r[2];
+  return std::isfinite(form.FE) && std::isfinite(form.FF) && std::isfinite(form.FG);
+}
+
+/** The mixed Voronoi areas of the face's three corners (Meyer et al. 2003), world units^2. */
+void CornerAreas(const FaceForm& form, double corner[3])
+{
+  const Vec* e = form.E;
+  const double l[3] = { Dot(e[0], e[0]), Dot(e[1], e[1]), Dot(e[2], e[2]) };
+  const double area = 0.5 * form.TwiceArea;
+  const double ew[3] = { l[0] * (l[1] + l[2] - l[0]), l[1] * (l[2] + l[0] - l[1]),
+    l[2] * (l[0] + l[1] - l[2]) };
+  if (ew[0] <= 0.0)
+  {
+    corner[0] = 0.5 * area;
+    corner[1] = corner[2] = 0.25 * area;
+  }
+  else if (ew[1] <= 0.0)
+  {
+    corner[1] = 0.5 * area;
+    corner[0] = corner[2] = 0.25 * area;
+  }
+  else if (ew[2] <= 0.0)
+  {
+    corner[2] = 0.5 * area;
+    corner[0] = corner[1] = 0.25 * area;
+  }
+  else
+  {
+    // Voronoi areas: corner k gets (|e_{k+1}|^2 cot(angle k+1) + |e_{k+2}|^2 cot(angle k+2))/8,
+    // the cotangent of the angle at corner j being -(e_{j+1} . e_{j+2}) / (2 area).
+    double cotangent[3];
+    for (int j = 0; j < 3; ++j)
+    {
+      cotangent[j] = -Dot(e[(j + 1) % 3], e[(j + 2) % 3]) / form.TwiceArea;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+      corner[k] = 0.125 * (l[k1] * cotangent[k1] + l[k2] * cotangent[k2]);
+    }
+  }
+}
+
+/**
+ * Per face: the fitted form rotated into each vertex's frame and accumulated with the vertex's
+ * mixed Voronoi area (tensor: the sums of area times (A, B, C), weight: the sums of the areas).
+ */
+void AccumulateTensors(
+  const Surface& s, std::vector<std::array<double, 3>>& tensor, std::vector<double>& weight)
+{
+  tensor.assign(s.P.size(), { 0, 0, 0 });
+  weight.assign(s.P.size(), 0.0);
+  for (const auto& f : s.Faces)
+  {
+    FaceForm form;
+    if (!s.Valid[f[0]] || !s.Valid[f[1]] || !s.Valid[f[2]] || !FitFaceForm(s, f, form))
+    {
+      continue;
+    }
+    double corner[3];
+    CornerAreas(form, corner);
+    const Vec &t = form.T, &b = form.B, &n = form.N;
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType i = f[k];
+      const double c = Dot(s.Normal[i], n);
+      if (c <= -0.999999)
+      {
+        continue; // the vertex faces away from the face: no defined rotation
+      }
+      const Vec a1 = Rotate(s.Normal[i], n, s.FrameU[i]);
+      const Vec a2 = Rotate(s.Normal[i], n, s.FrameV[i]);
+      const double au = Dot(a1, t), av = Dot(a1, b);
+      const double bu = Dot(a2, t), bv = Dot(a2, b);
+      const double w = corner[k];
+      tensor[i][0] += w * (au * au * form.FE + 2.0 * au * av * form.FF + av * av * form.FG);
+      tensor[i][1] +=
+        w * (au * bu * form.FE + (au * bv + av * bu) * form.FF + av * bv * form.FG);
+      tensor[i][2] += w * (bu * bu * form.FE + 2.0 * bu * bv * form.FF + bv * bv * form.FG);
+      weight[i] += w;
+    }
+  }
+  // The tensors per unit area, in each point's frame; zero (and no weight) where undefined.
+  for (size_t i = 0; i < s.P.size(); ++i)
+  {
+    const bool ok = weight[i] > 0.0 && s.Framed[i] &&
+      std::all_of(tensor[i].begin(), tensor[i].end(),
+        [&](double v) { return std::isfinite(v / weight[i]); });
+    for (double& v : tensor[i])
+    {
+      v = ok ? v / weight[i] : 0.0;
+    }
+    weight[i] = ok ? weight[i] : 0.0;
+  }
+}
+
+/** What the eigen decomposition of the tensors writes: the output's point-data arrays. */
+struct CurvatureArrays
+{
+  vtkSmartPointer<vtkDoubleArray> KMax, KMin, Mean, Gauss;
+  vtkSmartPointer<vtkFloatArray> DMax, DMin, Bisector, DMinAbs, DMaxAbs;
+
+  /** Every array named, with np zero tuples. */
+  explicit CurvatureArrays(vtkIdType np)
+  {
+    auto makeArray = [np](const char* name, int comps) {
+      vtkNew<vtkDoubleArray> a;
+      a->SetName(name);
+      a->SetNumberOfComponents(comps);
+      a->SetNumberOfTuples(np);
+      a->Fill(0.0);
+      return vtkSmartPointer<vtkDoubleArray>(a);
+    };
+    auto makeDirections = [np](const char* name) {
+      vtkNew<vtkFloatArray> a;
+      a->SetName(name);
+      a->SetNumberOfComponents(3);
+      a->SetNumberOfTuples(np);
+      a->Fill(0.0);
+      return vtkSmartPointer<vtkFloatArray>(a);
+    };
+    this->KMax = makeArray("PrincipalCurvatureMax", 1);
+    this->KMin = makeArray("PrincipalCurvatureMin", 1);
+    this->DMax = makeDirections("PrincipalDirectionMax");
+    this->DMin = makeDirections("PrincipalDirectionMin");
+    this->Bisector = makeDirections("PrincipalDirectionBisector");
+    this->DMinAbs = makeDirections("PrincipalDirectionMinAbs");
+    this->DMaxAbs = makeDirections("PrincipalDirectionMaxAbs");
+    this->Mean = makeArray("MeanCurvature", 1);
+    this->Gauss = makeArray("GaussianCurvature", 1);
+  }
+
+  /** Adds the arrays to pd, and marks the one of tangentDirection as its tangents. */
+  void AddTo(vtkPointData* pd, int tangentDirection) const
+  {
+    for (vtkDataArray* a : { static_cast<vtkDataArray*>(this->KMax),
+           static_cast<vtkDataArray*>(this->KMin), static_cast<vtkDataArray*>(this->DMax),
+           static_cast<vtkDataArray*>(this->DMin), static_cast<vtkDataArray*>(this->Bisector),
+           static_cast<vtkDataArray*>(this->DMinAbs), static_cast<vtkDataArray*>(this->DMaxAbs),
+           static_cast<vtkDataArray*>(this->Mean), static_cast<vtkDataArray*>(this->Gauss) })
+    {
+      pd->AddArray(a);
+    }
+    vtkFloatArray* const tangents[] = { nullptr, this->DMinAbs, this->DMaxAbs, this->DMin,
+      this->DMax, this->Bisector };
+    if (tangents[tangentDirection])
+    {
+      pd->SetTangents(tangents[tangentDirection]);
+    }
+  }
+};
+
+/**
+ * The principal curvatures and directions of each point's 2x2 tensor (A, B, C) in its frame,
+ * written to arrays. The MinAbs/MaxAbs directions stay zero at planar points (the larger |k|
+ * times diagonal not above planarTolerance) and umbilic points (k1 - k2 not above
+ * umbilicTolerance times |k1| + |k2|).
+ */
+void Decompose(const Surface& s, const std::vector<std::array<double, 3>>& tensor,
+  const std::vector<double>& weight, double diagonal, double planarTolerance,
+  double umbilicTolerance, CurvatureArrays& out)
+{
+  for (size_t i = 0; i < s.P.size(); ++i)
+  {
+    if (!(weight[i] > 0.0) || !s.Framed[i])
+    {
+      continue;
+    }
+    const double A = tensor[i][0];
+    const double B = tensor[i][1];
+    const double C = tensor[i][2];
+    if (!std::isfinite(A) || !std::isfinite(B) || !std::isfinite(C))
+    {
+      continue;
+    }
+    const double half = 0.5 * (A + C);
+    const double radius = std::hypot(0.5 * (A - C), B);
+    const double k1 = half + radius, k2 = half - radius;
+    const double theta = 0.5 * std::atan2(2.0 * B, A - C);
+    const double ct = std::cos(theta), st = std::sin(theta);
+    const Vec d1 = Add(Scale(s.FrameU[i], ct), Scale(s.FrameV[i], st));
+    const Vec d2 = Add(Scale(s.FrameU[i], -st), Scale(s.FrameV[i], ct));
+    const Vec bis = Scale(Add(d1, d2), 1.0 / std::sqrt(2.0));
+    const vtkIdType id = static_cast<vtkIdType>(i);
+    out.KMax->SetValue(id, k1);
+    out.KMin->SetValue(id, k2);
+    out.DMax->SetTuple(id, d1.data());
+    out.DMin->SetTuple(id, d2.data());
+    out.Bisector->SetTuple(id, bis.data());
+    out.Mean->SetValue(id, half);
+    out.Gauss->SetValue(id, k1 * k2);
+    const double larger = std::max(std::abs(k1), std::abs(k2));
+    const bool planar = !(larger * diagonal > planarTolerance);
+    const bool umbilic = !(k1 - k2 > umbilicTolerance * (std::abs(k1) + std::abs(k2)));
+    if (!planar && !umbilic)
+    {
+      const bool maxIsLarger = std::abs(k1) >= std::abs(k2);
+      out.DMinAbs->SetTuple(id, (maxIsLarger ? d2 : d1).data());
+      out.DMaxAbs->SetTuple(id, (maxIsLarger ? d1 : d2).data());
+    }
+  }
 }
 }
 
@@ -171,328 +581,25 @@ int vtkStylizePrincipalCurvatures::RequestData(
   // that the smoothing radius and the planar test do not depend on how the data is split.
   const double diagonal = this->DataDiagonal(input);
 
-  // Triangles of the polygons and strips (the points are unchanged).
-  vtkNew<vtkPolyData> surface;
-  surface->SetPoints(input->GetPoints());
-  surface->SetPolys(input->GetPolys());
-  surface->SetStrips(input->GetStrips());
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(surface);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  if (np > 0 && (input->GetNumberOfPolys() > 0 || input->GetNumberOfStrips() > 0))
-  {
-    triangles->Update();
-  }
-  vtkPolyData* tri = triangles->GetOutput();
-  std::vector<std::array<vtkIdType, 3>> faces;
-  if (tri && tri->GetPolys())
-  {
-    vtkCellArray* polys = tri->GetPolys();
-    vtkIdType n;
-    const vtkIdType* ids;
-    for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-    {
-      if (n == 3 && ids[0] != ids[1] && ids[1] != ids[2] && ids[0] != ids[2])
-      {
-        faces.push_back({ ids[0], ids[1], ids[2] });
-      }
-    }
-  }
-
-  std::vector<Vec> p(static_cast<size_t>(np));
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    input->GetPoint(i, p[i].data());
-  }
-
-  // Point normals: the input's, or corner-angle weighted face normals.
-  std::vector<Vec> normal(static_cast<size_t>(np), Vec{ 0, 0, 0 });
-  vtkDataArray* inNormals = input->GetPointData()->GetNormals();
-  const bool useInput =
-    this->UseInputNormals && inNormals && inNormals->GetNumberOfComponents() == 3;
-  if (useInput)
-  {
-    for (vtkIdType i = 0; i < np; ++i)
-    {
-      inNormals->GetTuple(i, normal[i].data());
-    }
-  }
-  else
-  {
-    for (const auto& f : faces)
-    {
-      Vec fn = Cross(Sub(p[f[1]], p[f[0]]), Sub(p[f[2]], p[f[0]]));
-      if (!Normalize(fn))
-      {
-        continue;
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        Vec a = Sub(p[f[(k + 1) % 3]], p[f[k]]);
-        Vec b = Sub(p[f[(k + 2) % 3]], p[f[k]]);
-        if (!Normalize(a) || !Normalize(b))
-        {
-          continue;
-        }
-        const double angle = std::acos(std::max(-1.0, std::min(1.0, Dot(a, b))));
-        normal[f[k]] = Add(normal[f[k]], Scale(fn, angle));
-      }
-    }
-  }
-  std::vector<bool> valid(static_cast<size_t>(np), false);
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    valid[i] = Normalize(normal[i]);
-  }
-
-  // Each vertex's tangent frame (u, v, normal).
-  std::vector<Vec> frameU(static_cast<size_t>(np)), frameV(static_cast<size_t>(np));
-  std::vector<bool> framed(static_cast<size_t>(np), false);
-  for (const auto& f : faces)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const vtkIdType i = f[k];
-      if (framed[i] || !valid[i])
-      {
-        continue;
-      }
-      Vec e = Sub(p[f[(k + 1) % 3]], p[i]);
-      e = Sub(e, Scale(normal[i], Dot(e, normal[i])));
-      if (!Normalize(e))
-      {
-        e = Perpendicular(normal[i]);
-      }
-      frameU[i] = e;
-      frameV[i] = Cross(normal[i], e);
-      framed[i] = true;
-    }
-  }
-
-  // Per face: the second fundamental form fitted to the normals' change along the edges, then
-  // rotated into each vertex's frame and accumulated with the vertex's mixed Voronoi area.
-  std::vector<std::array<double, 3>> tensor(static_cast<size_t>(np), { 0, 0, 0 });
-  std::vector<double> weight(static_cast<size_t>(np), 0.0);
-  for (const auto& f : faces)
-  {
-    if (!valid[f[0]] || !valid[f[1]] || !valid[f[2]])
-    {
-      continue;
-    }
-    const Vec e[3] = { Sub(p[f[2]], p[f[1]]), Sub(p[f[0]], p[f[2]]), Sub(p[f[1]], p[f[0]]) };
-    Vec t = e[0];
-    Vec n = Cross(e[0], e[1]);
-    const double twiceArea = Norm(n);
-    if (!Normalize(t) || !Normalize(n))
-    {
-      continue;
-    }
-    const Vec b = Cross(n, t);
-    // Least squares for (e, f, g): [u v 0; 0 u v] x = [dn.t; dn.b] over the three edges.
-    double m[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
-    double r[3] = { 0, 0, 0 };
-    for (int k = 0; k < 3; ++k)
-    {
-      const Vec dn = Sub(normal[f[(k + 2) % 3]], normal[f[(k + 1) % 3]]);
-      const double u = Dot(e[k], t), v = Dot(e[k], b);
-      const double du = Dot(dn, t), dv = Dot(dn, b);
-      m[0][0] += u * u;
-      m[0][1] += u * v;
-      m[1][1] += u * u + v * v;
-      m[1][2] += u * v;
-      m[2][2] += v * v;
-      r[0] += u * du;
-      r[1] += v * du + u * dv;
-      r[2] += v * dv;
-    }
-    m[1][0] = m[0][1];
-    m[2][1] = m[1][2];
-    // The system scaled to unit trace (vtkMath's pivot test is absolute: a tiny face would fail
-    // it), and a degenerate face (a singular system, as where a parametric surface closes on
-    // itself) skipped here, before vtkMath warns about it.
-    const double trace = m[0][0] + m[1][1] + m[2][2];
-    if (!(trace > 0.0) || !std::isfinite(trace))
-    {
-      continue;
-    }
-    for (int i = 0; i < 3; ++i)
-    {
-      r[i] /= trace;
-      for (int j = 0; j < 3; ++j)
-      {
-        m[i][j] /= trace;
-      }
-    }
-    if (!(std::abs(vtkMath::Determinant3x3(m)) > 1e-9))
-    {
-      continue;
-    }
-    double* rows[3] = { m[0], m[1], m[2] };
-    if (!vtkMath::SolveLinearSystem(rows, r, 3))
-    {
-      continue;
-    }
-    const double fe = r[0], ff = r[1], fg = r[2];
-    if (!std::isfinite(fe) || !std::isfinite(ff) || !std::isfinite(fg))
-    {
-      continue;
-    }
-
-    // Mixed Voronoi areas of the three corners (Meyer et al. 2003).
-    const double l[3] = { Dot(e[0], e[0]), Dot(e[1], e[1]), Dot(e[2], e[2]) };
-    const double area = 0.5 * twiceArea;
-    double corner[3];
-    const double ew[3] = { l[0] * (l[1] + l[2] - l[0]), l[1] * (l[2] + l[0] - l[1]),
-      l[2] * (l[0] + l[1] - l[2]) };
-    if (ew[0] <= 0.0)
-    {
-      corner[0] = 0.5 * area;
-      corner[1] = corner[2] = 0.25 * area;
-    }
-    else if (ew[1] <= 0.0)
-    {
-      corner[1] = 0.5 * area;
-      corner[0] = corner[2] = 0.25 * area;
-    }
-    else if (ew[2] <= 0.0)
-    {
-      corner[2] = 0.5 * area;
-      corner[0] = corner[1] = 0.25 * area;
-    }
-    else
-    {
-      // Voronoi areas: corner k gets (|e_{k+1}|^2 cot(angle k+1) + |e_{k+2}|^2 cot(angle k+2))/8,
-      // the cotangent of the angle at corner j being -(e_{j+1} . e_{j+2}) / (2 area).
-      double cotangent[3];
-      for (int j = 0; j < 3; ++j)
-      {
-        cotangent[j] = -Dot(e[(j + 1) % 3], e[(j + 2) % 3]) / twiceArea;
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-        corner[k] = 0.125 * (l[k1] * cotangent[k1] + l[k2] * cotangent[k2]);
-      }
-    }
-
-    for (int k = 0; k < 3; ++k)
-    {
-      const vtkIdType i = f[k];
-      const double c = Dot(normal[i], n);
-      if (c <= -0.999999)
-      {
-        continue; // the vertex faces away from the face: no defined rotation
-      }
-      const Vec a1 = Rotate(normal[i], n, frameU[i]);
-      const Vec a2 = Rotate(normal[i], n, frameV[i]);
-      const double au = Dot(a1, t), av = Dot(a1, b);
-      const double bu = Dot(a2, t), bv = Dot(a2, b);
-      const double w = corner[k];
-      tensor[i][0] += w * (au * au * fe + 2.0 * au * av * ff + av * av * fg);
-      tensor[i][1] += w * (au * bu * fe + (au * bv + av * bu) * ff + av * bv * fg);
-      tensor[i][2] += w * (bu * bu * fe + 2.0 * bu * bv * ff + bv * bv * fg);
-      weight[i] += w;
-    }
-  }
-
-  // The tensors per unit area, in each point's frame.
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    const bool ok = weight[i] > 0.0 && framed[i] &&
-      std::all_of(tensor[i].begin(), tensor[i].end(),
-        [&](double v) { return std::isfinite(v / weight[i]); });
-    for (double& v : tensor[i])
-    {
-      v = ok ? v / weight[i] : 0.0;
-    }
-    weight[i] = ok ? weight[i] : 0.0;
-  }
+  Surface s;
+  s.Faces = Triangles(input);
+  ComputeNormals(input, this->UseInputNormals, s);
+  ComputeFrames(s);
+  std::vector<std::array<double, 3>> tensor;
+  std::vector<double> weight;
+  AccumulateTensors(s, tensor, weight);
 
   const double smoothing =
     np > 0 && std::isfinite(diagonal) ? this->SmoothingRadius * diagonal : 0.0;
   if (smoothing > 0.0)
   {
-    tensor = this->SmoothTensors(p, normal, frameU, frameV, faces, tensor, weight, smoothing);
+    tensor = this->SmoothTensors(
+      s.P, s.Normal, s.FrameU, s.FrameV, s.Faces, tensor, weight, smoothing);
   }
 
-  auto makeArray = [np](const char* name, int comps) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->SetNumberOfComponents(comps);
-    a->SetNumberOfTuples(np);
-    a->Fill(0.0);
-    return a;
-  };
-  auto makeDirections = [np](const char* name) {
-    vtkNew<vtkFloatArray> a;
-    a->SetName(name);
-    a->SetNumberOfComponents(3);
-    a->SetNumberOfTuples(np);
-    a->Fill(0.0);
-    return a;
-  };
-  auto kMax = makeArray("PrincipalCurvatureMax", 1);
-  auto kMin = makeArray("PrincipalCurvatureMin", 1);
-  auto dMax = makeDirections("PrincipalDirectionMax");
-  auto dMin = makeDirections("PrincipalDirectionMin");
-  auto bisector = makeDirections("PrincipalDirectionBisector");
-  auto dMinAbs = makeDirections("PrincipalDirectionMinAbs");
-  auto dMaxAbs = makeDirections("PrincipalDirectionMaxAbs");
-  auto mean = makeArray("MeanCurvature", 1);
-  auto gauss = makeArray("GaussianCurvature", 1);
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    if (!(weight[i] > 0.0) || !framed[i])
-    {
-      continue;
-    }
-    const double A = tensor[i][0];
-    const double B = tensor[i][1];
-    const double C = tensor[i][2];
-    if (!std::isfinite(A) || !std::isfinite(B) || !std::isfinite(C))
-    {
-      continue;
-    }
-    const double half = 0.5 * (A + C);
-    const double radius = std::hypot(0.5 * (A - C), B);
-    const double k1 = half + radius, k2 = half - radius;
-    const double theta = 0.5 * std::atan2(2.0 * B, A - C);
-    const double ct = std::cos(theta), st = std::sin(theta);
-    const Vec d1 = Add(Scale(frameU[i], ct), Scale(frameV[i], st));
-    const Vec d2 = Add(Scale(frameU[i], -st), Scale(frameV[i], ct));
-    const Vec bis = Scale(Add(d1, d2), 1.0 / std::sqrt(2.0));
-    kMax->SetValue(i, k1);
-    kMin->SetValue(i, k2);
-    dMax->SetTuple(i, d1.data());
-    dMin->SetTuple(i, d2.data());
-    bisector->SetTuple(i, bis.data());
-    mean->SetValue(i, half);
-    gauss->SetValue(i, k1 * k2);
-    const double larger = std::max(std::abs(k1), std::abs(k2));
-    const bool planar = !(larger * diagonal > this->PlanarTolerance);
-    const bool umbilic = !(k1 - k2 > this->UmbilicTolerance * (std::abs(k1) + std::abs(k2)));
-    if (!planar && !umbilic)
-    {
-      const bool maxIsLarger = std::abs(k1) >= std::abs(k2);
-      dMinAbs->SetTuple(i, (maxIsLarger ? d2 : d1).data());
-      dMaxAbs->SetTuple(i, (maxIsLarger ? d1 : d2).data());
-    }
-  }
-  vtkPointData* pd = output->GetPointData();
-  for (vtkDataArray* a : { static_cast<vtkDataArray*>(kMax), static_cast<vtkDataArray*>(kMin),
-         static_cast<vtkDataArray*>(dMax), static_cast<vtkDataArray*>(dMin),
-         static_cast<vtkDataArray*>(bisector), static_cast<vtkDataArray*>(dMinAbs),
-         static_cast<vtkDataArray*>(dMaxAbs), static_cast<vtkDataArray*>(mean),
-         static_cast<vtkDataArray*>(gauss) })
-  {
-    pd->AddArray(a);
-  }
-  vtkFloatArray* const tangents[] = { nullptr, dMinAbs, dMaxAbs, dMin, dMax, bisector };
-  if (tangents[this->TangentDirection])
-  {
-    pd->SetTangents(tangents[this->TangentDirection]);
-  }
+  CurvatureArrays arrays(np);
+  Decompose(s, tensor, weight, diagonal, this->PlanarTolerance, this->UmbilicTolerance, arrays);
+  arrays.AddTo(output->GetPointData(), this->TangentDirection);
   return 1;
 }
 

@@ -3,52 +3,22 @@
  * @brief   Per-point principal curvatures and principal directions of a triangle mesh, by a
  *          per-face curvature-tensor fit (in the manner of Rusinkiewicz, 2004).
  *
- * For every triangle the second fundamental form is fitted, by least squares, to the change of
- * the vertex normals along its three edges. Each face's tensor is rotated into the tangent frame
- * of its three vertices and accumulated with the vertex's Voronoi (mixed) area share of the
- * face. The eigen-decomposition of each vertex's 2x2 tensor gives the principal curvatures and
- * directions.
+ * For every triangle the second fundamental form is fitted to the change of the vertex normals
+ * along its edges and accumulated at its vertices by their Voronoi area share; each vertex's
+ * 2x2 tensor, averaged over SmoothingRadius when set, gives its principal curvatures and
+ * directions. The output is the input (shallow copies) plus point-data arrays:
+ * PrincipalCurvatureMax and Min (k1 >= k2), MeanCurvature, GaussianCurvature, the unit
+ * directions PrincipalDirectionMax, Min and Bisector, and PrincipalDirectionMinAbs and MaxAbs
+ * (by absolute curvature; zero vectors at planar and umbilic points). One direction is also
+ * the active tangents (TangentDirection), which is how vtkSketchPass' model mode
+ * (DirectionSource MODEL) reads it through VTK's composite data mapper and in ParaView.
+ * Pieces with ghost cells give the values the whole mesh gives.
  *
- * Output: the input geometry and topology (shallow copies), plus these point-data arrays:
- * - "PrincipalCurvatureMax", "PrincipalCurvatureMin": k1 >= k2, in 1 / (world unit). The sign
- *   follows the normals: positive where the surface bends away from them (a sphere with
- *   outward normals has k1 = k2 = 1 / r).
- * - "PrincipalDirectionMax", "PrincipalDirectionMin": unit tangent vectors of k1 and k2. A
- *   direction is a line, so d and -d are the same.
- * - "PrincipalDirectionBisector": the unit bisector (d1 + d2) / sqrt(2) of the two directions.
- * - "PrincipalDirectionMinAbs", "PrincipalDirectionMaxAbs": unit tangent vectors of the
- *   principal curvature of the smaller and of the larger **absolute value**: along and around a
- *   cylinder, whether it is convex or concave (the signed k2 of a concave cylinder runs around
- *   it). This is the convention of vtkSketchPass' MINIMUM and MAXIMUM, in screen and in model
- *   mode. Zero vectors where there is no principal direction: planar points (the larger |k|
- *   times the input's diagonal below PlanarTolerance) and umbilic points (|k1 - k2|
- *   below UmbilicTolerance times |k1| + |k2|); the sketch pass estimates those in screen space.
- * - "MeanCurvature" (k1 + k2) / 2 and "GaussianCurvature" k1 k2.
- * The direction arrays are single-precision (vtkFloatArray: unit vectors, as the GPU reads them),
- * the curvatures double. One direction array is also the point data's active tangents
- * (TangentDirection): that is how a direction reaches the GPU through VTK's composite data mapper,
- * and so in ParaView (vtkSketchPass's model mode reads it there).
- *
- * Pieces: the filter asks its input for one more ghost level, so each point of a piece has its
- * whole ring of faces, and takes the object's size over all processes (Controller): a piece
- * gives the values the whole mesh gives, except that smoothing beyond the ghost ring is
- * one-sided at a piece's boundary.
- *
- * Scale: with a SmoothingRadius above 0, each point's tensor is the average of the tensors of
- * the points around it (reached through the mesh's edges, within the radius), transported into
- * its tangent frame and weighted by their areas and a Gaussian of the distance: the curvature
- * at the shape's scale rather than at the scan noise's.
- *
- * Point normals are taken from the input's point normals when it has them (and
- * UseInputNormals is on), otherwise computed (face normals weighted by the corner angle). Only
- * polygons and triangle strips are used (triangulated); points of no polygon get zeros.
- * Degenerate triangles are skipped. No output value is NaN or infinite.
- *
- * The estimate is exact for the quadratic part of the surface up to the normals' accuracy.
- * At umbilic points (k1 = k2, e.g. everywhere on a sphere) the directions are arbitrary.
- *
+ * Method and conventions (signs, tolerances, pieces, smoothing): docs/algorithms.md section 3.
  * Reference: S. Rusinkiewicz, "Estimating Curvatures and Their Derivatives on Triangle Meshes",
  * 3DPVT 2004. This is an independent implementation under the project's licence.
+ *
+ * @sa vtkSketchPass vtkCurvatures
  */
 
 #ifndef vtkStylizePrincipalCurvatures_h

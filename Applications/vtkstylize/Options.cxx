@@ -263,39 +263,30 @@ Pass* Defaults()
   return pass;
 }
 
-const char* GroupOf(const vtkStylizeLightingPass*)
+/**
+ * The --help group of a pass class's options, and the --style they apply to (none for the
+ * lighting: every style).
+ */
+struct PassGroup
 {
-  return "Lighting";
+  const char* Group;
+  const char* Style;
+};
+PassGroup GroupOf(const vtkStylizeLightingPass*)
+{
+  return { "Lighting", nullptr };
 }
-const char* GroupOf(const vtkComicPass*)
+PassGroup GroupOf(const vtkComicPass*)
 {
-  return "Comic (--style comic)";
+  return { "Comic (--style comic)", "comic" };
 }
-const char* GroupOf(const vtkPixelArtPass*)
+PassGroup GroupOf(const vtkPixelArtPass*)
 {
-  return "Pixel art (--style pixel)";
+  return { "Pixel art (--style pixel)", "pixel" };
 }
-const char* GroupOf(const vtkSketchPass*)
+PassGroup GroupOf(const vtkSketchPass*)
 {
-  return "Sketch (--style sketch)";
-}
-
-/** The --style a pass class's options apply to (none for the lighting: every style). */
-const char* StyleOf(const vtkStylizeLightingPass*)
-{
-  return nullptr;
-}
-const char* StyleOf(const vtkComicPass*)
-{
-  return "comic";
-}
-const char* StyleOf(const vtkPixelArtPass*)
-{
-  return "pixel";
-}
-const char* StyleOf(const vtkSketchPass*)
-{
-  return "sketch";
+  return { "Sketch (--style sketch)", "sketch" };
 }
 
 /**
@@ -334,6 +325,8 @@ public:
   {
     Pass* d = Defaults<Pass>();
     const T lo = (d->*min)(), hi = (d->*max)();
+    // An option two styles share checks its range once (the styles' ranges are the same).
+    const bool shared = this->Entries.count(name) != 0;
     CLI::Option* o = this->PassOption<Pass>(name, metavar, help, FormatValue((d->*get)()),
       [set](Pass* p, const std::string& v) {
         double x = 0.0;
@@ -348,7 +341,10 @@ public:
         }
         (p->*set)(static_cast<T>(x));
       });
-    o->check(NumberIn(lo, hi, std::is_integral<T>::value));
+    if (!shared)
+    {
+      o->check(NumberIn(lo, hi, std::is_integral<T>::value));
+    }
   }
 
   /** An on/off setting of a pass: the option sets it to `value`. */
@@ -507,15 +503,16 @@ private:
     auto found = this->Entries.find(name);
     if (found == this->Entries.end())
     {
-      CLI::Option* o = this->Add(name, metavar, text, GroupOf(static_cast<Pass*>(nullptr)), action);
-      if (const char* style = StyleOf(static_cast<Pass*>(nullptr)))
+      CLI::Option* o =
+        this->Add(name, metavar, text, GroupOf(static_cast<Pass*>(nullptr)).Group, action);
+      if (const char* style = GroupOf(static_cast<Pass*>(nullptr)).Style)
       {
         this->Entries[name].Styles.insert(style);
       }
       return o;
     }
     Entry& e = found->second;
-    if (const char* style = StyleOf(static_cast<Pass*>(nullptr)))
+    if (const char* style = GroupOf(static_cast<Pass*>(nullptr)).Style)
     {
       e.Styles.insert(style);
     }
@@ -583,6 +580,7 @@ std::string StyleNames(const char* separator)
 }
 
 /** The program's own options and those a pass setting cannot express alone. */
+// size: table
 void AddProgramOptions(OptionTable& t)
 {
   const Options o; // default values
@@ -677,7 +675,7 @@ void AddProgramOptions(OptionTable& t)
      [](Options& opt, const std::string& v) { opt.FramesPerSecond = std::atoi(v.c_str()); })
     ->check(NumberIn(1, 100, true));
   t.Value("--zoom", "F",
-     "camera zoom factor, after a file's data is fitted to fill " +
+     "camera zoom factor, after the scene is fitted to fill " +
        FormatNumber(100 * FrameFill) + "% of the image's width or height (default: " +
        FormatNumber(o.Zoom) + ")",
      general,
@@ -783,7 +781,7 @@ void AddProgramOptions(OptionTable& t)
   t.Value("--palette", "levels|grays|1bit|4grays|16|custom|colormap",
      "pixel: levels per channel, grays, black and white, 4 grays, the 16-colour DawnBringer "
      "palette, the --colors list, or the data's colormap (default: levels)",
-     GroupOf(static_cast<P*>(nullptr)),
+     GroupOf(static_cast<P*>(nullptr)).Group,
      [palettes](Options& opt, const std::string& v) {
        for (const auto& p : palettes)
        {
@@ -797,7 +795,7 @@ void AddProgramOptions(OptionTable& t)
   t.Value("--colors", "LIST",
      "pixel: the custom palette: colours (R,G,B or #rrggbb) separated by spaces or ';', at most "
      "256; selects --palette custom",
-     GroupOf(static_cast<P*>(nullptr)),
+     GroupOf(static_cast<P*>(nullptr)).Group,
      [](Options& opt, const std::string& v) {
        std::string error;
        const auto colours = ParseColorList(v, error);
@@ -823,16 +821,6 @@ void AddProgramOptions(OptionTable& t)
 /** What some generated options also do beyond setting their pass. */
 void AddOptionEffects(OptionTable& t)
 {
-  // The sketch's reference height: 0 means window pixels (the pass needs at least 1).
-  t.Also("--reference-height", [](Options& opt, const std::string& v) {
-    const double value = std::strtod(v.c_str(), nullptr);
-    opt.Passes.SketchWindowPoints = value == 0.0;
-    if (value != 0.0)
-    {
-      opt.Passes.Of<vtkSketchPass>().push_back(
-        [value](vtkSketchPass* p) { p->SetReferenceHeight(value); });
-    }
-  }, "sketch");
   // The program computes the principal directions only when the pass uses them.
   t.Also("--direction-source",
     [](Options& opt, const std::string& v) { opt.ModelDirections = v == "model"; });
@@ -966,12 +954,7 @@ const std::vector<StyleSpec>& Styles()
       vtkStylizeLightingPass::STANDARD,
       [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
         const Options& opt) -> vtkSmartPointer<vtkRenderPass> {
-        auto sketch = MakeStyle<vtkSketchPass>(lighting, opt);
-        if (opt.Passes.SketchWindowPoints && opt.Height > 0)
-        {
-          sketch->SetReferenceHeight(opt.Height);
-        }
-        return sketch;
+        return MakeStyle<vtkSketchPass>(lighting, opt);
       } },
   };
   return styles;

@@ -221,29 +221,24 @@ void CollectParts(vtkDataObject* data, const std::optional<double>& isoValue,
 {
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
   {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    it->SkipEmptyNodesOn();
-    int index = 0;
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem(), ++index)
-    {
-      vtkDataObject* leaf = it->GetCurrentDataObject();
-      const std::string name = vtkStylizeReader::GetBlockName(it, index);
-      if (vtkCompositeDataSet::SafeDownCast(leaf))
-      {
-        CollectParts(leaf, isoValue, what, parts);
-        continue;
-      }
-      auto* ds = vtkDataSet::SafeDownCast(leaf);
-      if (!ds)
-      {
-        Fail(what + ": block " + Quote(name) + " is a " + leaf->GetClassName() +
-          ", which cannot be rendered");
-      }
-      Part part{ name, nullptr, std::nullopt };
-      part.Surface = ToSurface(ds, isoValue, what + " (block " + Quote(name) + ")", part.Contour);
-      parts.push_back(part);
-    }
+    vtkStylizeReader::ForEachBlock(
+      composite, [&](vtkCompositeDataIterator* it, const std::string& name) {
+        vtkDataObject* leaf = it->GetCurrentDataObject();
+        if (vtkCompositeDataSet::SafeDownCast(leaf))
+        {
+          CollectParts(leaf, isoValue, what, parts);
+          return;
+        }
+        auto* ds = vtkDataSet::SafeDownCast(leaf);
+        if (!ds)
+        {
+          Fail(what + ": block " + Quote(name) + " is a " + leaf->GetClassName() +
+            ", which cannot be rendered");
+        }
+        Part part{ name, nullptr, std::nullopt };
+        part.Surface = ToSurface(ds, isoValue, what + " (block " + Quote(name) + ")", part.Contour);
+        parts.push_back(part);
+      });
     return;
   }
   auto* ds = vtkDataSet::SafeDownCast(data);

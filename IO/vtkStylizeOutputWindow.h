@@ -21,12 +21,12 @@
 #define vtkStylizeOutputWindow_h
 
 #include "vtkOutputWindow.h"
-#include "vtkStylizeFiltersModule.h" // for export macro
+#include "vtkStylizeIOModule.h" // for export macro
 
 #include <string> // for std::string
 #include <vector> // for std::vector
 
-class VTKSTYLIZEFILTERS_EXPORT vtkStylizeOutputWindow : public vtkOutputWindow
+class VTKSTYLIZEIO_EXPORT vtkStylizeOutputWindow : public vtkOutputWindow
 {
 public:
   static vtkStylizeOutputWindow* New();

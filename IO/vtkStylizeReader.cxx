@@ -1,83 +1,50 @@
 #include "vtkStylizeReader.h"
+#include "vtkStylizeReaderInternal.h"
 
 #include "vtkStylizeFileChecks.h"
 #include "vtkStylizeOutputWindow.h"
 
 #include "vtkAlgorithm.h"
-#include "vtkCellArray.h"
-#include "vtkCellData.h"
-#include "vtkCellType.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
-#include "vtkDataArray.h"
 #include "vtkDataSet.h"
-#include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
 #include "vtkExodusIIReader.h"
-#include "vtkExtractCells.h"
+#include "vtkGenericDataObjectReader.h"
 #include "vtkGenericEnSightReader.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLogger.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenFOAMReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPolyData.h"
+#include "vtkSTLReader.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkXMLDataElement.h"
 #include "vtkXMLDataParser.h"
+#include "vtkXMLImageDataReader.h"
+#include "vtkXMLMultiBlockDataReader.h"
 #include "vtkXMLPImageDataReader.h"
 #include "vtkXMLPPolyDataReader.h"
 #include "vtkXMLPRectilinearGridReader.h"
 #include "vtkXMLPStructuredGridReader.h"
 #include "vtkXMLPUnstructuredGridReader.h"
-#include "vtkFloatArray.h"
-#include "vtkGenericDataObjectReader.h"
-#include "vtkIdList.h"
-#include "vtkImageData.h"
-#include "vtkInformation.h"
-#include "vtkNew.h"
-#include "vtkOBJReader.h"
-#include "vtkPLY.h"
-#include "vtkPLYReader.h"
-#include "vtkPointData.h"
-#include "vtkPointSet.h"
-#include "vtkPoints.h"
-#include "vtkPolyData.h"
-#include "vtkRectilinearGrid.h"
-#include "vtkSTLReader.h"
-#include "vtkTriangleFilter.h"
-#include "vtkStructuredGrid.h"
-#include "vtkUnsignedCharArray.h"
-#include "vtkUnstructuredGrid.h"
-#include "vtkXMLImageDataReader.h"
-#include "vtkXMLMultiBlockDataReader.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLRectilinearGridReader.h"
 #include "vtkXMLStructuredGridReader.h"
 #include "vtkXMLUnstructuredGridReader.h"
-#include <algorithm>
-#include <cerrno>
-#include <cstddef>
-#include <cstdlib>
-#include <cmath>
-#include <cstring>
-#include <fstream>
-#include <functional>
-#include <iterator>
-#include <map>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-#include "vtkInformationVector.h"
-#include "vtkLogger.h"
-#include "vtkMultiBlockDataSet.h"
-#include "vtkObjectFactory.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstddef>
 #include <cstdlib>
-#include <cmath>
 #include <cstring>
 #include <exception>
-#include <fstream>
 #include <functional>
-#include <iterator>
 #include <map>
 #include <new>
 
@@ -87,23 +54,22 @@
 
 vtkStandardNewMacro(vtkStylizeReader);
 
+namespace vtkStylizeReaderInternal
+{
 namespace
 {
-/** Thrown by every check; RequestData turns it into the reader's error. */
-struct ReadFailure
-{
-  std::string Message;
-};
+/** The warnings of the update in progress, and the window capturing VTK's messages. */
+std::vector<std::string>* CurrentWarnings = nullptr;
+vtkStylizeOutputWindow* Capture = nullptr;
+} // namespace
 
-[[noreturn]] void Fail(const std::string& message)
+//------------------------------------------------------------------------------
+void Fail(const std::string& message)
 {
   throw ReadFailure{ message };
 }
 
-/** The warnings of the update in progress, and the window capturing VTK's messages. */
-std::vector<std::string>* CurrentWarnings = nullptr;
-vtkStylizeOutputWindow* Capture = nullptr;
-
+//------------------------------------------------------------------------------
 void Warn(const std::string& message)
 {
   if (CurrentWarnings)
@@ -112,19 +78,13 @@ void Warn(const std::string& message)
   }
 }
 
+//------------------------------------------------------------------------------
 std::string Quote(const std::string& text)
 {
   return "'" + text + "'";
 }
 
-std::string Lower(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
-/** Forgets the messages VTK's readers reported so far. */
+//------------------------------------------------------------------------------
 void ClearVTKErrors()
 {
   if (Capture)
@@ -133,13 +93,25 @@ void ClearVTKErrors()
   }
 }
 
-/** Fails with what + ": " + the first failure VTK reported since ClearVTKErrors(). */
+//------------------------------------------------------------------------------
 void CheckVTKErrors(const std::string& what)
 {
   if (Capture && Capture->HasFailure())
   {
     Fail(what + ": " + Capture->GetFirstFailure());
   }
+}
+} // namespace vtkStylizeReaderInternal
+
+namespace
+{
+using namespace vtkStylizeReaderInternal;
+
+std::string Lower(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
 }
 
 /**
@@ -322,7 +294,6 @@ void CheckInputFile(const std::string& path, bool allowEmpty = false)
   }
 }
 
-/**
 /** The XML claims check, then the given one. */
 template <std::string (*Next)(const std::string&)>
 std::string ClaimsThen(const std::string& path)
@@ -359,33 +330,6 @@ std::string StructuralCheck(const std::string& path)
   return problem;
 }
 
-/** Whether path is an ASCII PLY file whose last byte is not a newline. */
-bool ASCIIPLYWithoutLastNewline(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  bool ascii = false;
-  for (int i = 0; i < 64 && std::getline(in, line); ++i)
-  {
-    if (line.compare(0, 12, "format ascii") == 0)
-    {
-      ascii = true;
-      break;
-    }
-    if (line.compare(0, 10, "end_header") == 0)
-    {
-      break;
-    }
-  }
-  if (!ascii)
-  {
-    return false;
-  }
-  in.clear();
-  in.seekg(-1, std::ios::end);
-  char last = '\n';
-  return in.get(last) && last != '\n';
-}
 
 /** path's folder with a slash ("" for a bare name). */
 std::string Folder(const std::string& path)
@@ -522,178 +466,6 @@ std::string StepsText(std::size_t n)
   return n == 1 ? "1 time step" : std::to_string(n) + " time steps";
 }
 
-/** Whether the PLY file's header declares an element "tristrips". */
-bool HasPLYStrips(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  while (std::getline(in, line) && line.compare(0, 10, "end_header") != 0)
-  {
-    if (line.compare(0, 18, "element tristrips ") == 0)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-// Records that vtkPLY fills (as vtkPLYReader's own plyVertex and plyFace).
-struct PLYStripVertex
-{
-  float X[3];
-};
-struct PLYIndexList
-{
-  int Count;
-  int* Indices; // allocated by vtkPLY (malloc), freed here
-};
-
-/**
- * Reads a PLY file whose surface is stored as triangle strips, which VTK 9.1's vtkPLYReader does
- * not read: with VTK's own low-level PLY API (vtkPLY, as vtkPLYReader uses it for faces), the
- * vertices (x, y, z), the strips (element "tristrips", list "vertex_indices", -1 between two
- * strips) and any faces (element "face"), as a polydata of triangles (vtkTriangleFilter). Indices
- * outside the vertices fail with one line.
- */
-vtkSmartPointer<vtkDataObject> ReadPLYStrips(const std::string& path, const std::string& what)
-{
-  int elementCount = 0;
-  char** elementNames = nullptr;
-  PlyFile* ply = nullptr;
-  if (ASCIIPLYWithoutLastNewline(path))
-  {
-    // (vtkPLY's ASCII reader needs a newline after the last line: read from memory with one)
-    std::ifstream in(path, std::ios::binary);
-    std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    content += '\n';
-    ply = vtkPLY::ply_open_for_reading_from_string(content, &elementCount, &elementNames);
-  }
-  else
-  {
-    ply = vtkPLY::ply_open_for_reading(path.c_str(), &elementCount, &elementNames);
-  }
-  if (!ply)
-  {
-    Fail(what + ": not a readable PLY file");
-  }
-  PlyProperty vertexProps[] = {
-    { "x", PLY_FLOAT, PLY_FLOAT, static_cast<int>(offsetof(PLYStripVertex, X)), 0, 0, 0, 0 },
-    { "y", PLY_FLOAT, PLY_FLOAT, static_cast<int>(offsetof(PLYStripVertex, X) + sizeof(float)), 0,
-      0, 0, 0 },
-    { "z", PLY_FLOAT, PLY_FLOAT, static_cast<int>(offsetof(PLYStripVertex, X) + 2 * sizeof(float)),
-      0, 0, 0, 0 },
-  };
-  PlyProperty listProp = { "vertex_indices", PLY_INT, PLY_INT,
-    static_cast<int>(offsetof(PLYIndexList, Indices)), 1, PLY_INT, PLY_INT,
-    static_cast<int>(offsetof(PLYIndexList, Count)) };
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
-  vtkNew<vtkCellArray> strips;
-  vtkNew<vtkCellArray> polys;
-  std::string problem;
-  int pointCount = 0;
-  for (int e = 0; e < elementCount && problem.empty(); ++e)
-  {
-    char* name = elementNames[e];
-    int count = 0, propertyCount = 0;
-    PlyElement* element = vtkPLY::ply_get_element_description(ply, name, &count, &propertyCount);
-    if (!element || count < 0)
-    {
-      problem = "bad element '" + std::string(name ? name : "") + "'";
-      break;
-    }
-    int index = 0;
-    const std::string elementName = name;
-    const bool vertices = elementName == "vertex";
-    const bool lists = (elementName == "tristrips" || elementName == "face") &&
-      vtkPLY::find_property(element, "vertex_indices", &index) &&
-      element->props[index]->is_list == PLY_LIST;
-    if (vertices)
-    {
-      vtkPLY::ply_get_element_setup(ply, name, 3, vertexProps);
-      pointCount = count;
-      points->SetNumberOfPoints(count);
-      for (int i = 0; i < count; ++i)
-      {
-        PLYStripVertex v{};
-        vtkPLY::ply_get_element(ply, &v);
-        points->SetPoint(i, v.X);
-      }
-      continue;
-    }
-    if (!lists)
-    {
-      // Any other element is read and dropped, to get to the next one.
-      vtkPLY::ply_get_element_setup(ply, name, 0, nullptr);
-      std::vector<char> ignored(1024);
-      for (int i = 0; i < count; ++i)
-      {
-        vtkPLY::ply_get_element(ply, ignored.data());
-      }
-      continue;
-    }
-    vtkPLY::ply_get_element_setup(ply, name, 1, &listProp);
-    const bool isStrips = elementName == "tristrips";
-    std::vector<vtkIdType> ids;
-    for (int i = 0; i < count; ++i)
-    {
-      PLYIndexList list{ 0, nullptr };
-      vtkPLY::ply_get_element(ply, &list);
-      // One list: strips separated by -1 (tristrips), or one polygon (face).
-      ids.clear();
-      for (int k = 0; k <= list.Count && problem.empty(); ++k)
-      {
-        const int id = k < list.Count ? list.Indices[k] : -1;
-        if (id == -1 && isStrips)
-        {
-          if (ids.size() >= 3)
-          {
-            strips->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-          }
-          ids.clear();
-        }
-        else if (id >= 0 && id < pointCount)
-        {
-          ids.push_back(id);
-        }
-        else if (k < list.Count)
-        {
-          problem = std::string(isStrips ? "a triangle strip" : "a face") + " references vertex " +
-            std::to_string(id) + " but there are " + std::to_string(pointCount) + " vertices";
-        }
-      }
-      if (!isStrips && problem.empty() && ids.size() >= 3)
-      {
-        polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-      }
-      std::free(list.Indices); // allocated by vtkPLY's get_element
-    }
-  }
-  for (int e = 0; e < elementCount; ++e)
-  {
-    std::free(elementNames[e]); // allocated by ply_open_for_reading
-  }
-  std::free(elementNames);
-  vtkPLY::ply_close(ply);
-  if (!problem.empty())
-  {
-    Fail(what + ": " + problem);
-  }
-  vtkNew<vtkPolyData> surface;
-  surface->SetPoints(points);
-  surface->SetStrips(strips);
-  surface->SetPolys(polys);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(surface);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  ClearVTKErrors();
-  triangles->Update();
-  CheckVTKErrors(what + ": triangulating the strips failed");
-  vtkSmartPointer<vtkPolyData> result = vtkSmartPointer<vtkPolyData>::New();
-  result->ShallowCopy(triangles->GetOutput());
-  return result;
-}
 
 vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
 {
@@ -741,11 +513,8 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
   {
     // VTK 9.1's reader frees a line twice (abort) when an ASCII file does not end with a
     // newline: it reads the file from memory with one added.
-    std::ifstream in(path, std::ios::binary);
-    std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    content += '\n';
     auto* ply = vtkPLYReader::SafeDownCast(reader);
-    ply->SetInputString(content);
+    ply->SetInputString(ContentWithLastNewline(path));
     ply->ReadFromInputStringOn();
   }
   reader->UpdateInformation();
@@ -785,325 +554,6 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
   data->ShallowCopy(output);
   return data;
 }
-
-/** Checks that every cell of the cell array references existing points. */
-void CheckCells(vtkCellArray* cells, vtkIdType numberOfPoints, const std::string& what)
-{
-  if (!cells || cells->GetNumberOfCells() == 0)
-  {
-    return;
-  }
-  if (!cells->IsValid())
-  {
-    Fail(what + ": corrupt cell connectivity");
-  }
-  vtkDataArray* connectivity = cells->GetConnectivityArray();
-  double range[2];
-  connectivity->GetRange(range, 0);
-  if (connectivity->GetNumberOfTuples() > 0 &&
-    (range[0] < 0 || range[1] >= static_cast<double>(numberOfPoints)))
-  {
-    Fail(what + ": a cell references point " +
-      std::to_string(static_cast<long long>(range[0] < 0 ? range[0] : range[1])) + " but there are " +
-      std::to_string(static_cast<long long>(numberOfPoints)) + " points");
-  }
-}
-
-/**
- * Number of points a cell type needs: exactly Size, or at least Size when AtLeast. Types not
- * listed (and VTK_POLYHEDRON without faces) are rejected, since the surface filter would read
- * outside the connectivity for them.
- */
-struct CellSize
-{
-  int Size;
-  bool AtLeast;
-};
-
-bool CellTypeSize(int type, CellSize& size)
-{
-  static const std::map<int, CellSize> sizes = { { VTK_EMPTY_CELL, { 0, false } },
-    { VTK_VERTEX, { 1, false } }, { VTK_POLY_VERTEX, { 1, true } }, { VTK_LINE, { 2, false } },
-    { VTK_POLY_LINE, { 2, true } }, { VTK_TRIANGLE, { 3, false } },
-    { VTK_TRIANGLE_STRIP, { 3, true } }, { VTK_POLYGON, { 3, true } },
-    { VTK_PIXEL, { 4, false } }, { VTK_QUAD, { 4, false } }, { VTK_TETRA, { 4, false } },
-    { VTK_VOXEL, { 8, false } }, { VTK_HEXAHEDRON, { 8, false } }, { VTK_WEDGE, { 6, false } },
-    { VTK_PYRAMID, { 5, false } }, { VTK_PENTAGONAL_PRISM, { 10, false } },
-    { VTK_HEXAGONAL_PRISM, { 12, false } }, { VTK_QUADRATIC_EDGE, { 3, false } },
-    { VTK_QUADRATIC_TRIANGLE, { 6, false } }, { VTK_QUADRATIC_QUAD, { 8, false } },
-    { VTK_QUADRATIC_TETRA, { 10, false } }, { VTK_QUADRATIC_HEXAHEDRON, { 20, false } },
-    { VTK_QUADRATIC_WEDGE, { 15, false } }, { VTK_QUADRATIC_PYRAMID, { 13, false } },
-    { VTK_BIQUADRATIC_QUAD, { 9, false } }, { VTK_TRIQUADRATIC_HEXAHEDRON, { 27, false } },
-    { VTK_QUADRATIC_LINEAR_QUAD, { 6, false } }, { VTK_QUADRATIC_LINEAR_WEDGE, { 12, false } },
-    { VTK_BIQUADRATIC_QUADRATIC_WEDGE, { 18, false } },
-    { VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON, { 24, false } },
-    { VTK_BIQUADRATIC_TRIANGLE, { 7, false } }, { VTK_CUBIC_LINE, { 4, false } },
-    { VTK_QUADRATIC_POLYGON, { 6, true } }, { VTK_TRIQUADRATIC_PYRAMID, { 19, false } },
-    { VTK_CONVEX_POINT_SET, { 1, true } }, { VTK_POLYHEDRON, { 1, true } },
-    { VTK_LAGRANGE_CURVE, { 2, true } }, { VTK_LAGRANGE_TRIANGLE, { 3, true } },
-    { VTK_LAGRANGE_QUADRILATERAL, { 4, true } }, { VTK_LAGRANGE_TETRAHEDRON, { 4, true } },
-    { VTK_LAGRANGE_HEXAHEDRON, { 8, true } }, { VTK_LAGRANGE_WEDGE, { 6, true } },
-    { VTK_LAGRANGE_PYRAMID, { 5, true } }, { VTK_BEZIER_CURVE, { 2, true } },
-    { VTK_BEZIER_TRIANGLE, { 3, true } }, { VTK_BEZIER_QUADRILATERAL, { 4, true } },
-    { VTK_BEZIER_TETRAHEDRON, { 4, true } }, { VTK_BEZIER_HEXAHEDRON, { 8, true } },
-    { VTK_BEZIER_WEDGE, { 6, true } }, { VTK_BEZIER_PYRAMID, { 5, true } } };
-  const auto it = sizes.find(type);
-  if (it == sizes.end())
-  {
-    return false;
-  }
-  size = it->second;
-  return true;
-}
-
-/** Checks the cell types of an unstructured grid and their numbers of points. */
-void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
-{
-  vtkCellArray* cells = ug->GetCells();
-  vtkUnsignedCharArray* types = ug->GetCellTypesArray();
-  const vtkIdType numberOfCells = cells ? cells->GetNumberOfCells() : 0;
-  if (numberOfCells == 0)
-  {
-    return;
-  }
-  if (!types || types->GetNumberOfTuples() != numberOfCells)
-  {
-    Fail(what + ": the numbers of cells and cell types differ");
-  }
-  for (vtkIdType i = 0; i < numberOfCells; ++i)
-  {
-    const int type = types->GetValue(i);
-    const vtkIdType npts = cells->GetCellSize(i);
-    CellSize size{ 0, false };
-    if (!CellTypeSize(type, size) || (type == VTK_POLYHEDRON && !ug->GetFaces()))
-    {
-      Fail(what + ": cell " + std::to_string(static_cast<long long>(i)) + " has an invalid or " +
-        "unsupported cell type " + std::to_string(type));
-    }
-    if (size.AtLeast ? npts < size.Size : npts != size.Size)
-    {
-      Fail(what + ": cell " + std::to_string(static_cast<long long>(i)) + " of type " +
-        std::to_string(type) + " has " + std::to_string(static_cast<long long>(npts)) +
-        " points, expected " + (size.AtLeast ? "at least " : "") + std::to_string(size.Size));
-    }
-  }
-}
-
-/** True when every component of the array is a finite number. */
-bool AllFinite(vtkDataArray* array)
-{
-  const vtkIdType count = array->GetNumberOfValues();
-  if (auto* f = vtkFloatArray::FastDownCast(array))
-  {
-    const float* p = f->GetPointer(0);
-    return std::all_of(p, p + count, [](float v) { return std::isfinite(v); });
-  }
-  if (auto* d = vtkDoubleArray::FastDownCast(array))
-  {
-    const double* p = d->GetPointer(0);
-    return std::all_of(p, p + count, [](double v) { return std::isfinite(v); });
-  }
-  const int nc = array->GetNumberOfComponents();
-  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < nc; ++c)
-    {
-      if (!std::isfinite(array->GetComponent(i, c)))
-      {
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
-/** Rejects datasets whose structure would make the filters or the mapper read out of bounds. */
-void ValidateDataSet(vtkDataSet* ds, const std::string& what)
-{
-  const vtkIdType n = ds->GetNumberOfPoints();
-  if (auto* pd = vtkPolyData::SafeDownCast(ds))
-  {
-    CheckCells(pd->GetVerts(), n, what);
-    CheckCells(pd->GetLines(), n, what);
-    CheckCells(pd->GetPolys(), n, what);
-    CheckCells(pd->GetStrips(), n, what);
-  }
-  else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds))
-  {
-    CheckCells(ug->GetCells(), n, what);
-    CheckCellTypes(ug, what);
-  }
-  else if (auto* sg = vtkStructuredGrid::SafeDownCast(ds))
-  {
-    int dims[3];
-    sg->GetDimensions(dims);
-    if (static_cast<double>(dims[0]) * dims[1] * dims[2] != static_cast<double>(n))
-    {
-      Fail(what + ": the structured grid has " + std::to_string(static_cast<long long>(n)) +
-        " points but its dimensions are " + std::to_string(dims[0]) + "x" +
-        std::to_string(dims[1]) + "x" + std::to_string(dims[2]));
-    }
-  }
-  else if (auto* rg = vtkRectilinearGrid::SafeDownCast(ds))
-  {
-    int dims[3];
-    rg->GetDimensions(dims);
-    vtkDataArray* coordinates[3] = { rg->GetXCoordinates(), rg->GetYCoordinates(),
-      rg->GetZCoordinates() };
-    for (int i = 0; i < 3; ++i)
-    {
-      if (!coordinates[i] || coordinates[i]->GetNumberOfTuples() != dims[i])
-      {
-        Fail(what + ": the rectilinear grid's " + std::string(1, static_cast<char>('x' + i)) +
-          " coordinates do not match its dimensions");
-      }
-    }
-  }
-  // Array sizes: a point or cell array shorter than the dataset is corrupt.
-  for (int a = 0; a < ds->GetPointData()->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* array = ds->GetPointData()->GetAbstractArray(a);
-    if (array && array->GetNumberOfTuples() < n)
-    {
-      Fail(what + ": point array " + Quote(array->GetName() ? array->GetName() : "") +
-        " is shorter than the number of points");
-    }
-  }
-  for (int a = 0; a < ds->GetCellData()->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* array = ds->GetCellData()->GetAbstractArray(a);
-    if (array && array->GetNumberOfTuples() < ds->GetNumberOfCells())
-    {
-      Fail(what + ": cell array " + Quote(array->GetName() ? array->GetName() : "") +
-        " is shorter than the number of cells");
-    }
-  }
-  // Coordinates: GetBounds() skips NaN, so look at every explicit point (the points that are not
-  // finite were dropped with their cells before: see WithoutNonFinitePoints()).
-  if (auto* ps = vtkPointSet::SafeDownCast(ds))
-  {
-    if (ps->GetPoints() && !AllFinite(ps->GetPoints()->GetData()))
-    {
-      Fail(what + ": point coordinates are not finite (NaN or infinity)");
-    }
-  }
-  if (n > 0)
-  {
-    double bounds[6];
-    ds->GetBounds(bounds);
-    for (double b : bounds)
-    {
-      if (!std::isfinite(b))
-      {
-        Fail(what + ": point coordinates are not finite");
-      }
-    }
-  }
-}
-
-/**
- * The point set without its points whose coordinates are not finite (NaN or infinity) and the
- * cells that use them, with a warning; ds itself when all are finite. Fails when no point is
- * finite, or when no cell is left of a dataset that had cells. The connectivity is checked first
- * (a cell may not name a point that does not exist).
- */
-vtkSmartPointer<vtkDataSet> WithoutNonFinitePoints(vtkDataSet* ds, const std::string& what)
-{
-  auto* ps = vtkPointSet::SafeDownCast(ds);
-  vtkDataArray* coordinates = ps && ps->GetPoints() ? ps->GetPoints()->GetData() : nullptr;
-  if (!coordinates || AllFinite(coordinates))
-  {
-    return ds;
-  }
-  const vtkIdType n = ds->GetNumberOfPoints();
-  std::vector<char> bad(static_cast<std::size_t>(n), 0);
-  vtkIdType badPoints = 0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    coordinates->GetTuple(i, p);
-    bad[i] = !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
-    badPoints += bad[i];
-  }
-  if (badPoints == n)
-  {
-    Fail(what + ": no point has finite coordinates (all are NaN or infinity)");
-  }
-  if (auto* pd = vtkPolyData::SafeDownCast(ds))
-  {
-    for (vtkCellArray* cells : { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() })
-    {
-      CheckCells(cells, n, what);
-    }
-  }
-  else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds))
-  {
-    CheckCells(ug->GetCells(), n, what);
-  }
-  vtkNew<vtkIdList> keep;
-  vtkNew<vtkIdList> ids;
-  const vtkIdType cells = ds->GetNumberOfCells();
-  for (vtkIdType c = 0; c < cells; ++c)
-  {
-    ds->GetCellPoints(c, ids);
-    bool finite = true;
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds() && finite; ++k)
-    {
-      finite = !bad[ids->GetId(k)];
-    }
-    if (finite)
-    {
-      keep->InsertNextId(c);
-    }
-  }
-  if (cells > 0 && keep->GetNumberOfIds() == 0)
-  {
-    Fail(what + ": every cell uses a point whose coordinates are not finite (NaN or infinity)");
-  }
-  vtkNew<vtkExtractCells> extract;
-  extract->SetInputData(ds);
-  extract->SetCellList(keep);
-  extract->Update();
-  const vtkIdType dropped = cells - keep->GetNumberOfIds();
-  Warn(what + ": " + std::to_string(static_cast<long long>(badPoints)) + " of " +
-    std::to_string(static_cast<long long>(n)) + " points " + (badPoints == 1 ? "has" : "have") +
-    " coordinates that are not finite (NaN or infinity): " + (badPoints == 1 ? "it" : "they") +
-    " and the " + std::to_string(static_cast<long long>(dropped)) + " cell" +
-    (dropped == 1 ? "" : "s") + " that use " + (badPoints == 1 ? "it" : "them") +
-    " are left out");
-  return extract->GetOutput();
-}
-
-/**
- * Every dataset of a composite (every leaf, named as the vtkstylize command names its
- * parts: the block's name, else "block N"), without its non-finite points and validated.
- */
-void ValidateBlocks(vtkDataObject* data, const std::string& what)
-{
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    it->SkipEmptyNodesOn();
-    int index = 0;
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem(), ++index)
-    {
-      auto* ds = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
-      if (!ds)
-      {
-        continue; // (not a dataset: the caller decides what to do with it)
-      }
-      const std::string name = vtkStylizeReader::GetBlockName(it, index);
-      const std::string leafWhat = what + " (block " + Quote(name) + ")";
-      vtkSmartPointer<vtkDataSet> kept = WithoutNonFinitePoints(ds, leafWhat);
-      ValidateDataSet(kept, leafWhat);
-      if (kept.GetPointer() != ds)
-      {
-        composite->SetDataSet(it, kept);
-      }
-    }
-  }
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -1142,6 +592,20 @@ std::string vtkStylizeReader::GetBlockName(vtkCompositeDataIterator* iterator, i
   return "block " + std::to_string(index);
 }
 
+
+//------------------------------------------------------------------------------
+void vtkStylizeReader::ForEachBlock(vtkCompositeDataSet* composite,
+  const std::function<void(vtkCompositeDataIterator*, const std::string&)>& visit)
+{
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(composite->NewIterator());
+  it->SkipEmptyNodesOn();
+  int index = 0;
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem(), ++index)
+  {
+    visit(it, vtkStylizeReader::GetBlockName(it, index));
+  }
+}
 //------------------------------------------------------------------------------
 const char* vtkStylizeReader::GetWarning(int index) const
 {

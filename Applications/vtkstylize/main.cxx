@@ -28,16 +28,16 @@
 #include "vtkLogger.h"
 #include "vtkMath.h"
 #include "vtkCamera.h"
-#include "vtkComicPass.h"
 #include "vtkMultiBlockDataSet.h"
-#include "vtkPixelArtPass.h"
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSketchPass.h"
+#include "vtkStylizeAtomicFile.h"
 #include "vtkStylizeDemoScene.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
+#include "vtkStylizeStylePass.h"
 #include "vtkVersion.h"
 
 #include <algorithm>
@@ -89,10 +89,7 @@ void WriteError(const std::string& message)
  */
 extern "C" void CrashHandler(int sig)
 {
-  if (TemporaryPath[0])
-  {
-    ::unlink(TemporaryPath);
-  }
+  vtkStylizeAtomicFile::RemovePendingFile();
   const char* text = "vtkstylize: internal error: terminated by a signal\n";
   switch (sig)
   {
@@ -163,25 +160,10 @@ void ReportSanitizersTo(int fd)
 bool RenderOrbit(vtkRenderWindow* window, vtkRenderer* ren, const Options& opt,
   const std::string& emptyFailure, std::vector<std::string>& written)
 {
-  if (!opt.AnchorGiven)
+  auto* style = vtkStylizeStylePass::SafeDownCast(ren->GetPass());
+  if (style && !opt.AnchorGiven)
   {
-    vtkRenderPass* pass = ren->GetPass();
-    if (auto* comic = vtkComicPass::SafeDownCast(pass))
-    {
-      comic->SetAnchor(vtkComicPass::OBJECT);
-    }
-    else if (auto* pixelArt = vtkPixelArtPass::SafeDownCast(pass))
-    {
-      pixelArt->SetDitherAnchor(vtkPixelArtPass::SURFACE);
-    }
-    else if (auto* sketch = vtkSketchPass::SafeDownCast(pass))
-    {
-      sketch->SetNoiseSpace(vtkSketchPass::OBJECT);
-      if (!opt.NoiseGiven)
-      {
-        sketch->SetNoise(vtkSketchPass::SPARSE); // strokes that hold still
-      }
-    }
+    style->AnchorPatternsToSurface(opt.NoiseGiven);
   }
   vtkCamera* camera = ren->GetActiveCamera();
   if (opt.OrbitElevation != 0.0)
@@ -220,33 +202,22 @@ bool RenderOrbit(vtkRenderWindow* window, vtkRenderer* ren, const Options& opt,
       opt.Output);
     written.push_back(opt.Output);
   }
+  if (style && !opt.AnchorGiven)
+  {
+    style->RestorePatternAnchors();
+  }
   return drawn;
 }
 
-int Run(int argc, char* argv[])
+/**
+ * The memory bound of the input stage (reading, conversion to surfaces, curvatures): by
+ * default 3/4 of the machine's memory, so that no input can make the program take the machine
+ * (legacy headers claiming a billion cells took 15 GB). Lifted before the window opens: the
+ * OpenGL driver and X do not all survive a failed allocation, and what they take follows the
+ * image size and the data already read.
+ */
+void LimitInputMemory(const Options& opt)
 {
-  Options opt = ParseCommandLine(argc, argv);
-  if (opt.Help)
-  {
-    std::cout << HelpText() << std::flush;
-    return 0;
-  }
-  if (opt.Version)
-  {
-    for (const std::string& warning : opt.Warnings)
-    {
-      WriteError("warning: " + warning);
-    }
-    std::cout << "vtkstylize " << VTKSTYLIZE_VERSION << " (VTK " << vtkVersion::GetVTKVersion()
-              << ")\n"
-              << std::flush;
-    return 0;
-  }
-  // The memory bound of the input stage (reading, conversion to surfaces, curvatures): by
-  // default 3/4 of the machine's memory, so that no input can make the program take the machine
-  // (legacy headers claiming a billion cells took 15 GB). Lifted before the window opens: the
-  // OpenGL driver and X do not all survive a failed allocation, and what they take follows the
-  // image size and the data already read.
   double limit = opt.MemoryLimit;
   if (limit < 0.0)
   {
@@ -257,18 +228,13 @@ int Run(int argc, char* argv[])
       : 0.0;
   }
   SetMemoryLimit(limit);
-  const bool builtIn = opt.Input.empty();
-  if (!builtIn && !IsSupportedInput(opt.Input))
-  {
-    UsageError("unsupported file type " + Quote(opt.Input) + " (supported: " +
-      SupportedExtensions() + ")");
-  }
-  CheckOutputPath(opt.Output);
+}
 
-  // Input -> parts.
+/** The parts of the built-in scene or of the input file; the title named after it. */
+std::vector<Part> ReadParts(
+  const Options& opt, bool builtIn, const std::string& what, SceneAnnotations& info)
+{
   std::vector<Part> parts;
-  SceneAnnotations info;
-  const std::string what = builtIn ? "built-in scene" : Quote(opt.Input);
   if (builtIn)
   {
     vtkNew<vtkStylizeDemoScene> scene;
@@ -284,7 +250,16 @@ int Run(int argc, char* argv[])
     CollectParts(data, opt.IsoValue, what, parts);
     info.Title = BaseName(opt.Input);
   }
-  // Input options that the input gives nothing to apply to: ignored, with a warning.
+  return parts;
+}
+
+/**
+ * Options that the input or the image size gives nothing to apply to: dropped, each with a
+ * warning in opt.Warnings.
+ */
+void WarnIgnoredOptions(
+  Options& opt, const std::vector<Part>& parts, bool builtIn, const std::string& what)
+{
   const bool contoured =
     std::any_of(parts.begin(), parts.end(), [](const Part& p) { return p.Contour.has_value(); });
   if (opt.IsoValue && !contoured)
@@ -311,6 +286,84 @@ int Run(int argc, char* argv[])
       std::to_string(MinimumAnnotatedSide) + " pixels a side: left out of this " +
       std::to_string(opt.Width) + "x" + std::to_string(opt.Height) + " image");
   }
+}
+
+/** The warning for a picture of the background alone, with the data's bounds. */
+std::string NothingDrawnWarning(const Options& opt, const double bounds[6], const std::string& what)
+{
+  std::string box;
+  for (int i = 0; i < 3; ++i)
+  {
+    box += std::string(i ? " x " : "") + "[" + FormatNumber(bounds[2 * i]) + ", " +
+      FormatNumber(bounds[2 * i + 1]) + "]";
+  }
+  return "the picture shows nothing but the background: nothing of " + what +
+    " covers a pixel of the " + std::to_string(opt.Width) + "x" + std::to_string(opt.Height) +
+    " window (its bounds: " + box + "; a stray far point, a zero spacing or cells without "
+    "area can leave the rest below a pixel)";
+}
+
+/**
+ * The warnings and notes (on stderr, only once the image is written: a failure is one line),
+ * then the paths written (on stdout), unless --quiet.
+ */
+void Report(const Options& opt, const std::vector<std::string>& written)
+{
+  for (const std::string& warning : opt.Warnings)
+  {
+    WriteError("warning: " + warning);
+  }
+  for (const std::string& warning : Warnings())
+  {
+    WriteError("warning: " + warning);
+  }
+  if (!opt.Quiet)
+  {
+    for (const std::string& note : Notes())
+    {
+      WriteError("note: " + note);
+    }
+    for (const std::string& path : written)
+    {
+      std::cout << path << "\n";
+    }
+    std::cout << std::flush;
+  }
+}
+
+int Run(int argc, char* argv[])
+{
+  Options opt = ParseCommandLine(argc, argv);
+  if (opt.Help)
+  {
+    std::cout << HelpText() << std::flush;
+    return 0;
+  }
+  if (opt.Version)
+  {
+    for (const std::string& warning : opt.Warnings)
+    {
+      WriteError("warning: " + warning);
+    }
+    std::cout << "vtkstylize " << VTKSTYLIZE_VERSION << " (VTK " << vtkVersion::GetVTKVersion()
+              << ")\n"
+              << std::flush;
+    return 0;
+  }
+  LimitInputMemory(opt);
+  const bool builtIn = opt.Input.empty();
+  if (!builtIn && !IsSupportedInput(opt.Input))
+  {
+    UsageError("unsupported file type " + Quote(opt.Input) + " (supported: " +
+      SupportedExtensions() + ")");
+  }
+  CheckOutputPath(opt.Output);
+
+  // Input -> parts.
+  SceneAnnotations info;
+  const std::string what = builtIn ? "built-in scene" : Quote(opt.Input);
+  std::vector<Part> parts = ReadParts(opt, builtIn, what, info);
+  WarnIgnoredOptions(opt, parts, builtIn, what);
   FinishParts(parts, what);
   if (opt.ModelDirections && opt.Style == "sketch")
   {
@@ -335,7 +388,7 @@ int Run(int argc, char* argv[])
   }
   AddLights(ren, opt.Lights, bounds);
   vtkSmartPointer<vtkRenderWindow> window = MakeWindow(ren, opt); // before the camera: aspect
-  SetUpCamera(ren, opt, builtIn);
+  SetUpCamera(ren, opt);
 
   // Passes.
   const StyleSpec* style = FindStyle(opt.Style);
@@ -377,38 +430,9 @@ int Run(int argc, char* argv[])
   }
   if (!drawn)
   {
-    std::string box;
-    for (int i = 0; i < 3; ++i)
-    {
-      box += std::string(i ? " x " : "") + "[" + FormatNumber(bounds[2 * i]) + ", " +
-        FormatNumber(bounds[2 * i + 1]) + "]";
-    }
-    opt.Warnings.push_back("the picture shows nothing but the background: nothing of " + what +
-      " covers a pixel of the " + std::to_string(opt.Width) + "x" + std::to_string(opt.Height) +
-      " window (its bounds: " + box + "; a stray far point, a zero spacing or cells without "
-      "area can leave the rest below a pixel)");
+    opt.Warnings.push_back(NothingDrawnWarning(opt, bounds, what));
   }
-  // Warnings and notes only now: a failure is one line.
-  for (const std::string& warning : opt.Warnings)
-  {
-    WriteError("warning: " + warning);
-  }
-  for (const std::string& warning : Warnings())
-  {
-    WriteError("warning: " + warning);
-  }
-  if (!opt.Quiet)
-  {
-    for (const std::string& note : Notes())
-    {
-      WriteError("note: " + note);
-    }
-    for (const std::string& path : written)
-    {
-      std::cout << path << "\n";
-    }
-    std::cout << std::flush;
-  }
+  Report(opt, written);
   return 0;
 }
 

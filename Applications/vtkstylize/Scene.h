@@ -34,7 +34,7 @@ void AddParts(vtkRenderer* ren, const std::vector<Part>& parts, const Options& o
 void AddLights(vtkRenderer* ren, int count, const double bounds[6]);
 
 /** Points the camera at the scene (azimuth, elevation, zoom, projection). */
-void SetUpCamera(vtkRenderer* ren, const Options& opt, bool builtIn);
+void SetUpCamera(vtkRenderer* ren, const Options& opt);
 }
 
 #endif

@@ -65,9 +65,6 @@ struct PassSettings
     }
   }
 
-  // --reference-height 0 for the sketch pass: one point is one window pixel (the pass itself
-  // needs a height of at least 1, so it gets the window's height).
-  bool SketchWindowPoints = false;
 };
 
 struct Options

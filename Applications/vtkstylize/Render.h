@@ -1,6 +1,7 @@
 /**
  * vtkstylize: the render window, and rendering it into the output PNG. The PNG is written to a
- * temporary file beside the output and renamed, so a failure never leaves a partial file.
+ * temporary file and renamed over the output (vtkStylizeAtomicFile), so a failure never leaves
+ * a partial file.
  */
 #ifndef vtkstylizeRender_h
 #define vtkstylizeRender_h
@@ -16,9 +17,6 @@ class vtkRenderer;
 
 namespace vtkstylize
 {
-/** The temporary PNG being written, for the crash handler (fixed buffer: signal-safe). */
-extern char TemporaryPath[4096];
-
 /** The folder of a path ("." when it has none) and its last component. */
 std::string Directory(const std::string& path);
 std::string BaseName(const std::string& path);

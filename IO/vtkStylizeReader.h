@@ -4,54 +4,39 @@
  *          give one clear error instead of a crash, a hang or a huge allocation.
  *
  * The reader is chosen by the file's extension (GetSupportedExtensions(): VTK XML serial and
- * parallel, .pvd collections, .vtm, legacy .vtk, Exodus II, EnSight, OpenFOAM, STL, OBJ and
- * PLY). VTK 9.1's readers crash, loop forever or allocate what a header claims on malformed
- * files, so before a reader opens the file it is checked:
+ * parallel, .pvd, .vtm, legacy .vtk, Exodus II, EnSight, OpenFOAM, STL, OBJ and PLY). VTK 9.1's
+ * readers crash, loop forever or allocate what a header claims on malformed files, so the file
+ * (and every file it names) is checked before a reader opens it, and every dataset read is
+ * validated; points that are not finite are left out with a warning (GetWarning()). On failure
+ * the output is an empty vtkPolyData and GetErrorMessage() holds one line ("cannot read 'FILE':
+ * REASON"), also reported as a VTK error; the messages of the readers run inside are captured,
+ * so that this line is all a caller sees.
  *
- * - the file (and every file a .vtm, .pvt* or .pvd names) must be a readable, non-empty regular
- *   file (a FIFO or a device would block a reader), and multiblock files may not name
- *   themselves through any chain;
- * - the format is walked where its reader does not check it: PLY and OBJ indices, binary STL
- *   sizes, every legacy .vtk header claim against the bytes left, .vtu polyhedron face streams,
- *   .vti origin, spacing and direction, EnSight case files, Exodus (netCDF classic) headers.
+ * Not thread-safe: VTK's output window is process-wide, and the reader installs its own
+ * (vtkStylizeOutputWindow) while it reads.
  *
- * After reading, every dataset (every leaf of a multiblock) is validated: cell connectivity
- * within the points, cell types and their sizes, structured dimensions, array lengths and
- * finite coordinates. Points whose coordinates are NaN or infinite are left out with the cells
- * that use them (a warning, GetWarning()); a dataset with no finite point fails.
+ * The checks, the validation and the error reporting: docs/command-line.md.
  *
- * The file is read when the pipeline asks for the output's type (RequestDataObject: the type is
- * the file's), again only after a setting changed. On failure the output is an empty
- * vtkPolyData, GetErrorMessage() holds one line ("cannot read 'FILE':
- * REASON"), the error code is set, and the line is reported as an error (vtkErrorMacro, an
- * ErrorEvent). The messages of the readers run inside are captured while they read (a
- * vtkStylizeOutputWindow is installed for the time of the read and the previous window
- * restored, and vtkLogger's stderr output turned off), so that the one line is all a caller
- * sees; with a vtkStylizeOutputWindow already installed, its echo descriptor is kept.
- *
- * Memory: no check here makes a reader allocate more than the file holds; a process limit
- * (setrlimit) turns what remains into an "out of memory" error, which this reader reports
- * rather than letting the allocation's exception escape.
- *
- * Not thread-safe: VTK's output window is process-wide, and the reader installs its own while
- * it reads.
+ * @sa vtkStylizeOutputWindow
  */
 
 #ifndef vtkStylizeReader_h
 #define vtkStylizeReader_h
 
 #include "vtkDataObjectAlgorithm.h"
-#include "vtkStylizeFiltersModule.h" // for export macro
+#include "vtkStylizeIOModule.h" // for export macro
 
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 #include "vtkTimeStamp.h"    // for vtkTimeStamp
 
-#include <string> // for std::string
-#include <vector> // for std::vector
+#include <functional> // for std::function
+#include <string>     // for std::string
+#include <vector>     // for std::vector
 
 class vtkCompositeDataIterator;
+class vtkCompositeDataSet;
 
-class VTKSTYLIZEFILTERS_EXPORT vtkStylizeReader : public vtkDataObjectAlgorithm
+class VTKSTYLIZEIO_EXPORT vtkStylizeReader : public vtkDataObjectAlgorithm
 {
 public:
   static vtkStylizeReader* New();
@@ -98,6 +83,15 @@ public:
    * leaves, from 0).
    */
   static std::string GetBlockName(vtkCompositeDataIterator* iterator, int index);
+
+#ifndef __VTK_WRAP__
+  /**
+   * Calls visit(iterator, name) for every non-empty leaf of the composite dataset, in order,
+   * with the name GetBlockName() gives it (visit may replace the leaf through the iterator).
+   */
+  static void ForEachBlock(vtkCompositeDataSet* composite,
+    const std::function<void(vtkCompositeDataIterator*, const std::string&)>& visit);
+#endif
 
 protected:
   vtkStylizeReader();

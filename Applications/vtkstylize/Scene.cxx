@@ -15,7 +15,6 @@
 #include "vtkCoordinate.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
-#include "vtkLight.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -25,11 +24,13 @@
 #include "vtkRenderer.h"
 #include "vtkScalarBarActor.h"
 #include "vtkSmartPointer.h"
+#include "vtkStylizeSceneLights.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -210,13 +211,20 @@ void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations
 }
 }
 
-/** Adds one actor per part, coloured as ChooseColoring() says. */
-void AddParts(vtkRenderer* ren, const std::vector<Part>& parts, const Options& opt, bool builtIn,
-  SceneAnnotations& info, const std::string& what)
+namespace
 {
-  // Colour maps: one per array name, over the range of that array across all parts.
-  std::vector<Coloring> colorings;
-  std::map<std::string, std::array<double, 2>> ranges;
+/** Colour-map ranges: per array name, the [min, max] of its finite values over all parts. */
+using Ranges = std::map<std::string, std::array<double, 2>>;
+
+/**
+ * Each part's colouring (ChooseColoring()), and the finite range of each mapped array over all
+ * parts. An array with no finite value falls back to the solid colour, and non-finite values
+ * are reported, in info.Warnings. Returns whether any part is coloured by an array.
+ */
+bool ChooseColorings(const std::vector<Part>& parts, const Options& opt, bool builtIn,
+  SceneAnnotations& info, const std::string& what, std::vector<Coloring>& colorings,
+  Ranges& ranges)
+{
   bool anyColored = false;
   for (const Part& p : parts)
   {
@@ -273,32 +281,45 @@ void AddParts(vtkRenderer* ren, const std::vector<Part>& parts, const Options& o
       found->second[1] = std::max(found->second[1], r[1]);
     }
   }
-  if (!opt.ColorBy.empty() && !anyColored)
+  return anyColored;
+}
+
+/** Fails for a --color-by array that no part has, listing the arrays there are. */
+[[noreturn]] void FailNoSuchArray(
+  const std::vector<Part>& parts, const Options& opt, const std::string& what)
+{
+  // List what there is, so that the next try can succeed.
+  std::set<std::string> names;
+  for (const Part& p : parts)
   {
-    // List what there is, so that the next try can succeed.
-    std::set<std::string> names;
-    for (const Part& p : parts)
+    for (vtkFieldData* fd : { static_cast<vtkFieldData*>(p.Surface->GetPointData()),
+           static_cast<vtkFieldData*>(p.Surface->GetCellData()) })
     {
-      for (vtkFieldData* fd : { static_cast<vtkFieldData*>(p.Surface->GetPointData()),
-             static_cast<vtkFieldData*>(p.Surface->GetCellData()) })
+      for (int a = 0; a < fd->GetNumberOfArrays(); ++a)
       {
-        for (int a = 0; a < fd->GetNumberOfArrays(); ++a)
+        if (fd->GetArray(a) && fd->GetArray(a)->GetName())
         {
-          if (fd->GetArray(a) && fd->GetArray(a)->GetName())
-          {
-            names.insert(fd->GetArray(a)->GetName());
-          }
+          names.insert(fd->GetArray(a)->GetName());
         }
       }
     }
-    std::string list;
-    for (const std::string& n : names)
-    {
-      list += (list.empty() ? "" : ", ") + Quote(n);
-    }
-    Fail(what + ": no point or cell array named " + Quote(opt.ColorBy) + " (see --color-by); " +
-      (list.empty() ? std::string("the data has no arrays") : "the arrays are: " + list));
   }
+  std::string list;
+  for (const std::string& n : names)
+  {
+    list += (list.empty() ? "" : ", ") + Quote(n);
+  }
+  Fail(what + ": no point or cell array named " + Quote(opt.ColorBy) + " (see --color-by); " +
+    (list.empty() ? std::string("the data has no arrays") : "the arrays are: " + list));
+}
+
+/**
+ * One colour map per array over its range (Viridis for the built-in scene's speed, else
+ * cool-to-warm), and the array the scalar bar shows (the built-in speed, else the first).
+ */
+std::map<std::string, vtkSmartPointer<vtkColorTransferFunction>> MakeColorMaps(
+  const Ranges& ranges, bool builtIn, SceneAnnotations& info)
+{
   std::map<std::string, vtkSmartPointer<vtkColorTransferFunction>> maps;
   for (auto& r : ranges)
   {
@@ -315,109 +336,94 @@ void AddParts(vtkRenderer* ren, const std::vector<Part>& parts, const Options& o
       info.ScalarBarArray = r.first;
     }
   }
+  return maps;
+}
 
-  for (std::size_t i = 0; i < parts.size(); ++i)
+/** The actor of one part: its colouring through its array's map, or the solid colour. */
+void AddActor(vtkRenderer* ren, vtkPolyData* surface, const Coloring& c,
+  std::map<std::string, vtkSmartPointer<vtkColorTransferFunction>>& maps)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(surface);
+  if (c.Array.empty())
   {
-    const Coloring& c = colorings[i];
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(parts[i].Surface);
-    if (c.Array.empty())
+    mapper->ScalarVisibilityOff();
+  }
+  else
+  {
+    mapper->ScalarVisibilityOn();
+    mapper->SetScalarMode(c.Association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+        ? VTK_SCALAR_MODE_USE_CELL_FIELD_DATA
+        : VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
+    mapper->SelectColorArray(c.Array.c_str());
+    if (c.Direct)
     {
-      mapper->ScalarVisibilityOff();
+      mapper->SetColorModeToDirectScalars();
     }
     else
     {
-      mapper->ScalarVisibilityOn();
-      mapper->SetScalarMode(c.Association == vtkDataObject::FIELD_ASSOCIATION_CELLS
-          ? VTK_SCALAR_MODE_USE_CELL_FIELD_DATA
-          : VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
-      mapper->SelectColorArray(c.Array.c_str());
-      if (c.Direct)
+      vtkColorTransferFunction* ctf = maps[c.Array];
+      int association = 0;
+      vtkDataArray* array = FindArray(surface, c.Array, association);
+      if (array->GetNumberOfComponents() > 1)
       {
-        mapper->SetColorModeToDirectScalars();
+        ctf->SetVectorModeToMagnitude();
       }
-      else
-      {
-        vtkColorTransferFunction* ctf = maps[c.Array];
-        int association = 0;
-        vtkDataArray* array = FindArray(parts[i].Surface, c.Array, association);
-        if (array->GetNumberOfComponents() > 1)
-        {
-          ctf->SetVectorModeToMagnitude();
-        }
-        mapper->SetColorModeToMapScalars();
-        mapper->SetLookupTable(ctf);
-        mapper->UseLookupTableScalarRangeOn();
-        mapper->InterpolateScalarsBeforeMappingOn();
-      }
+      mapper->SetColorModeToMapScalars();
+      mapper->SetLookupTable(ctf);
+      mapper->UseLookupTableScalarRangeOn();
+      mapper->InterpolateScalarsBeforeMappingOn();
     }
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    vtkProperty* prop = actor->GetProperty();
-    prop->SetColor(SolidColor[0], SolidColor[1], SolidColor[2]);
-    // At most 0.1 + 0.75 + 0.15 = 1: a face seen head-on under the headlight is not saturated.
-    prop->SetAmbient(0.1);
-    prop->SetDiffuse(0.75);
-    prop->SetSpecular(0.15);
-    prop->SetSpecularPower(30.0);
-    ren->AddActor(actor);
+  }
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkProperty* prop = actor->GetProperty();
+  prop->SetColor(SolidColor[0], SolidColor[1], SolidColor[2]);
+  // At most 0.1 + 0.75 + 0.15 = 1: a face seen head-on under the headlight is not saturated.
+  prop->SetAmbient(0.1);
+  prop->SetDiffuse(0.75);
+  prop->SetSpecular(0.15);
+  prop->SetSpecularPower(30.0);
+  ren->AddActor(actor);
+}
+}
+
+/** Adds one actor per part, coloured as ChooseColoring() says, and the annotations. */
+void AddParts(vtkRenderer* ren, const std::vector<Part>& parts, const Options& opt, bool builtIn,
+  SceneAnnotations& info, const std::string& what)
+{
+  // Colour maps: one per array name, over the range of that array across all parts.
+  std::vector<Coloring> colorings;
+  Ranges ranges;
+  const bool anyColored = ChooseColorings(parts, opt, builtIn, info, what, colorings, ranges);
+  if (!opt.ColorBy.empty() && !anyColored)
+  {
+    FailNoSuchArray(parts, opt, what);
+  }
+  auto maps = MakeColorMaps(ranges, builtIn, info);
+  for (std::size_t i = 0; i < parts.size(); ++i)
+  {
+    AddActor(ren, parts[i].Surface, colorings[i], maps);
   }
   AddAnnotations(ren, opt, info, maps);
 }
 
 /**
  * Lights: 0 none; 1 the headlight; N > 1 white scene lights on a Fibonacci sphere around the
- * scene, alternately directional and positional (point lights), each of intensity min(1, 3/N)
- * so that the summed diffuse light (about N/4 lights face a point) stays below 1.
+ * scene (1.5 times its diagonal from its centre), alternately directional and positional (point
+ * lights), each of intensity min(1, 3/N) so that the summed diffuse light (about N/4 lights face
+ * a point) stays below 1 (vtkStylizeSceneLights).
  */
 void AddLights(vtkRenderer* ren, int count, const double bounds[6])
 {
-  ren->AutomaticLightCreationOff();
-  ren->RemoveAllLights();
-  if (count == 0)
-  {
-    return;
-  }
-  if (count == 1)
-  {
-    vtkNew<vtkLight> headlight;
-    headlight->SetLightTypeToHeadlight();
-    ren->AddLight(headlight);
-    return;
-  }
   const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
     0.5 * (bounds[4] + bounds[5]) };
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
   const double radius = 1.5 * std::max(diagonal, 1e-6);
-  const double intensity = std::min(1.0, 3.0 / count);
-  const double golden = vtkMath::Pi() * (3.0 - std::sqrt(5.0));
-  for (int i = 0; i < count; ++i)
-  {
-    const double y = 1.0 - 2.0 * (i + 0.5) / count;
-    const double r = std::sqrt(std::max(0.0, 1.0 - y * y));
-    const double phi = golden * i;
-    const double dir[3] = { r * std::cos(phi), y, r * std::sin(phi) };
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetColor(1.0, 1.0, 1.0);
-    light->SetIntensity(intensity);
-    light->SetFocalPoint(center[0], center[1], center[2]);
-    light->SetPosition(
-      center[0] + radius * dir[0], center[1] + radius * dir[1], center[2] + radius * dir[2]);
-    if (i % 2 == 1)
-    {
-      light->PositionalOn();
-      light->SetConeAngle(90.0); // >= 90: a point light, not a spot
-      light->SetAttenuationValues(1.0, 0.0, 0.0);
-    }
-    else
-    {
-      light->PositionalOff();
-    }
-    ren->AddLight(light);
-  }
+  vtkStylizeSceneLights::AddLights(
+    ren, count, center, radius, 3.0, vtkStylizeSceneLights::DIRECTIONAL_POINT, 90.0);
 }
 
 namespace
@@ -519,7 +525,7 @@ void FitView(vtkRenderer* ren, double fill)
 }
 }
 
-void SetUpCamera(vtkRenderer* ren, const Options& opt, bool builtIn)
+void SetUpCamera(vtkRenderer* ren, const Options& opt)
 {
   vtkCamera* camera = ren->GetActiveCamera();
   camera->SetPosition(0, 0, 1);
@@ -544,11 +550,8 @@ void SetUpCamera(vtkRenderer* ren, const Options& opt, bool builtIn)
   }
   camera->OrthogonalizeViewUp();
   ren->ResetCameraClippingRange();
-  // Files fill the frame (the built-in scene keeps its composed framing).
-  if (!builtIn)
-  {
-    FitView(ren, FrameFill);
-  }
+  // The scene fills the frame, the built-in one as a file's.
+  FitView(ren, FrameFill);
   camera->Zoom(opt.Zoom);
   ren->ResetCameraClippingRange();
 }

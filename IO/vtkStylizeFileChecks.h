@@ -1,7 +1,7 @@
 /**
  * Structural checks of input files whose VTK readers (9.1, and ParaView 5.11's) crash, hang,
  * allocate what a header claims or silently read garbage on malformed input, run by
- * vtkStylizeReader before the reader sees the file (a private header of the Filters module):
+ * vtkStylizeReader before the reader sees the file (a private header of the IO module):
  *
  * - PLY (vtkPLYReader crashes on a malformed header, and on face indices out of range, e.g. in
  *   a truncated file): the header is parsed, the body walked element by element (ASCII or
@@ -64,8 +64,8 @@ std::string CheckEnSightCaseFile(const std::string& path);
 /**
  * Exodus II (.ex2, .exo, .e, .g) in netCDF's classic formats (CDF-1, 2 and 5): the header is
  * walked and every count it claims (dimensions, attributes, variables, name lengths, values)
- * must fit in the rest of the file, and every variable's data in the file (a 15 KB file whose
- * header claimed two billion dimensions made netCDF allocate 1.6 GB before failing). netCDF-4
+ * must fit in the rest of the file, and every variable's data in the file (netCDF allocates
+ * what the header claims before it reads the data: docs/command-line.md). netCDF-4
  * (HDF5) files are left to their library.
  */
 std::string CheckExodusFile(const std::string& path);

@@ -9,6 +9,7 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
+#include "vtkStylizeAtomicFile.h"
 #include "vtkStylizeFigureWriter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkRenderWindow.h"
@@ -25,56 +26,15 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 namespace vtkstylize
 {
-char TemporaryPath[4096] = { 0 };
-
-namespace
-{
-/** Removes the temporary file on scope exit unless released. */
-class TemporaryFileGuard
-{
-public:
-  TemporaryFileGuard() = default;
-  ~TemporaryFileGuard() { this->Remove(); }
-  TemporaryFileGuard(const TemporaryFileGuard&) = delete;
-  TemporaryFileGuard& operator=(const TemporaryFileGuard&) = delete;
-
-  void Set(const std::string& path)
-  {
-    this->Path = path;
-    std::snprintf(TemporaryPath, sizeof(TemporaryPath), "%s", path.c_str());
-  }
-  void Release()
-  {
-    this->Path.clear();
-    TemporaryPath[0] = 0;
-  }
-  void Remove()
-  {
-    if (!this->Path.empty())
-    {
-      ::unlink(this->Path.c_str());
-    }
-    this->Release();
-  }
-  const std::string& Get() const { return this->Path; }
-
-private:
-  std::string Path;
-};
-
-}
-
 std::string Directory(const std::string& path)
 {
   const auto slash = path.find_last_of('/');
@@ -204,18 +164,11 @@ bool DrewSomething(vtkRenderWindow* window)
     z, z + depth->GetNumberOfValues(), [](float v) { return v > 0.0f && v < 1.0f; });
 }
 
-bool RenderAndWrite(
-  vtkRenderWindow* window, const Options& opt, const std::string& output, const std::string& emptyFailure)
+namespace
 {
-  ClearVTKErrors();
-  window->Render();
-  CheckVTKErrors("rendering failed");
-  const bool drawn = DrewSomething(window);
-  if (!drawn && !emptyFailure.empty())
-  {
-    Fail(emptyFailure);
-  }
-
+/** The window's image at the requested size (magnified: tiled); fails on another size. */
+vtkSmartPointer<vtkWindowToImageFilter> GrabImage(vtkRenderWindow* window, const Options& opt)
+{
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
@@ -232,15 +185,18 @@ bool RenderAndWrite(
       " image instead of " + std::to_string(opt.Width * opt.Magnify) + "x" +
       std::to_string(opt.Height * opt.Magnify));
   }
+  return grab;
+}
 
-  // Encode (a PNG, or a vector figure drawn from the style's layers), then write into a file
-  // that has no name until it is complete, and rename that over the output: never a partial
-  // output file, and nothing left behind even by SIGKILL (an O_TMPFILE file vanishes with the
-  // process; where the file system has none, a hidden named file beside the output, removed on
-  // failure and on catchable signals).
-  const std::string what = "cannot write " + Quote(output);
+/**
+ * The file's bytes: a vector figure drawn from the style's layers (.svg, .pdf), else the PNG of
+ * the grabbed image. `what` starts the failure message.
+ */
+vtkSmartPointer<vtkUnsignedCharArray> Encode(vtkRenderWindow* window,
+  vtkWindowToImageFilter* grab, const Options& opt, const std::string& output,
+  const std::string& what)
+{
   const std::string ext = Lower(output.substr(output.size() - 4));
-  vtkSmartPointer<vtkUnsignedCharArray> encoded;
   if (ext == ".svg" || ext == ".pdf")
   {
     vtkNew<vtkStylizeFigureWriter> figure;
@@ -257,108 +213,47 @@ bool RenderAndWrite(
     {
       Warn(std::string("figure: ") + figure->GetWarning());
     }
-    encoded = figure->GetResult();
+    return figure->GetResult();
   }
-  else
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->WriteToMemoryOn();
+  writer->Write();
+  CheckVTKErrors(what);
+  vtkSmartPointer<vtkUnsignedCharArray> encoded = writer->GetResult();
+  if (writer->GetErrorCode() != vtkErrorCode::NoError || !encoded)
   {
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->WriteToMemoryOn();
-    writer->Write();
-    CheckVTKErrors(what);
-    encoded = writer->GetResult();
-    if (writer->GetErrorCode() != vtkErrorCode::NoError || !encoded)
-    {
-      const char* code = vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode());
-      Fail(what + ": " + (code ? code : "PNG encoding failed"));
-    }
+    const char* code = vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode());
+    Fail(what + ": " + (code ? code : "PNG encoding failed"));
   }
-  const unsigned char* bytes = encoded->GetPointer(0);
-  const std::size_t size = static_cast<std::size_t>(encoded->GetNumberOfValues());
-  const auto writeAll = [&](int fd) {
-    for (std::size_t done = 0; done < size;)
-    {
-      const ssize_t n = ::write(fd, bytes + done, size - done);
-      if (n < 0 && errno == EINTR)
-      {
-        continue;
-      }
-      if (n <= 0)
-      {
-        return false;
-      }
-      done += static_cast<std::size_t>(n);
-    }
-    return true;
-  };
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  const std::string hidden = Directory(output) + "/." + BaseName(output) + ".XXXXXX";
-  TemporaryFileGuard temporary;
-  int fd = ::open(Directory(output).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
-  if (fd >= 0)
+  return encoded;
+}
+}
+
+bool RenderAndWrite(
+  vtkRenderWindow* window, const Options& opt, const std::string& output, const std::string& emptyFailure)
+{
+  ClearVTKErrors();
+  window->Render();
+  CheckVTKErrors("rendering failed");
+  const bool drawn = DrewSomething(window);
+  if (!drawn && !emptyFailure.empty())
   {
-    if (!writeAll(fd))
-    {
-      const int error = errno;
-      ::close(fd);
-      Fail(what + ": " + std::strerror(error));
-    }
-    // A name for it now: a unique hidden one (linkat cannot replace the output), then rename.
-    const std::string self = "/proc/self/fd/" + std::to_string(fd);
-    bool linked = false;
-    for (int attempt = 0; attempt < 100 && !linked; ++attempt)
-    {
-      std::vector<char> name(hidden.begin(), hidden.end());
-      name.push_back(0);
-      const int probe = ::mkstemp(name.data()); // a unique name, given back at once
-      if (probe < 0)
-      {
-        break;
-      }
-      ::close(probe);
-      ::unlink(name.data());
-      if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, name.data(), AT_SYMLINK_FOLLOW) == 0)
-      {
-        temporary.Set(name.data());
-        linked = true;
-      }
-      else if (errno != EEXIST)
-      {
-        break;
-      }
-    }
-    ::close(fd);
-    fd = -1;
-    if (!linked)
-    {
-      fd = -2; // no /proc or no link: write it again under a name
-    }
+    Fail(emptyFailure);
   }
-  if (fd != -1)
+  vtkSmartPointer<vtkWindowToImageFilter> grab = GrabImage(window, opt);
+
+  // Encoded, then written whole and renamed over the output (vtkStylizeAtomicFile): never a
+  // partial output file, and nothing left behind even by SIGKILL where the file system has
+  // O_TMPFILE (elsewhere a hidden named file beside the output, removed on failure and, by the
+  // crash handler, on catchable signals).
+  const std::string what = "cannot write " + Quote(output);
+  vtkSmartPointer<vtkUnsignedCharArray> encoded = Encode(window, grab, opt, output, what);
+  const int error = vtkStylizeAtomicFile::Write(output.c_str(), encoded);
+  if (error != 0)
   {
-    std::vector<char> name(hidden.begin(), hidden.end());
-    name.push_back(0);
-    fd = ::mkstemp(name.data());
-    if (fd < 0)
-    {
-      Fail(what + ": " + std::strerror(errno));
-    }
-    temporary.Set(name.data());
-    ::fchmod(fd, 0666 & ~mask);
-    const bool written = writeAll(fd);
-    const int error = errno;
-    ::close(fd);
-    if (!written)
-    {
-      Fail(what + ": " + std::strerror(error));
-    }
+    Fail(what + ": " + std::strerror(error));
   }
-  if (std::rename(temporary.Get().c_str(), output.c_str()) != 0)
-  {
-    Fail(what + ": " + std::strerror(errno));
-  }
-  temporary.Release();
   return drawn;
 }
 

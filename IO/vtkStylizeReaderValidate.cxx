@@ -1,0 +1,350 @@
+// The validation of what vtkStylizeReader read: cell connectivity within the points, cell types
+// and their sizes, structured dimensions, array lengths and finite coordinates (the filters and
+// the mapper would read out of bounds, or draw nothing, otherwise).
+
+#include "vtkStylizeReaderInternal.h"
+
+#include "vtkStylizeReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkExtractCells.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRectilinearGrid.h"
+#include "vtkStructuredGrid.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vtkStylizeReaderInternal
+{
+namespace
+{
+/** Checks that every cell of the cell array references existing points. */
+void CheckCells(vtkCellArray* cells, vtkIdType numberOfPoints, const std::string& what)
+{
+  if (!cells || cells->GetNumberOfCells() == 0)
+  {
+    return;
+  }
+  if (!cells->IsValid())
+  {
+    Fail(what + ": corrupt cell connectivity");
+  }
+  vtkDataArray* connectivity = cells->GetConnectivityArray();
+  double range[2];
+  connectivity->GetRange(range, 0);
+  if (connectivity->GetNumberOfTuples() > 0 &&
+    (range[0] < 0 || range[1] >= static_cast<double>(numberOfPoints)))
+  {
+    Fail(what + ": a cell references point " +
+      std::to_string(static_cast<long long>(range[0] < 0 ? range[0] : range[1])) + " but there are " +
+      std::to_string(static_cast<long long>(numberOfPoints)) + " points");
+  }
+}
+
+/**
+ * Number of points a cell type needs: exactly Size, or at least Size when AtLeast. Types not
+ * listed (and VTK_POLYHEDRON without faces) are rejected, since the surface filter would read
+ * outside the connectivity for them.
+ */
+struct CellSize
+{
+  int Size;
+  bool AtLeast;
+};
+
+bool CellTypeSize(int type, CellSize& size)
+{
+  static const std::map<int, CellSize> sizes = { { VTK_EMPTY_CELL, { 0, false } },
+    { VTK_VERTEX, { 1, false } }, { VTK_POLY_VERTEX, { 1, true } }, { VTK_LINE, { 2, false } },
+    { VTK_POLY_LINE, { 2, true } }, { VTK_TRIANGLE, { 3, false } },
+    { VTK_TRIANGLE_STRIP, { 3, true } }, { VTK_POLYGON, { 3, true } },
+    { VTK_PIXEL, { 4, false } }, { VTK_QUAD, { 4, false } }, { VTK_TETRA, { 4, false } },
+    { VTK_VOXEL, { 8, false } }, { VTK_HEXAHEDRON, { 8, false } }, { VTK_WEDGE, { 6, false } },
+    { VTK_PYRAMID, { 5, false } }, { VTK_PENTAGONAL_PRISM, { 10, false } },
+    { VTK_HEXAGONAL_PRISM, { 12, false } }, { VTK_QUADRATIC_EDGE, { 3, false } },
+    { VTK_QUADRATIC_TRIANGLE, { 6, false } }, { VTK_QUADRATIC_QUAD, { 8, false } },
+    { VTK_QUADRATIC_TETRA, { 10, false } }, { VTK_QUADRATIC_HEXAHEDRON, { 20, false } },
+    { VTK_QUADRATIC_WEDGE, { 15, false } }, { VTK_QUADRATIC_PYRAMID, { 13, false } },
+    { VTK_BIQUADRATIC_QUAD, { 9, false } }, { VTK_TRIQUADRATIC_HEXAHEDRON, { 27, false } },
+    { VTK_QUADRATIC_LINEAR_QUAD, { 6, false } }, { VTK_QUADRATIC_LINEAR_WEDGE, { 12, false } },
+    { VTK_BIQUADRATIC_QUADRATIC_WEDGE, { 18, false } },
+    { VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON, { 24, false } },
+    { VTK_BIQUADRATIC_TRIANGLE, { 7, false } }, { VTK_CUBIC_LINE, { 4, false } },
+    { VTK_QUADRATIC_POLYGON, { 6, true } }, { VTK_TRIQUADRATIC_PYRAMID, { 19, false } },
+    { VTK_CONVEX_POINT_SET, { 1, true } }, { VTK_POLYHEDRON, { 1, true } },
+    { VTK_LAGRANGE_CURVE, { 2, true } }, { VTK_LAGRANGE_TRIANGLE, { 3, true } },
+    { VTK_LAGRANGE_QUADRILATERAL, { 4, true } }, { VTK_LAGRANGE_TETRAHEDRON, { 4, true } },
+    { VTK_LAGRANGE_HEXAHEDRON, { 8, true } }, { VTK_LAGRANGE_WEDGE, { 6, true } },
+    { VTK_LAGRANGE_PYRAMID, { 5, true } }, { VTK_BEZIER_CURVE, { 2, true } },
+    { VTK_BEZIER_TRIANGLE, { 3, true } }, { VTK_BEZIER_QUADRILATERAL, { 4, true } },
+    { VTK_BEZIER_TETRAHEDRON, { 4, true } }, { VTK_BEZIER_HEXAHEDRON, { 8, true } },
+    { VTK_BEZIER_WEDGE, { 6, true } }, { VTK_BEZIER_PYRAMID, { 5, true } } };
+  const auto it = sizes.find(type);
+  if (it == sizes.end())
+  {
+    return false;
+  }
+  size = it->second;
+  return true;
+}
+
+/** Checks the cell types of an unstructured grid and their numbers of points. */
+void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
+{
+  vtkCellArray* cells = ug->GetCells();
+  vtkUnsignedCharArray* types = ug->GetCellTypesArray();
+  const vtkIdType numberOfCells = cells ? cells->GetNumberOfCells() : 0;
+  if (numberOfCells == 0)
+  {
+    return;
+  }
+  if (!types || types->GetNumberOfTuples() != numberOfCells)
+  {
+    Fail(what + ": the numbers of cells and cell types differ");
+  }
+  for (vtkIdType i = 0; i < numberOfCells; ++i)
+  {
+    const int type = types->GetValue(i);
+    const vtkIdType npts = cells->GetCellSize(i);
+    CellSize size{ 0, false };
+    if (!CellTypeSize(type, size) || (type == VTK_POLYHEDRON && !ug->GetFaces()))
+    {
+      Fail(what + ": cell " + std::to_string(static_cast<long long>(i)) + " has an invalid or " +
+        "unsupported cell type " + std::to_string(type));
+    }
+    if (size.AtLeast ? npts < size.Size : npts != size.Size)
+    {
+      Fail(what + ": cell " + std::to_string(static_cast<long long>(i)) + " of type " +
+        std::to_string(type) + " has " + std::to_string(static_cast<long long>(npts)) +
+        " points, expected " + (size.AtLeast ? "at least " : "") + std::to_string(size.Size));
+    }
+  }
+}
+
+/** True when every component of the array is a finite number. */
+bool AllFinite(vtkDataArray* array)
+{
+  const vtkIdType count = array->GetNumberOfValues();
+  if (auto* f = vtkFloatArray::FastDownCast(array))
+  {
+    const float* p = f->GetPointer(0);
+    return std::all_of(p, p + count, [](float v) { return std::isfinite(v); });
+  }
+  if (auto* d = vtkDoubleArray::FastDownCast(array))
+  {
+    const double* p = d->GetPointer(0);
+    return std::all_of(p, p + count, [](double v) { return std::isfinite(v); });
+  }
+  const int nc = array->GetNumberOfComponents();
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < nc; ++c)
+    {
+      if (!std::isfinite(array->GetComponent(i, c)))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+void ValidateDataSet(vtkDataSet* ds, const std::string& what)
+{
+  const vtkIdType n = ds->GetNumberOfPoints();
+  if (auto* pd = vtkPolyData::SafeDownCast(ds))
+  {
+    CheckCells(pd->GetVerts(), n, what);
+    CheckCells(pd->GetLines(), n, what);
+    CheckCells(pd->GetPolys(), n, what);
+    CheckCells(pd->GetStrips(), n, what);
+  }
+  else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds))
+  {
+    CheckCells(ug->GetCells(), n, what);
+    CheckCellTypes(ug, what);
+  }
+  else if (auto* sg = vtkStructuredGrid::SafeDownCast(ds))
+  {
+    int dims[3];
+    sg->GetDimensions(dims);
+    if (static_cast<double>(dims[0]) * dims[1] * dims[2] != static_cast<double>(n))
+    {
+      Fail(what + ": the structured grid has " + std::to_string(static_cast<long long>(n)) +
+        " points but its dimensions are " + std::to_string(dims[0]) + "x" +
+        std::to_string(dims[1]) + "x" + std::to_string(dims[2]));
+    }
+  }
+  else if (auto* rg = vtkRectilinearGrid::SafeDownCast(ds))
+  {
+    int dims[3];
+    rg->GetDimensions(dims);
+    vtkDataArray* coordinates[3] = { rg->GetXCoordinates(), rg->GetYCoordinates(),
+      rg->GetZCoordinates() };
+    for (int i = 0; i < 3; ++i)
+    {
+      if (!coordinates[i] || coordinates[i]->GetNumberOfTuples() != dims[i])
+      {
+        Fail(what + ": the rectilinear grid's " + std::string(1, static_cast<char>('x' + i)) +
+          " coordinates do not match its dimensions");
+      }
+    }
+  }
+  // Array sizes: a point or cell array shorter than the dataset is corrupt.
+  for (int a = 0; a < ds->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = ds->GetPointData()->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() < n)
+    {
+      Fail(what + ": point array " + Quote(array->GetName() ? array->GetName() : "") +
+        " is shorter than the number of points");
+    }
+  }
+  for (int a = 0; a < ds->GetCellData()->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = ds->GetCellData()->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() < ds->GetNumberOfCells())
+    {
+      Fail(what + ": cell array " + Quote(array->GetName() ? array->GetName() : "") +
+        " is shorter than the number of cells");
+    }
+  }
+  // Coordinates: GetBounds() skips NaN, so look at every explicit point (the points that are not
+  // finite were dropped with their cells before: see WithoutNonFinitePoints()).
+  if (auto* ps = vtkPointSet::SafeDownCast(ds))
+  {
+    if (ps->GetPoints() && !AllFinite(ps->GetPoints()->GetData()))
+    {
+      Fail(what + ": point coordinates are not finite (NaN or infinity)");
+    }
+  }
+  if (n > 0)
+  {
+    double bounds[6];
+    ds->GetBounds(bounds);
+    for (double b : bounds)
+    {
+      if (!std::isfinite(b))
+      {
+        Fail(what + ": point coordinates are not finite");
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkDataSet> WithoutNonFinitePoints(vtkDataSet* ds, const std::string& what)
+{
+  auto* ps = vtkPointSet::SafeDownCast(ds);
+  vtkDataArray* coordinates = ps && ps->GetPoints() ? ps->GetPoints()->GetData() : nullptr;
+  if (!coordinates || AllFinite(coordinates))
+  {
+    return ds;
+  }
+  const vtkIdType n = ds->GetNumberOfPoints();
+  std::vector<char> bad(static_cast<std::size_t>(n), 0);
+  vtkIdType badPoints = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    coordinates->GetTuple(i, p);
+    bad[i] = !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+    badPoints += bad[i];
+  }
+  if (badPoints == n)
+  {
+    Fail(what + ": no point has finite coordinates (all are NaN or infinity)");
+  }
+  if (auto* pd = vtkPolyData::SafeDownCast(ds))
+  {
+    for (vtkCellArray* cells : { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() })
+    {
+      CheckCells(cells, n, what);
+    }
+  }
+  else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds))
+  {
+    CheckCells(ug->GetCells(), n, what);
+  }
+  vtkNew<vtkIdList> keep;
+  vtkNew<vtkIdList> ids;
+  const vtkIdType cells = ds->GetNumberOfCells();
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    ds->GetCellPoints(c, ids);
+    bool finite = true;
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds() && finite; ++k)
+    {
+      finite = !bad[ids->GetId(k)];
+    }
+    if (finite)
+    {
+      keep->InsertNextId(c);
+    }
+  }
+  if (cells > 0 && keep->GetNumberOfIds() == 0)
+  {
+    Fail(what + ": every cell uses a point whose coordinates are not finite (NaN or infinity)");
+  }
+  vtkNew<vtkExtractCells> extract;
+  extract->SetInputData(ds);
+  extract->SetCellList(keep);
+  extract->Update();
+  const vtkIdType dropped = cells - keep->GetNumberOfIds();
+  Warn(what + ": " + std::to_string(static_cast<long long>(badPoints)) + " of " +
+    std::to_string(static_cast<long long>(n)) + " points " + (badPoints == 1 ? "has" : "have") +
+    " coordinates that are not finite (NaN or infinity): " + (badPoints == 1 ? "it" : "they") +
+    " and the " + std::to_string(static_cast<long long>(dropped)) + " cell" +
+    (dropped == 1 ? "" : "s") + " that use " + (badPoints == 1 ? "it" : "them") +
+    " are left out");
+  return extract->GetOutput();
+}
+
+
+//------------------------------------------------------------------------------
+void ValidateBlocks(vtkDataObject* data, const std::string& what)
+{
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  if (!composite)
+  {
+    return;
+  }
+  vtkStylizeReader::ForEachBlock(
+    composite, [&](vtkCompositeDataIterator* it, const std::string& name) {
+      auto* ds = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+      if (!ds)
+      {
+        return; // (not a dataset: the caller decides what to do with it)
+      }
+      const std::string leafWhat = what + " (block " + Quote(name) + ")";
+      vtkSmartPointer<vtkDataSet> kept = WithoutNonFinitePoints(ds, leafWhat);
+      ValidateDataSet(kept, leafWhat);
+      if (kept.GetPointer() != ds)
+      {
+        composite->SetDataSet(it, kept);
+      }
+    });
+}
+} // namespace vtkStylizeReaderInternal
