@@ -1,8 +1,11 @@
 #include "vtkComicPass.h"
 
 #include "vtkCamera.h"
+#include "vtkComicPatterns.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkStylizeDirectionField.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeShaderUtilities.h"
@@ -12,14 +15,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <string>
+#include <vector>
 
 namespace
 {
+// The direction field's stages follow these (vtkStylizeDirectionField::AddStages()).
 enum Stages
 {
   EDGE_STAGE = 0,     // luminance of f_normal, k1 and k2 (colour edges only)
   COMPOSITE_STAGE = 1 // edges, pattern and ink into the output
 };
+constexpr vtkStylizeStage ComicStages[] = {
+  { EDGE_STAGE, "COMIC_STAGE_EDGES", "COMIC_STAGE_EDGES" },
+  { COMPOSITE_STAGE, "COMIC_STAGE_COMPOSITE", "COMIC_STAGE_COMPOSITE" },
+};
+static_assert(vtkStylizeStagesInOrder(ComicStages), "the comic's stages out of order");
 enum Textures
 {
   EDGE_TEXTURE = 0
@@ -41,13 +53,33 @@ vtkStandardNewMacro(vtkComicPass);
 
 //------------------------------------------------------------------------------
 vtkComicPass::vtkComicPass()
-  : vtkStylizeStylePass(vtkStylizeLightingPass::COMIC, vtkComicFS,
-      { "COMIC_STAGE_EDGES", "" }, "  comicMain();\n", true)
+  : vtkStylizeStylePass(vtkStylizeLightingPass::COMIC)
+  , Field(vtkStylizeDirectionField::New())
 {
+  std::string source = vtkComicFS;
+  std::string mainCall = "  comicMain();\n";
+  std::vector<vtkStylizeStage> stages(std::begin(ComicStages), std::end(ComicStages));
+  this->Field->AddStages(source, mainCall, stages);
+  this->SetStages(source, mainCall, stages);
 }
 
 //------------------------------------------------------------------------------
-vtkComicPass::~vtkComicPass() = default;
+vtkComicPass::~vtkComicPass()
+{
+  this->Field->Delete();
+}
+
+//------------------------------------------------------------------------------
+void vtkComicPass::ReleaseStyleResources(vtkWindow* w)
+{
+  this->Field->Free(w);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkComicPass::GetStyleTextureBytes()
+{
+  return this->Field->GetTextureBytes();
+}
 
 //------------------------------------------------------------------------------
 void vtkComicPass::SetEdgeWeights(double depth, double normal, double color)
@@ -115,11 +147,11 @@ bool vtkComicPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
   }
   if (plan.Principal)
   {
-    this->RenderDirectionField(frame, plan.Field, this->PointSize(frame));
+    this->Field->Render(this, frame, plan.Field, this->PointSize(frame));
   }
   else
   {
-    this->FreeDirectionField();
+    this->Field->Free(frame.Window);
   }
   this->RenderCompositeStage(frame, plan);
   return true;
@@ -156,7 +188,7 @@ vtkComicPass::Plan vtkComicPass::PlanFrame(bool interactive) const
 
   if (p.Principal)
   {
-    p.Defines = FieldDefines(p.Field);
+    p.Defines = vtkStylizeDirectionField::Defines(p.Field);
   }
   auto define = [&p](bool on, const std::string& name) { AddDefine(p.Defines, on, name); };
   define(p.Principal, "COMIC_HATCH_PRINCIPAL");
@@ -169,6 +201,8 @@ vtkComicPass::Plan vtkComicPass::PlanFrame(bool interactive) const
   define(p.ObjectAnchor, "COMIC_OBJECT_ANCHOR");
   define(this->Tinted, "COMIC_TINTED");
   p.Defines += "#define COMIC_LAYER " + std::to_string(this->Layer) + "\n";
+  // the pattern's constants, shared with the vector figure
+  p.Defines += vtkComicPatterns::ShaderDefines();
   return p;
 }
 
@@ -178,7 +212,7 @@ void vtkComicPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, c
   const double pointSize = this->PointSize(frame);
   // Object anchoring: pattern periods in world units, from the pixel size at the focal point
   // (constant while the camera orbits, proportional to the scene's scale).
-  const double focalPixel = FocalPixelWorld(frame);
+  const double focalPixel = vtkStylizeDirectionField::FocalPixelWorld(frame);
   const double patternUnit = plan.ObjectAnchor ? focalPixel * pointSize : pointSize;
   const int stride = std::max(1, static_cast<int>(std::lround(this->EdgeWidth * pointSize)));
   const double* weights = this->EdgeWeights;
@@ -187,8 +221,8 @@ void vtkComicPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, c
   if (plan.Principal)
   {
     this->SetFieldUniforms(u, frame); // the G-buffer textures and the field's camera
-    u.Texture("comicField", this->GetDirectionFieldTexture())
-      .Int("comicHatchSteps", this->HatchDirections > 0 ? this->HatchDirections : 8);
+    u.Texture("comicField", this->Field->GetTexture())
+      .Int("comicHatchSteps", vtkComicPatterns::PrincipalSteps(this->HatchDirections));
   }
   else
   {
@@ -206,7 +240,8 @@ void vtkComicPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, c
     .Float("comicColorThreshold", this->ColorThreshold)
     .Float("comicDotSpacing", this->DotSpacing * patternUnit)
     .Float("comicHatchSpacing", this->HatchSpacing * patternUnit)
-    .Float("comicHatchWidth", std::min(1.0, this->HatchWidth / this->HatchSpacing))
+    .Float("comicHatchWidth",
+      vtkComicPatterns::HatchWidthFraction(this->HatchWidth, this->HatchSpacing))
     .Float2("comicDotDirection", std::cos(dotAngle), std::sin(dotAngle))
     .Float("comicHatchAngle", vtkMath::RadiansFromDegrees(this->HatchAngle))
     .Int("comicHatchDirections", this->HatchDirections)
@@ -217,23 +252,26 @@ void vtkComicPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, c
 }
 
 //------------------------------------------------------------------------------
-double vtkComicPass::GetPixelsPerPoint(int height, int tiles) const
+void vtkComicPass::AnchorToSurface(bool)
 {
-  return this->PointSize(std::max(1, height), std::max(1, tiles) * this->WindowScale[1]);
+  this->SavedAnchor = this->Anchor;
+  this->SetAnchor(OBJECT);
 }
 
 //------------------------------------------------------------------------------
-double vtkComicPass::PointSize(double fullHeight, double tileScale) const
+void vtkComicPass::RestoreAnchors()
 {
-  // Points -> pixels of the full (possibly tiled, magnified) image.
-  return this->ReferenceHeight > 0.0 ? fullHeight / this->ReferenceHeight : tileScale;
+  this->SetAnchor(this->SavedAnchor);
 }
 
 //------------------------------------------------------------------------------
-double vtkComicPass::PointSize(const Frame& frame) const
+int vtkComicPass::SwapLayer(int layer)
 {
-  return this->PointSize(frame.FullSize[1], frame.TileScale[1]);
+  const int previous = this->Layer;
+  this->SetLayer(layer);
+  return previous;
 }
+
 //------------------------------------------------------------------------------
 double vtkComicPass::GetReach(const Frame& frame)
 {
@@ -244,7 +282,7 @@ double vtkComicPass::GetReach(const Frame& frame)
   double reach = (plan.ColorEdges ? 2.0 : 1.0) * stride + 1.0;
   if (plan.Principal)
   {
-    reach = std::max(reach, FieldReach(frame, plan.Field, pointSize) + 1.0);
+    reach = std::max(reach, vtkStylizeDirectionField::Reach(frame, plan.Field, pointSize) + 1.0);
   }
   return reach;
 }

@@ -3,38 +3,19 @@
  * @brief   Black-and-white comic rendering: toon lighting, three-phase edges, halftone dots where
  *          the tone is bright and hatch lines where it is dark.
  *
- * The comic method of "real-time comic-style rendering" (docs/algorithms.md section 2) as one render
- * pass. Use it like any VTK pass: `renderer->SetPass(comic)`; it needs no delegate.
+ * The comic method of "real-time comic-style rendering" (docs/algorithms.md section 2) as one
+ * render pass. Use it like any VTK pass: `renderer->SetPass(comic)`; it needs no delegate.
+ * The opaque geometry is rendered once into the shared G-buffer (vtkStylizeGBufferPass) with
+ * the Comic lighting model (vtkStylizeLightingPass). Edges come from Sobel filters on the
+ * linear depth (scale-free), the normals and the colour; the lit tone is drawn as halftone dots
+ * above BrightThreshold and hatch lines below DarkThreshold, in black ink, or under the lit
+ * colour's hue with Tinted on.
  *
- * 1. The opaque geometry is rendered once into the shared G-buffer (vtkStylizeGBufferPass) with
- *    the Comic lighting model (vtkStylizeLightingPass: subject ambient term, depth-dependent
- *    quantized diffuse, boosted specular). Only the channels the enabled stages read are
- *    allocated: linear depth always, normals for normal edges and normal-directed hatching,
- *    object-space positions for surface-anchored patterns.
- * 2. Edges (eq. 4-9): Sobel on linear depth (k1 = 1 - G1), on normals (k2), then on the colour of
- *    the normal-edged image f_normal = E k1 k2 (k3), taken as its luminance (the tone the pattern
- *    is drawn from; one 4-channel intermediate texture instead of two). With weights a1 + a2 + a3 = 1 the edge image
- *    is f = E e, e = k1 (a1 + a2 k2 + a3 k2 k3). Depth edges are scale-free: the Sobel response is
- *    divided by the world size of a pixel at that depth, so it is the surface slope against the
- *    view ray, whatever the scene's size, the projection and the near/far ratio.
- * 3. Pattern (eq. 10-14) from the lit tone I = luminance(E): halftone dots whose area follows
- *    1 - I above BrightThreshold, hatch lines below DarkThreshold (crossed below CrossThreshold),
- *    blended continuously between. The output is the pattern times e (black and white), or,
- *    with Tinted on, the lit colour's hue under the same ink.
- *
- * Lengths (edge width, dot and hatch spacing, hatch width) are in points: 1 point is one pixel of
- * an image ReferenceHeight pixels tall, so the picture is the same at any resolution, and a
- * screenshot magnified through vtkWindowToImageFilter (tiled rendering) shows the same picture
- * at higher detail, without seams. Patterns are anchored to the screen (SCREEN) or to the
- * surface (OBJECT: a triplanar projection of the object-space position), which does not swim
- * when the camera orbits.
- *
- * Interactive variant (while the window renders at InteractiveUpdateRate or faster, e.g. while
- * the user drags): the depth outline and the patterns only, without normal and colour edges,
- * hatching at HatchAngle (no direction field). The still frame is the full comic.
- *
- * The 2D overlay, translucent geometry and volumes are drawn after the comic image, unstylized
- * but lit by the same lighting pass, and depth-tested against the comic image's depth.
+ * Lengths are in points (one pixel of an image ReferenceHeight pixels tall), so the picture is
+ * the same at any resolution and in a magnified screenshot. Patterns are anchored to the screen
+ * or to the surface (Anchor). While the window renders interactively (InteractiveUpdateRate) a
+ * cheaper variant is drawn; the still frame is the full comic.
+ * Method, parameters and measured figures: docs/comic.md.
  *
  * @sa vtkStylizeGBufferPass vtkStylizeLightingPass
  */
@@ -45,6 +26,8 @@
 #include "vtkStylizeStylePass.h"
 #include "vtkStylizePassesModule.h" // for export macro
 
+
+class vtkStylizeDirectionField;
 
 class VTKSTYLIZEPASSES_EXPORT vtkComicPass : public vtkStylizeStylePass
 {
@@ -218,7 +201,7 @@ public:
    * What orients the hatch lines: FIXED (default) or PRINCIPAL. Values: FIXED, HatchAngle, or
    * the screen-space normal in HatchDirections steps (eq. 12); PRINCIPAL, around the form: the
    * surface's direction of larger |curvature|, from the per-pixel principal direction field
-   * that the sketch style draws along (vtkStylizeStylePass::RenderDirectionField(), at its
+   * that the sketch style draws along (vtkStylizeDirectionField, at its
    * default settings), quantized to HatchDirections steps over 180 degrees (8 when
    * HatchDirections is 0) so that each region keeps straight lines. It costs the field's
    * full-screen passes (about a dozen), and only when hatching is on.
@@ -289,15 +272,10 @@ public:
    */
   vtkSetClampMacro(ReferenceHeight, double, 0.0, 1.0e5);
   vtkGetMacro(ReferenceHeight, double);
-
-  /**
-   * Pixels per point in an image `height` pixels tall rendered in `tiles` x `tiles` tiles (a
-   * magnified screenshot; 1 otherwise), with the current ReferenceHeight and WindowScale: what
-   * the pass multiplies its lengths by. For readers of the pattern's geometry
-   * (vtkStylizeFigureWriter).
-   */
-  double GetPixelsPerPoint(int height, int tiles) const;
   ///@}
+
+  /** Sets Layer and returns the one it had (vtkStylizeStylePass::SwapLayer()). */
+  int SwapLayer(int layer) override;
 
 protected:
   /**
@@ -306,6 +284,9 @@ protected:
    * the output.
    */
   bool RenderStyle(const vtkRenderState* s, const Frame& frame) override;
+  /** Frees the direction field's textures. */
+  void ReleaseStyleResources(vtkWindow* w) override;
+  vtkIdType GetStyleTextureBytes() override;
 
   vtkComicPass();
   ~vtkComicPass() override;
@@ -333,16 +314,19 @@ protected:
   int Anchor = SCREEN;
   int Layer = COMIC;
   double ReferenceHeight = 1080.0;
+  /** The principal direction field of PRINCIPAL hatching. */
+  vtkStylizeDirectionField* Field = nullptr;
 
   /** What a frame computes (the enabled stages, their channels and defines). */
   struct Plan;
   Plan PlanFrame(bool interactive) const;
   /** The uniforms both stages read. */
   void SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, const Plan& plan);
-  /** Pixels per point in this frame's full (possibly tiled, magnified) image. */
-  double PointSize(const Frame& frame) const;
-  /** Pixels per point in an image fullHeight tall, tiles times the window (WindowScale in). */
-  double PointSize(double fullHeight, double tileScale) const;
+  double GetPointReferenceHeight() override { return this->ReferenceHeight; }
+  /** Patterns anchored to the surface: the OBJECT anchor. */
+  void AnchorToSurface(bool) override;
+  void RestoreAnchors() override;
+  int SavedAnchor = SCREEN;
   /** The edge taps (twice the stride for colour edges) and the principal field's reach. */
   double GetReach(const Frame& frame) override;
   /** Stage 1 (colour edges only): luminance of f_normal, k1 and k2 into the edge texture. */

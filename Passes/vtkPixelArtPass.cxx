@@ -61,6 +61,16 @@ enum Stages
   STYLIZE_STAGE,      // the art pixels: palette, dither, outlines
   UPSAMPLE_STAGE      // the art pixels into the output
 };
+constexpr vtkStylizeStage PixelArtStages[] = {
+  { REDUCE_STAGE, "PIXEL_STAGE_REDUCE", "PIXEL_STAGE_REDUCE" },
+  { GAUSS_STAGE, "PIXEL_STAGE_GAUSS", "PIXEL_STAGE_GAUSS" },
+  { GRADIENT_STAGE, "PIXEL_STAGE_GRADIENT", "PIXEL_STAGE_GRADIENT" },
+  { CLASSIFY_STAGE, "PIXEL_STAGE_CLASSIFY", "PIXEL_STAGE_CLASSIFY" },
+  { HYSTERESIS_STAGE, "PIXEL_STAGE_HYSTERESIS", "PIXEL_STAGE_HYSTERESIS" },
+  { STYLIZE_STAGE, "PIXEL_STAGE_STYLIZE", "PIXEL_STAGE_STYLIZE" },
+  { UPSAMPLE_STAGE, "PIXEL_STAGE_UPSAMPLE", "PIXEL_STAGE_UPSAMPLE" },
+};
+static_assert(vtkStylizeStagesInOrder(PixelArtStages), "pixel art's stages out of order");
 enum Textures
 {
   REDUCED_COLOR = 0,
@@ -121,12 +131,32 @@ vtkCxxSetObjectMacro(vtkPixelArtPass, LookupTable, vtkScalarsToColors);
 
 //------------------------------------------------------------------------------
 vtkPixelArtPass::vtkPixelArtPass()
-  : vtkStylizeStylePass(vtkStylizeLightingPass::PIXEL_ART, vtkPixelArtFS,
-      { "PIXEL_STAGE_REDUCE", "PIXEL_STAGE_GAUSS", "PIXEL_STAGE_GRADIENT", "PIXEL_STAGE_CLASSIFY",
-        "PIXEL_STAGE_HYSTERESIS", "PIXEL_STAGE_STYLIZE", "PIXEL_STAGE_UPSAMPLE" },
-      "  pixelMain();\n")
+  : vtkStylizeStylePass(vtkStylizeLightingPass::PIXEL_ART)
   , Internals(new vtkInternals)
 {
+  this->SetStages(vtkPixelArtFS, "  pixelMain();\n",
+    { std::begin(PixelArtStages), std::end(PixelArtStages) });
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::AnchorToSurface(bool)
+{
+  this->SavedDitherAnchor = this->DitherAnchor;
+  this->SetDitherAnchor(SURFACE);
+}
+
+//------------------------------------------------------------------------------
+void vtkPixelArtPass::RestoreAnchors()
+{
+  this->SetDitherAnchor(this->SavedDitherAnchor);
+}
+
+//------------------------------------------------------------------------------
+int vtkPixelArtPass::SwapLayer(int layer)
+{
+  const int previous = this->Layer;
+  this->SetLayer(layer);
+  return previous;
 }
 
 //------------------------------------------------------------------------------

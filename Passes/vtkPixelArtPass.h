@@ -3,58 +3,20 @@
  * @brief   Pixel-art rendering: the pixel-art lighting model, pixelation to a grid of art
  *          pixels, Canny outlines, and 8x8 ordered dithering to a small palette.
  *
- * The method of "real-time pixel-art rendering" (docs/algorithms.md section 1) as one render pass.
- * Use it like any VTK pass: `renderer->SetPass(pixelArt)`; it needs no delegate.
+ * The method of "real-time pixel-art rendering" (docs/algorithms.md section 1) as one render
+ * pass. Use it like any VTK pass: `renderer->SetPass(pixelArt)`; it needs no delegate.
+ * The opaque geometry is rendered into the shared G-buffer (vtkStylizeGBufferPass) with the
+ * PixelArt lighting model (vtkStylizeLightingPass), either directly at the art-pixel resolution
+ * (FAST) or at full resolution with each block of PixelSize x PixelSize pixels reduced to its
+ * mean (FAITHFUL). Outlines are found on the art-pixel image (Canny or Sobel, optionally depth
+ * and normal edges), then the paper's 8x8 matrix dithers each art pixel to K levels, grays,
+ * DawnBringer's 16 colours, a user list or a palette from the data's colormap.
  *
- * 1. The opaque geometry is rendered into the shared G-buffer (vtkStylizeGBufferPass) with the
- *    PixelArt lighting model (vtkStylizeLightingPass: Ld = sqrt(s) kd I att max(0, N.L),
- *    Ls = M ks Ip max(0, N.H)^beta). The screen is divided into art pixels of PixelSize x
- *    PixelSize screen pixels (or ArtPixelsAcross across the image). Two ways to get one colour
- *    per art pixel:
- *    - FAST: the geometry is rendered directly at the art-pixel resolution (one sample per art
- *      pixel at its centre; aliased, and the cheapest: fragment work falls by PixelSize^2).
- *    - FAITHFUL: the geometry is rendered at full resolution and each block is reduced: an art
- *      pixel belongs to the surface when at least half of its block does, and takes the mean of
- *      the block's surface samples (the background's otherwise): every surface pixel counts,
- *      thin features and shading are not aliased, silhouettes stay hard (no halo of background
- *      colour). Blocks larger than 16 x 16 pixels are reduced from 16 x 16 evenly spaced samples.
- *    The interactive variant (while the window renders at InteractiveUpdateRate or faster,
- *    e.g. while the user drags) is FAST; the still frame uses Mode.
- * 2. Edges on the art-pixel image (eq. 5-7): grayscale (mean of R, G, B), the paper's 3x3
- *    Gaussian (sigma = 1), Sobel, then either a plain threshold (SOBEL, the paper's first
- *    version, ragged) or Canny (CANNY: non-maximum suppression along the gradient, double
- *    threshold, hysteresis). Optional geometric outlines: depth edges (scale-free slope of the
- *    linear depth, drawn on the nearer side) and normal edges (creases). Edge art pixels take
- *    the OutlineColor. The paper's Lagrange "shape reconstruction" (eq. 8) is not implemented:
- *    outlines are whole art pixels.
- * 3. Ordered dither (eq. 9-11): the paper's 8x8 matrix M, index (y mod 8) * 8 + (x mod 8) on the
- *    art-pixel grid (x to the right, y up from the bottom of the image, as in OpenGL), threshold
- *    t = (M - 0.5) / 64, then quantization to a palette: K levels per channel
- *    (floor(c (K - 1) + t) / (K - 1)), K levels of gray (K = 2: 1-bit), the 16-colour
- *    DawnBringer palette, a user list, or a palette derived from the data's colormap (its colours
- *    at several shades, so data coloured by a scalar stay readable). For colour lists the colour
- *    is offset by (t - 1/2) times the palette's median colour spacing, then mapped to the nearest
- *    palette colour.
- *
- * A stable grid: with parallel projection and SnapToGrid, the image is shifted by less than one
- * art pixel so that the world origin falls on a grid corner; a panning camera then moves the
- * picture by whole art pixels and each art pixel keeps sampling the same part of the scene. The
- * dither pattern is anchored to the window (SCREEN), to that world-aligned grid (GRID), or to the
- * surface (SURFACE). With SURFACE in FAITHFUL mode the surface's art pixels themselves are fixed
- * to it, for animations: texels, cells of the object-space position projected on the coordinate
- * plane facing the geometric normal (triplanar), each the world size of an art pixel at the
- * focal point; a texel takes the mean lit colour over it and its own matrix entry, and its
- * outlines are found on the texels (Canny's test along each texel axis on the art pixels'
- * smoothed gray; creases are not drawn) and, for silhouettes and occluding contours, within one
- * art pixel of them on the screen. In an orbit a point of the surface then keeps its colour from
- * frame to frame, where a screen-aligned art pixel resamples it (docs/figures.md, flicker). In
- * FAST mode (interactive) SURFACE anchors the dither only: the art pixel's object-space position.
- *
- * Lengths are in screen pixels of the window; a screenshot magnified through
- * vtkWindowToImageFilter (tiled rendering) multiplies them by its scale, so it shows the same
- * art pixels at higher detail. The background is pixelated but not dithered unless
- * StylizeBackground is on. Translucent geometry, volumes and the 2D overlay are drawn afterwards,
- * unstylized, depth-tested against the pixel-art image.
+ * With parallel projection SnapToGrid keeps the grid fixed to the world, so a pan moves the
+ * picture by whole art pixels; DitherAnchor SURFACE fixes the art pixels to the surface for
+ * animations. Sizes are window pixels, multiplied by the scale of a magnified screenshot. The
+ * interactive variant (InteractiveUpdateRate) is FAST.
+ * Method, parameters and measured figures: docs/pixel-art.md.
  *
  * @sa vtkStylizeGBufferPass vtkStylizeLightingPass vtkComicPass
  */
@@ -363,6 +325,9 @@ public:
    */
   vtkSetClampMacro(Layer, int, PIXEL_ART, EDGES);
   vtkGetMacro(Layer, int);
+
+  /** Sets Layer and returns the one it had (vtkStylizeStylePass::SwapLayer()). */
+  int SwapLayer(int layer) override;
   ///@}
 
   /**
@@ -388,6 +353,10 @@ protected:
 
   vtkPixelArtPass();
   ~vtkPixelArtPass() override;
+  /** Patterns anchored to the surface: the SURFACE dither anchor (texels). */
+  void AnchorToSurface(bool) override;
+  void RestoreAnchors() override;
+  int SavedDitherAnchor = GRID;
 
   int Mode = FAITHFUL;
   int PixelSize = 4;

@@ -17,6 +17,7 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkStylizeDirectionField.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeShaderUtilities.h"
@@ -59,13 +60,19 @@ double Fade(double t)
   return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
 }
 
-// The direction field's stages are the base's (RenderDirectionField()).
+// The direction field's stages follow these (vtkStylizeDirectionField::AddStages()).
 enum Stages
 {
   BLUR_X_STAGE = 0, // strided blur of the lit luminance, x then y
   BLUR_Y_STAGE,
   FINAL_STAGE // strokes and tone into the output
 };
+constexpr vtkStylizeStage SketchStages[] = {
+  { BLUR_X_STAGE, "SKETCH_STAGE_BLUR_X", "SKETCH_STAGE_BLUR_X" },
+  { BLUR_Y_STAGE, "SKETCH_STAGE_BLUR_Y", "SKETCH_STAGE_BLUR_Y" },
+  { FINAL_STAGE, "SKETCH_STAGE_FINAL", "SKETCH_STAGE_FINAL" },
+};
+static_assert(vtkStylizeStagesInOrder(SketchStages), "the sketch's stages out of order");
 enum Textures
 {
   BLUR_X = 0,
@@ -77,6 +84,7 @@ enum Textures
 class vtkSketchPass::vtkInternals
 {
 public:
+  vtkNew<vtkStylizeDirectionField> Field;
   int NoiseKind = -1;
   double NoiseStats[2] = { 0.5, 0.29 };
 
@@ -107,12 +115,48 @@ vtkStandardNewMacro(vtkSketchPass);
 
 //------------------------------------------------------------------------------
 vtkSketchPass::vtkSketchPass()
-  : vtkStylizeStylePass(vtkStylizeLightingPass::STANDARD, vtkSketchFS,
-      { "SKETCH_STAGE_BLUR_X", "SKETCH_STAGE_BLUR_Y", "SKETCH_STAGE_FINAL" }, "  sketchMain();\n",
-      true)
+  : vtkStylizeStylePass(vtkStylizeLightingPass::STANDARD)
   , Internals(new vtkInternals)
 {
+  std::string source = vtkSketchFS;
+  std::string mainCall = "  sketchMain();\n";
+  std::vector<vtkStylizeStage> stages(std::begin(SketchStages), std::end(SketchStages));
+  this->Internals->Field->AddStages(source, mainCall, stages);
+  this->SetStages(source, mainCall, stages);
   this->SetDirectionArrayName("PrincipalDirectionMinAbs");
+}
+
+//------------------------------------------------------------------------------
+void vtkSketchPass::AnchorToSurface(bool keepNoise)
+{
+  this->SavedNoise = this->Noise;
+  this->SavedNoiseSpace = this->NoiseSpace;
+  this->SetNoiseSpace(OBJECT);
+  if (!keepNoise)
+  {
+    this->SetNoise(SPARSE); // strokes that hold still
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSketchPass::RestoreAnchors()
+{
+  this->SetNoise(this->SavedNoise);
+  this->SetNoiseSpace(this->SavedNoiseSpace);
+}
+
+//------------------------------------------------------------------------------
+int vtkSketchPass::SwapLayer(int layer)
+{
+  const int previous = this->Layer;
+  this->SetLayer(layer);
+  return previous;
+}
+
+//------------------------------------------------------------------------------
+double vtkSketchPass::GetPointReferenceHeight()
+{
+  return std::isfinite(this->ReferenceHeight) ? this->ReferenceHeight : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -453,14 +497,26 @@ void vtkSketchPass::MapDirectionArrays(vtkRenderer* ren)
 //------------------------------------------------------------------------------
 bool vtkSketchPass::DownloadDirections(vtkFloatArray* out)
 {
-  return this->DownloadTexture(this->GetDirectionFieldTexture(), out);
+  return this->DownloadTexture(this->Internals->Field->GetTexture(), out);
+}
+
+//------------------------------------------------------------------------------
+void vtkSketchPass::ReleaseStyleResources(vtkWindow* w)
+{
+  this->Internals->Field->Free(w);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkSketchPass::GetStyleTextureBytes()
+{
+  return this->Internals->Field->GetTextureBytes();
 }
 
 //------------------------------------------------------------------------------
 double vtkSketchPass::GetReach(const Frame& frame)
 {
   const Plan p = this->PlanFrame(frame);
-  double reach = FieldReach(frame, p.Field, p.PointSize) + 1.0;
+  double reach = vtkStylizeDirectionField::Reach(frame, p.Field, p.PointSize) + 1.0;
   if (p.Strokes)
   {
     // A stroke's steps are StepLength points where it starts; in perspective a surface that
@@ -498,7 +554,7 @@ bool vtkSketchPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
   {
     this->UpdateNoise(frame);
   }
-  this->RenderDirectionField(frame, plan.Field, plan.PointSize);
+  this->Internals->Field->Render(this, frame, plan.Field, plan.PointSize);
   if (plan.Contrast)
   {
     this->RenderBlurStages(frame, plan);
@@ -556,7 +612,7 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   f.Direction = this->Direction;
   f.Model = p.Model;
 
-  p.Defines = FieldDefines(f);
+  p.Defines = vtkStylizeDirectionField::Defines(f);
   auto define = [&p](bool on, const std::string& name) { AddDefine(p.Defines, on, name); };
   define(!p.ObjectNoise, "SKETCH_NOISE_SCREEN");
   define(p.ObjectNoise && this->Noise == SPARSE, "SKETCH_NOISE_INTERPOLATED");
@@ -583,10 +639,8 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   p.ContrastSetting = finite(this->Contrast, self->GetContrastMinValue());
 
   // Points -> pixels of this (possibly magnified) image; world lengths at the focal distance.
-  const double referenceHeight =
-    finite(this->ReferenceHeight, self->GetReferenceHeightMinValue());
-  p.PointSize = frame.FullSize[1] / referenceHeight;
-  p.FocalPixel = FocalPixelWorld(frame);
+  p.PointSize = self->PointSize(frame);
+  p.FocalPixel = vtkStylizeDirectionField::FocalPixelWorld(frame);
   const int stride = this->BlurStride;
   p.BlurSize[0] = (frame.Size[0] + stride - 1) / stride;
   p.BlurSize[1] = (frame.Size[1] + stride - 1) / stride;
@@ -635,8 +689,7 @@ void vtkSketchPass::UpdateNoise(const Frame& frame)
   const int filter = this->Noise == WHITE ? vtkTextureObject::Nearest : vtkTextureObject::Linear;
   // SPARSE is read prefiltered over the pixel's footprint on the surface (textureGrad):
   // mipmapped, isotropic (anisotropic filtering keeps the texels' detail along the footprint's
-  // long axis, and with it flicker: measured 0.68 / 0.75 of the screen anchor's changes on the
-  // bunny / fandisk against 0.46 / 0.38 isotropic and 0.55 / 0.59 unfiltered)
+  // long axis, and with it flicker: docs/figures.md, flicker)
   const bool prefiltered = this->Noise == SPARSE;
   noise->SetMinificationFilter(prefiltered ? vtkTextureObject::LinearMipmapLinear : filter);
   noise->SetGenerateMipmap(prefiltered);
@@ -682,7 +735,7 @@ void vtkSketchPass::RenderFinalStage(const Frame& frame, const Plan& p)
   const vtkInternals& in = *this->Internals;
   this->RenderStageToOutput(frame, FINAL_STAGE, true, [&](vtkStylizeUniforms& u) {
     this->SetFieldUniforms(u, frame);
-    u.Texture("sketchField", this->GetDirectionFieldTexture())
+    u.Texture("sketchField", this->Internals->Field->GetTexture())
       .Texture("sketchBlur", this->TextureSlot(BLUR_Y))
       .Float2("sketchBlurExtent", p.BlurSize[0] * this->BlurStride,
         p.BlurSize[1] * this->BlurStride)

@@ -5,58 +5,18 @@
  *
  * The method of "real-time pencil sketch rendering along principal directions"
  * (docs/algorithms.md section 3) as one render pass: `renderer->SetPass(sketch)`; no delegate.
+ * The opaque geometry is rendered once into the shared G-buffer (vtkStylizeGBufferPass), lit
+ * by a vtkStylizeLightingPass (Standard model). Each surface pixel gets a principal direction,
+ * estimated from its neighbours' normals by focal surfaces (DirectionSource SCREEN) or read
+ * from a point-data array such as vtkStylizePrincipalCurvatures' (MODEL), then smoothed and
+ * filled. Strokes follow it by perspective-correct line integral convolution of a noise fixed
+ * to the surface; the pencil tone is the lit luminance with contrast against a blur of it, and
+ * cross strokes darken the darkest zones.
  *
- * 1. The opaque geometry is rendered once into the shared G-buffer (vtkStylizeGBufferPass)
- *    with a vtkStylizeLightingPass (Standard model by default). Channels: linear depth and
- *    normals always (normals in full float precision: the estimate differentiates them; the
- *    colour at the G-buffer's Precision, half floats by default),
- *    object-space positions for surface-fixed noise, the DIRECTION channel in model-space mode.
- * 2. Principal directions per pixel (the styles' base's direction field, vtkStylizeFieldFS),
- *    by focal surfaces (DirectionSource SCREEN): 2, 4 or 8 neighbours `Neighbors` in 1, 4 or
- *    8 pairs. For each pair the focal quadratic is solved in
- *    the curvature 1/lambda (no overflow on flat ground); pairs with a negative discriminant,
- *    neighbours off the surface, collinear or planar pairs are skipped; the rays' points at the
- *    focal height of the larger |curvature| lie along the other principal direction and are
- *    fitted by total least squares through the origin (doubled angles), each weighted by how
- *    far it is from the umbilic 0/0 case. The neighbour stride grows near the camera so that
- *    neighbours stay at least `NeighborSpacing` apart in world units (up to `MaxStride`), and
- *    at least `ObjectScale` times the scene's size apart (a close-up follows the shape).
- *    Model-space mode (DirectionSource MODEL) uses a point-data direction array instead
- *    (`DirectionArrayName`, by default vtkStylizePrincipalCurvatures' PrincipalDirectionMinAbs),
- *    mapped to the G-buffer's DIRECTION channel; pixels without it fall back to the estimate.
- * 3. Sign-invariant smoothing (doubled angles over 3x3 pixels of the same surface, weighted by
- *    the estimate's confidence) with taps doubling up to `SmoothingRadius`, then
- *    `SmoothingIterations` passes of neighbouring pixels (the smoothing also fills undefined
- *    pixels from their neighbours), then fill iterations for undefined (planar, umbilic)
- *    pixels from their surface's defined neighbours at distances doubling beyond the pyramid's
- *    up to `FillRadius`; pixels still
- *    undefined follow the isophotes of the lit image (structure tensor of its gradient), else a
- *    fixed screen direction: no surface pixel is left without a direction. `Direction` selects
- *    the direction drawn: MINIMUM or MAXIMUM curvature (by absolute value) or their BISECTOR.
- * 4. Strokes: perspective-correct line integral convolution. From each pixel the stroke moves
- *    `StepLength` along the direction in world space, is projected to the screen, snaps to the
- *    surface seen there, samples the field bilinearly (directions sign-aligned) and the noise,
- *    `Steps` times on each side, with a triangle kernel; it stops where it leaves the surface
- *    (background, another surface at another depth). Starts are staggered by the 8x8
- *    ordered-dither matrix. The noise (WHITE, PERLIN, WORLEY; a tileable 64^3 texture) is
- *    sampled at the object-space position, so strokes stick to the surface without texture
- *    coordinates (NoiseSpace SCREEN gives the swimming look for comparison). LicMode SCREEN_2D
- *    is the classic screen-space LIC, the baseline of the accuracy study.
- * 5. Tone: the lit luminance, bright faces lifted to white between `BrightThresholds` t1 and t2,
- *    contrast against a downsampled, strided Gaussian blur of it (o + c (o - b), `Contrast`,
- *    `BlurRadius`, `BlurStride`); ink 2 (1 - tone)(1 - stroke), so strokes keep the mean tone;
- *    a second stroke field across the first below `CrossThreshold` (cross-hatching).
- *
- * Lengths (step, noise cell, neighbour spacing, blur radius, fill radius) are in points: 1 point
- * is one pixel of an image ReferenceHeight pixels tall; world lengths are taken at the camera's
- * focal distance. A NaN setting counts as its range's minimum. A magnified screenshot shows the
- * same picture at higher detail: each tile computes a guard band of its neighbours' pixels as
- * far as the field, the strokes and the blur read (vtkStylizeStylePass::GetReach()).
- *
- * Interactive variant (while the window renders at InteractiveUpdateRate or faster, e.g. while
- * the user drags): the raw directions, neither smoothed nor filled (undefined pixels take the
- * isophote fallback), and strokes of at most 4 steps on each side, as long as `Steps` steps (the
- * step grows). The still frame is the full sketch.
+ * Lengths are in points (one pixel of an image ReferenceHeight pixels tall), so a magnified
+ * screenshot shows the same picture at higher detail. While the window renders interactively
+ * (InteractiveUpdateRate) a cheaper variant is drawn; the still frame is the full sketch.
+ * Method, parameters and measured figures: docs/sketch.md.
  *
  * @sa vtkStylizeGBufferPass vtkStylizeLightingPass vtkStylizePrincipalCurvatures
  */
@@ -135,6 +95,9 @@ public:
    */
   vtkSetClampMacro(Layer, int, SKETCH, TONE);
   vtkGetMacro(Layer, int);
+
+  /** Sets Layer and returns the one it had (vtkStylizeStylePass::SwapLayer()). */
+  int SwapLayer(int layer) override;
   ///@}
 
   ///@{
@@ -417,9 +380,12 @@ public:
 
   ///@{
   /**
-   * Height (pixels) of the image in which one point is one pixel. Range [1, 1e5], default 1080.
+   * Height in pixels of the reference image in which one point is one pixel. A renderer of
+   * height h (times the tile scale of a magnified screenshot) has h / ReferenceHeight pixels per
+   * point. 0: one point is one window pixel (magnified screenshots still scale).
+   * Range [0, 1e5], default 1080.
    */
-  vtkSetClampMacro(ReferenceHeight, double, 1.0, 1.0e5);
+  vtkSetClampMacro(ReferenceHeight, double, 0.0, 1.0e5);
   vtkGetMacro(ReferenceHeight, double);
   ///@}
 
@@ -445,6 +411,15 @@ protected:
    * fill, fallbacks, the tone's blur, then strokes and tone into the output.
    */
   bool RenderStyle(const vtkRenderState* s, const Frame& frame) override;
+  double GetPointReferenceHeight() override;
+  /** Patterns anchored to the surface: noise in object space, the SPARSE noise. */
+  void AnchorToSurface(bool keepNoise) override;
+  void RestoreAnchors() override;
+  int SavedNoise = WHITE;
+  int SavedNoiseSpace = OBJECT;
+  /** Frees the direction field's textures. */
+  void ReleaseStyleResources(vtkWindow* w) override;
+  vtkIdType GetStyleTextureBytes() override;
 
   vtkSketchPass();
   ~vtkSketchPass() override;
@@ -491,7 +466,7 @@ protected:
   int GetGuardAlignment(const Frame& frame) override;
   /** The noise texture of the current kind, made when the kind changes. */
   void UpdateNoise(const Frame& frame);
-  // 1-3: the direction field (vtkStylizeStylePass::RenderDirectionField()).
+  // 1-3: the direction field (vtkStylizeDirectionField).
   /** 4. The strided blur of the lit luminance (the contrast's reference). */
   void RenderBlurStages(const Frame& frame, const Plan& plan);
   /** 5. Strokes and tone into the output framebuffer, with the scene's depth. */

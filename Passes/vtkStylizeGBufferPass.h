@@ -3,66 +3,21 @@
  * @brief   The shared G-buffer: renders the scene's opaque geometry once into the buffers a
  *          style needs, then composites it back with its depth.
  *
- * In the manner of vtkSSAOPass, the pass renders the opaque geometry into a framebuffer object
- * whose attachments are only those asked for:
+ * In the manner of vtkSSAOPass, the pass renders the opaque geometry, lit by its LightingPass,
+ * into a framebuffer object whose attachments are only those asked for (SetChannels()): the lit
+ * colour and the depth always; the view-space NORMAL, the view- or object-space POSITION, the
+ * LINEAR_DEPTH (-z in view space) and the tangent DIRECTION of the vertex attribute
+ * stylizeDirectionMC on request. A style calls RenderGeometry(), processes the textures, writes
+ * its image and depth, then calls RenderAfterGeometry() for the translucent geometry, the
+ * volumes and the 2D overlay; Render() alone writes the colour and depth back and draws those.
  *
- * | channel  | always? | texture                | content                                         |
- * |----------|---------|------------------------|-------------------------------------------------|
- * | colour   | yes     | RGBA16F (or 32F)       | the lit colour (background where no geometry)   |
- * | depth    | yes     | DEPTH32F               | window-space depth, 1 on the background         |
- * | NORMAL   | request | RGBA16F (or 32F)       | view-space unit shading normal, a = 1 on surfaces|
- * | POSITION | request | RGBA32F                | view- or object-space position, a = 1 on surfaces|
- * | LINEAR_DEPTH | request | R32F               | distance along the view axis (-z in view space) |
- * |          |         |                        | in world units, 0 where there is no surface     |
- * | DIRECTION | request | RGBA16F (or 32F)      | view-space unit tangent direction from the      |
- * |          |         |                        | vertex attribute stylizeDirectionMC (composite  |
- * |          |         |                        | data: the point data's tangents), a = its       |
- * |          |         |                        | confidence: 1 where the vertices' unit          |
- * |          |         |                        | directions agree, 0: none (zero vectors)        |
+ * With SceneImagePass set, the scene comes from that pass's image (lit colour and window depth,
+ * as after ParaView's IceT compositing): the channels are rebuilt from it, or taken from the
+ * processes' own G-buffers where a ChannelSource drew the same surface.
  *
- * LINEAR_DEPTH keeps full relative precision at any near/far ratio (the window-space depth of a
- * 1e7 near/far ratio has almost none left far away), which scale-free screen-space edges need.
- * Alpha 0 in the normal and position channels marks the background and primitives that have no
- * surface normal (unlit lines and points). The normal is the one the lighting model shaded with:
- * zero-length or NaN normals are replaced by the facet normal, so the buffer holds no NaN.
+ * Channels, formats, the image path and what is tested: docs/gbuffer.md.
  *
- * Render() renders, in order: (1) the opaque geometry into the G-buffer with the lighting pass
- * (when LightingPass is set; VTK's lighting otherwise), (2) a full-screen quad that writes the
- * colour and the depth (gl_FragDepth) into the output framebuffer at the renderer's viewport,
- * (3) the translucent geometry and volumes, lit by the same lighting pass, and (4) the 2D
- * overlay (text, scalar bars), which is never stylized. Style passes call RenderGeometry(),
- * process the textures, write their image and depth, then call RenderAfterGeometry().
- *
- * **Scene from an image.** When SceneImagePass is set, RenderGeometry() does not render the
- * geometry: it renders that pass (which must leave a lit colour and a window depth, as VTK's
- * default passes, a vtkStylizeLightingPass or ParaView's IceT compositing do) into an image at
- * the viewport's size and fills the G-buffer from it. NORMAL is reconstructed from the depth
- * (view space; on each axis the one-sided difference towards the neighbour closer in depth, so
- * silhouettes do not bend it), POSITION is the view-space position (OBJECT space is not known
- * from an image: it becomes world space), LINEAR_DEPTH is -z in view space and DIRECTION has
- * coherence 0 everywhere. The lighting pass is not applied (the image is already lit), the
- * depth is the image's window depth (never logarithmic), and RenderAfterGeometry() draws
- * nothing (translucent geometry, volumes and the overlay are part of the image). The geometry
- * resolution and screen transform still apply: the image is sampled (nearest) at the shifted
- * pixel centres. This is how the styles run after a parallel compositor: see vtkStylizeStylePass.
- *
- * **Channels from the processes' own G-buffers.** An image holds colour and depth only, and a
- * normal rebuilt from depth is the facet's, not the interpolated one. When ChannelSource is set
- * (a vtkStylizeGBufferPass that renders this process's geometry inside SceneImagePass:
- * ParaView's per-rank render pass), the image path takes NORMAL, POSITION (in the requested
- * space, object space included) and DIRECTION from it wherever its depth is the image's depth
- * (the same surface), and reconstructs only where it is not (nothing of this process there).
- * With a Controller of several processes (ParaView's render ranks under IceT), every process
- * sends the source's channels where it drew a surface to process 0, which keeps at each pixel
- * the nearest by depth: the depth test the compositor applies to the colour. The picture after
- * compositing is then the one the geometry gives.
- *
- * Renderers that do not start at the window origin, several renderers, layered renderers
- * (the background of a layer above 0 is left transparent), tiled rendering
- * (vtkWindowToImageFilter with a scale) and window resizes are handled. ReleaseGraphicsResources()
- * frees every texture, the framebuffer and the quad.
- *
- * @sa vtkStylizeLightingPass
+ * @sa vtkStylizeLightingPass vtkStylizeStylePass vtkSSAOPass
  */
 
 #ifndef vtkStylizeGBufferPass_h
@@ -384,6 +339,21 @@ public:
   vtkGetVector2Macro(GeometrySize, int);
 
   /**
+   * The texture of a buffer (Buffers: COLOR_BUFFER, ..., DIRECTION_BUFFER) of the last frame;
+   * nullptr when it was not allocated.
+   */
+  vtkTextureObject* GetBufferTexture(int buffer);
+
+  /** The G-buffer's framebuffer (nullptr before the first frame). */
+  vtkGetObjectMacro(FrameBufferObject, vtkOpenGLFramebufferObject);
+
+  /**
+   * glReadPixels of a buffer of the last frame inside rect (x, y, width, height), as floats
+   * (the components of DownloadChannel()); the context must be current.
+   */
+  void ReadBuffer(int buffer, const int rect[4], float* out);
+
+  /**
    * Reads a buffer of the last frame back as floats (4 components per pixel for colour, normal,
    * position and direction, 1 for depth and linear depth), rows bottom to top. The window's context must be current, as it
    * is right after a render. Returns false when the channel was not allocated.
@@ -408,27 +378,22 @@ protected:
   vtkStylizeGBufferPass();
   ~vtkStylizeGBufferPass() override;
 
+  friend class vtkStylizeDepthPeeler;
+  friend class vtkStylizeGBufferImagePath;
+
   void AllocateTextures(vtkOpenGLRenderWindow* renWin, int w, int h);
-  /** RenderGeometry() for a scene from SceneImagePass; the G-buffer's FBO is bound. */
-  void RenderSceneImage(const vtkRenderState* s, vtkOpenGLRenderWindow* renWin, int w, int h);
   void FreeTextures(vtkWindow* w);
   /**
-   * Sends the channel source's channels of every process to process 0, nearest by depth, into
-   * the composited textures (a collective call). Returns, on process 0, whether any process
-   * drew a surface; false elsewhere.
+   * RenderGeometry()'s steps: the viewport, depth mapping and shader state of the frame (false
+   * for an empty viewport); the textures attached to the framebuffer as its draw buffers; the
+   * props rendered into it.
    */
-  bool CompositeChannelSource(vtkOpenGLRenderWindow* renWin, bool rendered, int w, int h);
-  ///@{
-  /**
-   * Around a translucent layer's geometry render (RenderTranslucentLayer()): the layer's
-   * sequence, the props' depth writes, blending off, the depth textures the shaders test and the
-   * occlusion query; EndLayer() restores all of it.
-   */
-  void BeginLayer(const vtkRenderState* s);
-  void EndLayer(const vtkRenderState* s);
-  ///@}
-  /** glReadPixels of a buffer of the last frame inside rect (x, y, width, height), as floats. */
-  void ReadBuffer(int buffer, const int rect[4], float* out);
+  bool BeginFrame(vtkRenderer* ren, int& w, int& h);
+  void AttachTextures(int w, int h);
+  void RenderProps(const vtkRenderState* s, vtkOpenGLFramebufferObject* fbo);
+  /** The G-buffer lines of a fragment shader (PostReplaceShaderValues()). */
+  std::string ChannelCode(
+    std::string& vertexShader, std::string& geometryShader, std::string& fragmentShader);
 
   int Channels = 0;
   double LogarithmicDepthRatio = 1.0e4;
@@ -460,26 +425,12 @@ protected:
   vtkMultiProcessController* Controller = nullptr;
   bool ChannelSourceUsed = false;
   vtkTypeUInt64 GeometryRenders = 0; // RenderGeometry() calls that rendered geometry
-  vtkOpenGLFramebufferObject* ImageFrameBuffer = nullptr;
-  vtkTextureObject* ImageColorTexture = nullptr;
-  vtkTextureObject* ImageDepthTexture = nullptr;
   vtkCameraPass* GeometryCameraPass = nullptr;
   vtkSequencePass* GeometrySequence = nullptr;
   vtkSequencePass* AfterSequence = nullptr;
   vtkSequencePass* VolumeSequence = nullptr; // AfterSequence without the translucent geometry
-  vtkSequencePass* LayerSequence = nullptr;  // a translucent layer's geometry
   bool DrawTranslucent = true;
-  // RenderTranslucentLayer(): the layer being rendered (-1: opaque geometry), the opaque depth
-  // it lies in front of, whether the shaders peel (built into them) and the previous layer's
-  // depth.
-  int LayerIndex = -1;
-  vtkStylizeGBufferPass* LayerOpaque = nullptr;
-  vtkTextureObject* LayerOpaqueDepth = nullptr;
-  bool BuiltLayer = false;
-  vtkTextureObject* PeelDepthTexture = nullptr;
-  unsigned int LayerQuery = 0;
-  bool LayerBlend = false;       // GL_BLEND before the layer's render
-  bool LayerHasSamples = false;  // the last layer's query result
+  bool BuiltLayer = false; // the shaders test a translucent layer's depths
   vtkRenderPass* OverlayPass = nullptr;
 
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;

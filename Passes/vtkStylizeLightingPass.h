@@ -2,50 +2,22 @@
  * @class   vtkStylizeLightingPass
  * @brief   Replaces VTK's lighting with a selectable model (Standard, Comic, PixelArt).
  *
- * vtkStylizeLightingPass is a vtkOpenGLRenderPass. For every vtkOpenGLPolyDataMapper its delegate
- * renders, it replaces the `//VTK::Light::Dec` and `//VTK::Light::Impl` parts of the fragment
- * shader with one of three lighting models:
- *
- * - **Standard**: VTK's own Phong model, term for term, so the image equals VTK's to within
- *   rounding (headlight shortcut, directional, positional and spot lights, attenuation, cone).
- * - **Comic** (docs/algorithms.md section 2): ambient `La = p1 + I - 2 p1 I` where I is the
- *   property's ambient coefficient and p1 the subject factor; diffuse quantized as
- *   `floor(pd * kd * D) / pmax`, where D is the summed `Ip max(0, N.L)` of the lights, pd varies
- *   linearly from GrayLevelsNear at the near end of the visible depth range to GrayLevelsFar at
- *   the far end and pmax = max(GrayLevelsNear, GrayLevelsFar, 1); Blinn-Phong specular times
- *   SpecularGain.
- * - **PixelArt** (docs/algorithms.md section 1): `sqrt(s) kd I att max(0, N.L)` diffuse and
- *   `M ks Ip max(0, N.H)^beta` specular, with att VTK's attenuation `1/(a0 + a1 r + a2 r^2)`
- *   (1/r^2 for attenuation (0,0,1), 1 for directional lights).
- *
- * It uses the renderer's own vtkLight objects (headlight, camera and scene lights; directional,
- * positional and spot; colour, intensity, attenuation, cone angle, exponent). The enabled lights
- * are packed into a texture buffer each frame, four RGBA32F texels per light, so the shader does
- * not depend on the number of lights: 0, 1, 100 or 1000 lights use the same compiled program and
- * never hit uniform limits. GetMaximumNumberOfLights() tells the implementation's limit.
- *
- * With no enabled light (and the renderer's automatic light creation off), Standard renders
- * unlit as VTK does, Comic renders its ambient term La and PixelArt the plain ambient term.
- * Actors with lighting off, and lines or points without normals, stay unlit as in VTK. Actors
- * with PBR interpolation keep VTK's physically based lighting.
- *
- * Per-actor settings: the Comic parameters (subject factor, gray levels near and far, specular
- * gain) may be set for one actor with the information keys SUBJECT_FACTOR(),
- * GRAY_LEVELS_NEAR(), GRAY_LEVELS_FAR() and SPECULAR_GAIN() in the actor's property keys; the
- * static helpers SetActorSubjectFactor() etc. do this and clamp the value. An actor without a
- * key uses the pass's value.
- *
- * No setting and no scene makes the pass produce NaN or Inf: normals that are zero-length or
- * NaN fall back to the facet normal, pow(0, 0) is defined as 1, attenuation with a zero
- * denominator gives 0, and the result is clamped to [0, 1] like an 8-bit framebuffer.
- *
- * Usage:
+ * vtkStylizeLightingPass is a vtkOpenGLRenderPass. For every vtkOpenGLPolyDataMapper its
+ * delegate renders, it replaces the `//VTK::Light::Dec` and `//VTK::Light::Impl` parts of the
+ * fragment shader with one of three models: Standard (VTK's own Phong model, term for term),
+ * Comic (subject ambient term, depth-dependent quantized diffuse, boosted specular;
+ * docs/algorithms.md section 2) or PixelArt (scattered diffuse, occluded specular; section 1).
+ * It uses the renderer's own vtkLight objects, any number of them with one compiled program.
+ * The Comic parameters may be set per actor with information keys (SetActorSubjectFactor()
+ * etc.); an actor without a key uses the pass's value.
  * @code
  * vtkNew<vtkStylizeLightingPass> lighting;
  * lighting->SetModelToComic();
  * renderer->SetPass(lighting); // the delegate defaults to a vtkRenderStepsPass
  * vtkStylizeLightingPass::SetActorSubjectFactor(subjectActor, 0.8);
  * @endcode
+ *
+ * Formulas, special cases (no light, unlit actors, PBR, NaN) and programs: docs/lighting.md.
  *
  * @sa vtkStylizeGBufferPass
  */

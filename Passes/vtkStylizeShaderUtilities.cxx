@@ -318,3 +318,14 @@ vtkIdType vtkStylizeShaderUtilities::TextureBytes(vtkTextureObject* t)
   return static_cast<vtkIdType>(t->GetWidth()) * t->GetHeight() *
     std::max(1, static_cast<int>(t->GetDepth())) * texel;
 }
+
+//------------------------------------------------------------------------------
+vtkStylizeScopedOutputState::vtkStylizeScopedOutputState(vtkOpenGLState* state)
+  : Blend(state, GL_BLEND)
+  , DepthTest(state, GL_DEPTH_TEST)
+  , ScissorTest(state, GL_SCISSOR_TEST)
+  , BlendFunc(state)
+  , Viewport(state)
+  , Scissor(state)
+{
+}

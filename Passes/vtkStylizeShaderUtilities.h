@@ -17,6 +17,7 @@
 #ifndef vtkStylizeShaderUtilities_h
 #define vtkStylizeShaderUtilities_h
 
+#include "vtkOpenGLState.h"         // for vtkOpenGLState::Scoped*
 #include "vtkStylizePassesModule.h" // for export macro
 #include "vtkType.h"
 
@@ -127,6 +128,21 @@ private:
   vtkOpenGLRenderWindow* Window = nullptr;
   std::string Declarations;
   std::string Body;
+};
+
+/**
+ * Saves the GL state a full-screen stage into the output changes (blending and its function,
+ * the depth test, the scissor test and box, the viewport) and restores it when it goes.
+ */
+struct VTKSTYLIZEPASSES_NO_EXPORT vtkStylizeScopedOutputState
+{
+  explicit vtkStylizeScopedOutputState(vtkOpenGLState* state);
+  vtkOpenGLState::ScopedglEnableDisable Blend;
+  vtkOpenGLState::ScopedglEnableDisable DepthTest;
+  vtkOpenGLState::ScopedglEnableDisable ScissorTest;
+  vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglScissor Scissor;
 };
 
 #endif

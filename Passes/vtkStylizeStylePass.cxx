@@ -17,19 +17,18 @@
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeShaderUtilities.h"
+#include "vtkStylizeStageRunner.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include "vtkStylizeCommonFS.h"
 #include "vtkStylizeDepthFS.h"
-#include "vtkStylizeFieldFS.h"
 #include "vtkStylizeScreenFS.h"
 
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <utility>
@@ -39,6 +38,7 @@ class vtkStylizeStylePass::vtkInternals
 public:
   vtkNew<vtkStylizeLightingPass> Lighting;
   vtkNew<vtkStylizeGBufferPass> GBuffer;
+  vtkNew<vtkStylizeStageRunner> Runner;
   // Translucent layers (RenderTranslucentLayers()): their G-buffer, the scene the stages read
   // (GBuffer, or LayerGBuffer while a layer is stylized), the layer's number (0: opaque), the
   // layers' composite (premultiplied, front to back) and its framebuffer and program.
@@ -48,58 +48,14 @@ public:
   vtkTextureObject* LayerTexture = nullptr;
   vtkOpenGLFramebufferObject* LayerFramebuffer = nullptr;
   vtkStylizeScreenQuad LayerQuad;
-
-  // Shader assembly: the style's source, its stages and the last frame's defines.
-  std::string StyleSource;
-  std::string MainCall;
-  std::vector<std::string> StageDefines;
-  std::string Defines;
-  std::vector<std::string> Declarations; // one per stage
-  std::vector<std::unique_ptr<vtkStylizeScreenQuad>> Quads;
   vtkStylizeScreenQuad BackgroundQuad; // the background around the scene's rectangle
-
-  vtkOpenGLRenderWindow* Window = nullptr; // of the frame being rendered
-  vtkOpenGLFramebufferObject* Framebuffer = nullptr;
   std::vector<vtkTextureObject*> Textures; // the style's slots
-  bool StageFailed = false;
+  bool Culling = true;                     // BackgroundCullingOn()
 
-  // The direction field: its first stage's index (-1: the style has none) and its textures
-  // (the raw field's ping-pong pair and the resolved field).
-  int FieldStage = -1;
-  vtkTextureObject* FieldTextures[3] = { nullptr, nullptr, nullptr };
-  int FieldResolved = -1; // index in FieldTextures of the last resolved field
-
-  // The stages' framebuffer and the layers' (a layer's stages bind theirs inside it).
-  void FreeFramebuffer(vtkWindow* w)
-  {
-    for (vtkOpenGLFramebufferObject** fbo : { &this->Framebuffer, &this->LayerFramebuffer })
-    {
-      if (*fbo)
-      {
-        if (w)
-        {
-          (*fbo)->ReleaseGraphicsResources(w);
-        }
-        (*fbo)->Delete();
-        *fbo = nullptr;
-      }
-    }
-  }
-
-  // Makes `fbo` (created on first use) the draw framebuffer, the current bindings saved for
-  // RestorePreviousBindingsAndBuffers().
-  static vtkOpenGLFramebufferObject* BindFramebuffer(
-    vtkOpenGLFramebufferObject*& fbo, vtkOpenGLRenderWindow* window)
-  {
-    if (!fbo)
-    {
-      fbo = vtkOpenGLFramebufferObject::New();
-      fbo->SetContext(window);
-    }
-    fbo->SaveCurrentBindingsAndBuffers();
-    fbo->Bind();
-    return fbo;
-  }
+  // This frame's guard band (PlanGuardBand()): the stages' size and the screen transform.
+  bool Guarded = false;
+  int GuardSize[2] = { 0, 0 };
+  double GuardTransform[4] = { 1.0, 1.0, 0.0, 0.0 };
 
   void FreeTextures(vtkWindow* w)
   {
@@ -108,85 +64,11 @@ public:
       vtkStylizeShaderUtilities::FreeTexture(t, w);
     }
     vtkStylizeShaderUtilities::FreeTexture(this->LayerTexture, w);
-    this->FreeField(w);
-  }
-
-  void FreeField(vtkWindow* w)
-  {
-    for (vtkTextureObject*& t : this->FieldTextures)
-    {
-      vtkStylizeShaderUtilities::FreeTexture(t, w);
-    }
-    this->FieldResolved = -1;
-  }
-
-  // Stage timing (StageTimingOn()): the last frame's stages as (name, milliseconds, runs).
-  struct StageTime
-  {
-    std::string Name;
-    double Milliseconds = 0.0;
-    int Runs = 0;
-  };
-  bool Timing = false;
-  bool Culling = true; // BackgroundCullingOn()
-
-  // This frame's guard band (PlanGuardBand()): the stages' size and the screen transform.
-  bool Guarded = false;
-  int GuardSize[2] = { 0, 0 };
-  double GuardTransform[4] = { 1.0, 1.0, 0.0, 0.0 };
-  std::vector<StageTime> Times;
-  std::chrono::steady_clock::time_point TimingStart;
-
-  void TimeBegin()
-  {
-    if (this->Timing)
-    {
-      glFinish();
-      this->TimingStart = std::chrono::steady_clock::now();
-    }
-  }
-
-  void TimeEnd(const std::string& name) // no copy of the name when timing is off
-  {
-    if (!this->Timing)
-    {
-      return;
-    }
-    glFinish();
-    const double ms = std::chrono::duration<double, std::milli>(
-      std::chrono::steady_clock::now() - this->TimingStart)
-                        .count();
-    auto it = std::find_if(this->Times.begin(), this->Times.end(),
-      [&](const StageTime& t) { return t.Name == name; });
-    if (it == this->Times.end())
-    {
-      this->Times.push_back(StageTime{ name, 0.0, 0 });
-      it = this->Times.end() - 1;
-    }
-    it->Milliseconds += ms;
-    it->Runs++;
-  }
-
-  const std::string& StageName(int stage) const
-  {
-    static const std::string output = "OUTPUT";
-    const std::string& d = this->StageDefines[stage];
-    return d.empty() ? output : d;
-  }
-
-  // Makes stage `stage`'s program current; nullptr (and StageFailed) when it does not build.
-  vtkShaderProgram* Prepare(int stage)
-  {
-    vtkShaderProgram* program =
-      this->Quads[stage]->Prepare(this->Window, this->Declarations[stage], this->MainCall);
-    this->StageFailed = this->StageFailed || !program;
-    return program;
   }
 };
 
 //------------------------------------------------------------------------------
-vtkStylizeStylePass::vtkStylizeStylePass(int lightingModel, const char* styleSource,
-  std::vector<std::string> stageDefines, const char* mainCall, bool directionField)
+vtkStylizeStylePass::vtkStylizeStylePass(int lightingModel)
   : Internals(new vtkInternals)
 {
   vtkInternals& in = *this->Internals;
@@ -194,32 +76,30 @@ vtkStylizeStylePass::vtkStylizeStylePass(int lightingModel, const char* styleSou
   in.GBuffer->SetLightingPass(in.Lighting);
   in.LayerGBuffer->SetLightingPass(in.Lighting);
   in.Scene = in.GBuffer;
-  in.StyleSource = styleSource;
-  in.MainCall = mainCall;
-  in.StageDefines = std::move(stageDefines);
-  if (directionField)
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::SetStages(
+  const std::string& source, const std::string& mainCall, const std::vector<vtkStylizeStage>& stages)
+{
+  std::vector<std::string> defines, names;
+  for (size_t i = 0; i < stages.size(); ++i)
   {
-    // The field's GLSL before the style's (the style's stages call its camera helpers), its
-    // stages after the style's, and main() runs the field's function in those.
-    in.StyleSource = std::string(vtkStylizeFieldFS) + in.StyleSource;
-    in.MainCall = "#ifdef STYLIZE_FIELD_STAGE\n  stylizeFieldMain();\n#else\n" + in.MainCall +
-      "#endif\n";
-    in.FieldStage = static_cast<int>(in.StageDefines.size());
-    in.StageDefines.insert(in.StageDefines.end(),
-      { "FIELD_STAGE_ESTIMATE", "FIELD_STAGE_SMOOTH", "FIELD_STAGE_RESOLVE" });
+    if (stages[i].Index != static_cast<int>(i))
+    {
+      vtkErrorMacro("Stage " << i << " of " << this->GetClassName() << " is out of order.");
+    }
+    defines.emplace_back(stages[i].Define);
+    names.emplace_back(stages[i].Name);
   }
-  in.Declarations.resize(in.StageDefines.size());
-  for (size_t i = 0; i < in.StageDefines.size(); ++i)
-  {
-    in.Quads.emplace_back(new vtkStylizeScreenQuad);
-  }
+  this->Internals->Runner->SetStages(source, mainCall, defines, names);
 }
 
 //------------------------------------------------------------------------------
 vtkStylizeStylePass::~vtkStylizeStylePass()
 {
   this->Internals->FreeTextures(nullptr);
-  this->Internals->FreeFramebuffer(nullptr);
+  vtkStylizeStageRunner::FreeFramebuffer(this->Internals->LayerFramebuffer, nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -231,7 +111,7 @@ void vtkStylizeStylePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "WindowScale: " << this->WindowScale[0] << " " << this->WindowScale[1] << "\n";
   os << indent << "BackgroundCulling: " << (this->Internals->Culling ? "on" : "off") << "\n";
-  os << indent << "StageTiming: " << (this->Internals->Timing ? "on" : "off") << "\n";
+  os << indent << "StageTiming: " << (this->Internals->Runner->Timing ? "on" : "off") << "\n";
   os << indent << "LightingPass:\n";
   this->Internals->Lighting->PrintSelf(os, indent.GetNextIndent());
 }
@@ -264,19 +144,19 @@ vtkStylizeGBufferPass* vtkStylizeStylePass::GetGBufferPass()
 //------------------------------------------------------------------------------
 void vtkStylizeStylePass::StageTimingOn()
 {
-  this->Internals->Timing = true;
+  this->Internals->Runner->Timing = true;
 }
 
 //------------------------------------------------------------------------------
 void vtkStylizeStylePass::StageTimingOff()
 {
-  this->Internals->Timing = false;
+  this->Internals->Runner->Timing = false;
 }
 
 //------------------------------------------------------------------------------
 bool vtkStylizeStylePass::GetStageTiming()
 {
-  return this->Internals->Timing;
+  return this->Internals->Runner->Timing;
 }
 
 //------------------------------------------------------------------------------
@@ -309,54 +189,85 @@ vtkIdType vtkStylizeStylePass::GetTextureBytes()
   {
     total += vtkStylizeShaderUtilities::TextureBytes(t);
   }
-  for (vtkTextureObject* t : in.FieldTextures)
-  {
-    total += vtkStylizeShaderUtilities::TextureBytes(t);
-  }
-  return total;
+  return total + this->GetStyleTextureBytes();
 }
 
 //------------------------------------------------------------------------------
 int vtkStylizeStylePass::GetNumberOfTimedStages()
 {
-  return static_cast<int>(this->Internals->Times.size());
+  return this->Internals->Runner->GetNumberOfTimedStages();
 }
 
 //------------------------------------------------------------------------------
 const char* vtkStylizeStylePass::GetTimedStageName(int i)
 {
-  const auto& t = this->Internals->Times;
-  return i >= 0 && i < static_cast<int>(t.size()) ? t[i].Name.c_str() : nullptr;
+  return this->Internals->Runner->GetTimedStageName(i);
 }
 
 //------------------------------------------------------------------------------
 double vtkStylizeStylePass::GetTimedStageMilliseconds(int i)
 {
-  const auto& t = this->Internals->Times;
-  return i >= 0 && i < static_cast<int>(t.size()) ? t[i].Milliseconds : 0.0;
+  return this->Internals->Runner->GetTimedStageMilliseconds(i);
 }
 
 //------------------------------------------------------------------------------
 int vtkStylizeStylePass::GetTimedStageRuns(int i)
 {
-  const auto& t = this->Internals->Times;
-  return i >= 0 && i < static_cast<int>(t.size()) ? t[i].Runs : 0;
+  return this->Internals->Runner->GetTimedStageRuns(i);
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::AnchorPatternsToSurface(bool keepNoise)
+{
+  if (this->PatternsAnchored)
+  {
+    this->RestoreAnchors(); // the settings saved first stay the ones to restore
+  }
+  this->AnchorToSurface(keepNoise);
+  this->PatternsAnchored = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::RestorePatternAnchors()
+{
+  if (this->PatternsAnchored)
+  {
+    this->RestoreAnchors();
+    this->PatternsAnchored = false;
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkStylizeStylePass::GetPixelsPerPoint(int height, int tiles)
+{
+  const double reference = this->GetPointReferenceHeight();
+  return reference > 0.0 ? std::max(1, height) / reference
+                         : std::max(1, tiles) * static_cast<double>(this->WindowScale[1]);
+}
+
+//------------------------------------------------------------------------------
+double vtkStylizeStylePass::PointSize(const Frame& frame)
+{
+  // Points -> pixels of the full (possibly tiled, magnified) image.
+  const double reference = this->GetPointReferenceHeight();
+  return reference > 0.0 ? frame.FullSize[1] / reference : frame.TileScale[1];
 }
 
 //------------------------------------------------------------------------------
 bool vtkStylizeStylePass::BeginFrame(const vtkRenderState* s, Frame& frame)
 {
   vtkOpenGLClearErrorMacro();
-  if (this->Internals->Timing)
+  vtkStylizeStageRunner* runner = this->Internals->Runner;
+  if (runner->Timing)
   {
-    this->Internals->Times.clear();
+    runner->ClearTimes();
   }
   this->NumberOfRenderedProps = 0;
-  this->Internals->StageFailed = false;
+  runner->ResetFailure();
   vtkRenderer* ren = s->GetRenderer();
   frame.Renderer = ren;
   frame.Window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  this->Internals->Window = frame.Window;
+  runner->SetWindow(frame.Window);
   if (!frame.Window)
   {
     return false;
@@ -487,11 +398,11 @@ bool vtkStylizeStylePass::RenderScene(const vtkRenderState* s, const SceneReques
     gbuffer->SetGeometryScreenTransform(t[0], t[1], t[2], t[3]);
   }
   gbuffer->SetAfterScreenShift(request.AfterShift[0], request.AfterShift[1]);
-  this->Internals->TimeBegin();
+  this->Internals->Runner->TimeBegin();
   const bool rendered = layer > 0
     ? gbuffer->RenderTranslucentLayer(s, this->Internals->GBuffer, layer - 1)
     : gbuffer->RenderGeometry(s);
-  this->Internals->TimeEnd(layer > 0 ? "LAYER_SCENE" : "SCENE");
+  this->Internals->Runner->TimeEnd(layer > 0 ? "LAYER_SCENE" : "SCENE");
   if (!rendered && layer == 0)
   {
     this->EndFrame(s);
@@ -543,7 +454,7 @@ void vtkStylizeStylePass::RenderTranslucentLayers(const vtkRenderState* s, const
   vtkOpenGLState* ostate = win->GetState();
   vtkStylizeShaderUtilities::EnsureScreenTexture(
     in.LayerTexture, win, frame.Size[0], frame.Size[1], GL_RGBA16F, false);
-  vtkOpenGLFramebufferObject* fbo = vtkInternals::BindFramebuffer(in.LayerFramebuffer, win);
+  vtkOpenGLFramebufferObject* fbo = vtkStylizeStageRunner::BindFramebuffer(in.LayerFramebuffer, win);
   fbo->AddColorAttachment(0, in.LayerTexture);
   fbo->ActivateDrawBuffers(1);
   {
@@ -581,17 +492,12 @@ void vtkStylizeStylePass::RenderTranslucentLayers(const vtkRenderState* s, const
   static const std::string layersSource = std::string("#define STYLIZE_STAGE_LAYERS\n") +
     vtkStylizeCommonFS + vtkStylizeDepthFS + vtkStylizeScreenFS;
   vtkShaderProgram* program = in.LayerQuad.Prepare(win, layersSource, "  stylizeLayersMain();\n");
-  in.StageFailed = in.StageFailed || !program;
+  in.Runner->NoteFailure(!program);
   if (!program)
   {
     return;
   }
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkStylizeScopedOutputState saved(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
   ostate->vtkglViewport(frame.Origin[0], frame.Origin[1], frame.Size[0], frame.Size[1]);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
@@ -604,20 +510,20 @@ void vtkStylizeStylePass::RenderTranslucentLayers(const vtkRenderState* s, const
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   vtkStylizeUniforms u(program);
   u.Texture("stylizeLayersTexture", in.LayerTexture);
-  in.TimeBegin();
+  in.Runner->TimeBegin();
   in.LayerQuad.Render();
-  in.TimeEnd("LAYERS");
+  in.Runner->TimeEnd("LAYERS");
 }
 
 //------------------------------------------------------------------------------
 void vtkStylizeStylePass::EndFrame(const vtkRenderState* s)
 {
   vtkStylizeGBufferPass* gbuffer = this->Internals->GBuffer;
-  this->Internals->TimeBegin();
+  this->Internals->Runner->TimeBegin();
   gbuffer->RenderAfterGeometry(s);
-  this->Internals->TimeEnd("AFTER");
+  this->Internals->Runner->TimeEnd("AFTER");
   this->NumberOfRenderedProps = gbuffer->GetNumberOfRenderedProps();
-  if (this->Internals->StageFailed)
+  if (this->Internals->Runner->GetFailed())
   {
     vtkErrorMacro("Could not build a " << this->GetClassName() << " shader.");
   }
@@ -627,19 +533,7 @@ void vtkStylizeStylePass::EndFrame(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 void vtkStylizeStylePass::SetShaderDefines(const std::string& defines)
 {
-  vtkInternals& in = *this->Internals;
-  if (defines == in.Defines && !in.Declarations.empty() && !in.Declarations[0].empty())
-  {
-    return;
-  }
-  in.Defines = defines;
-  const std::string shared = defines + vtkStylizeCommonFS + vtkStylizeDepthFS +
-    vtkStylizeScreenFS + in.StyleSource;
-  for (size_t i = 0; i < in.StageDefines.size(); ++i)
-  {
-    const std::string& stage = in.StageDefines[i];
-    in.Declarations[i] = stage.empty() ? shared : "#define " + stage + "\n" + shared;
-  }
+  this->Internals->Runner->SetDefines(defines);
 }
 
 //------------------------------------------------------------------------------
@@ -656,66 +550,13 @@ bool vtkStylizeStylePass::RenderStage(int stage,
   std::initializer_list<vtkTextureObject*> targets, int w, int h, const StageUniforms& uniforms,
   int coverage)
 {
+  // Surface-only stages skip the background by an early depth test against the G-buffer's
+  // depth, where it has the stage's size.
   vtkInternals& in = *this->Internals;
-  vtkOpenGLRenderWindow* renWin = in.Window;
-  vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-
-  vtkOpenGLFramebufferObject* fbo = vtkInternals::BindFramebuffer(in.Framebuffer, renWin);
-  unsigned int n = 0;
-  for (vtkTextureObject* t : targets)
-  {
-    fbo->AddColorAttachment(n++, t);
-  }
-  fbo->ActivateDrawBuffers(n);
-  ostate->vtkglViewport(0, 0, w, h);
-  ostate->vtkglScissor(0, 0, w, h);
-  // Surface-only stages: the targets are cleared to zero, then an early depth test against the
-  // G-buffer's depth (the quad at the far plane, GL_GREATER, no depth writes) leaves the
-  // background's fragments unshaded. A renderer that shades in blocks (llvmpipe, GPUs) skips a
-  // block with no surface pixel instead of running the stage's branches masked.
   vtkTextureObject* depth = in.Scene->GetDepthTexture();
-  const bool skipBackground = in.Culling && coverage == SURFACE_PIXELS && depth &&
+  const bool cull = in.Culling && coverage == SURFACE_PIXELS && depth &&
     static_cast<int>(depth->GetWidth()) == w && static_cast<int>(depth->GetHeight()) == h;
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-  GLdouble depthRange[2] = { 0.0, 1.0 };
-  in.TimeBegin();
-  if (skipBackground)
-  {
-    ostate->vtkglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-    fbo->AddDepthAttachment(depth);
-    ostate->vtkglEnable(GL_DEPTH_TEST);
-    ostate->vtkglDepthFunc(GL_GREATER);
-    ostate->vtkglDepthMask(GL_FALSE);
-    glGetDoublev(GL_DEPTH_RANGE, depthRange);
-    glDepthRange(1.0, 1.0);
-  }
-  vtkShaderProgram* program = in.Prepare(stage);
-  if (program)
-  {
-    vtkStylizeUniforms u(program);
-    uniforms(u);
-    in.Quads[stage]->Render();
-  }
-  in.TimeEnd(in.StageName(stage));
-  if (skipBackground)
-  {
-    glDepthRange(depthRange[0], depthRange[1]);
-    fbo->RemoveDepthAttachment();
-  }
-  fbo->RemoveColorAttachments(n);
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
-  return program != nullptr;
+  return in.Runner->Run(stage, targets, w, h, uniforms, cull ? depth : nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -723,14 +564,9 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
   const StageUniforms& uniforms, int margin)
 {
   vtkInternals& in = *this->Internals;
-  vtkOpenGLState* ostate = in.Window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkStylizeScopedOutputState saved(ostate);
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   const bool layer = in.Layer > 0;
   if (layer)
   {
@@ -774,75 +610,75 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
   // Outside the scene's rectangle the background program writes the background (four strips
   // around it); the stage runs inside it only.
   int rect[4] = { 0, 0, frame.Size[0], frame.Size[1] };
-  const bool split = in.Culling && writeDepth && margin >= 0 && this->SceneRectangle(frame, margin, rect);
-  if (split)
+  if (in.Culling && writeDepth && margin >= 0 && this->SceneRectangle(frame, margin, rect))
   {
-    in.TimeBegin();
-    const int strips[4][4] = { { 0, 0, frame.Size[0], rect[1] },
-      { 0, rect[3], frame.Size[0], frame.Size[1] }, { 0, rect[1], rect[0], rect[3] },
-      { rect[2], rect[1], frame.Size[0], rect[3] } };
-    // The background as the stage would write it: nothing in a layered renderer (discarded), a
-    // clear for a flat one (its snapped colour, alpha 1, the far plane), else the program.
-    float flat[4];
-    // (a translucent layer adds nothing there either)
-    const bool layered = frame.Renderer->Transparent() != 0 || layer;
-    const bool clear = !layered && vtkStylizeGBufferPass::GetFlatBackground(frame.Renderer, flat);
-    vtkShaderProgram* background = nullptr;
-    if (!layered && !clear)
-    {
-      static const std::string source = std::string("#define STYLIZE_STAGE_BACKGROUND\n") +
-        vtkStylizeCommonFS + vtkStylizeDepthFS + vtkStylizeScreenFS; // assembled once
-      background = in.BackgroundQuad.Prepare(in.Window, source, "  stylizeBackgroundMain();\n");
-      in.StageFailed = in.StageFailed || !background;
-    }
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
-    std::unique_ptr<vtkStylizeUniforms> u;
-    if (background)
-    {
-      u.reset(new vtkStylizeUniforms(background));
-      this->BindSceneTextures(*u);
-      this->SetSceneOutputUniforms(*u, frame.Renderer);
-    }
-    if (clear)
-    {
-      ostate->vtkglClearColor(flat[0], flat[1], flat[2], flat[3]);
-      ostate->vtkglClearDepth(1.0);
-    }
-    for (const auto& b : strips)
-    {
-      if (layered || b[2] <= b[0] || b[3] <= b[1])
-      {
-        continue;
-      }
-      scissor(b[0], b[1], b[2], b[3]);
-      if (clear)
-      {
-        ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      }
-      else if (background)
-      {
-        in.BackgroundQuad.Render();
-      }
-    }
-    u.reset(); // releases the texture units
-    in.TimeEnd("BACKGROUND");
+    const bool drawn = this->RenderBackgroundStrips(frame, rect, layer, scissor);
     if (rect[2] <= rect[0] || rect[3] <= rect[1])
     {
-      return layered || clear || background; // nothing of the scene is in view
+      return drawn; // nothing of the scene is in view
     }
     scissor(rect[0], rect[1], rect[2], rect[3]);
   }
-  vtkShaderProgram* program = in.Prepare(stage);
-  if (program)
+  return in.Runner->RunHere(stage, uniforms);
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStylePass::RenderBackgroundStrips(const Frame& frame, const int rect[4],
+  bool layer, const std::function<void(int, int, int, int)>& scissor)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  in.Runner->TimeBegin();
+  const int strips[4][4] = { { 0, 0, frame.Size[0], rect[1] },
+    { 0, rect[3], frame.Size[0], frame.Size[1] }, { 0, rect[1], rect[0], rect[3] },
+    { rect[2], rect[1], frame.Size[0], rect[3] } };
+  // The background as the stage would write it: nothing in a layered renderer (discarded), a
+  // clear for a flat one (its snapped colour, alpha 1, the far plane), else the program.
+  float flat[4];
+  // (a translucent layer adds nothing there either)
+  const bool layered = frame.Renderer->Transparent() != 0 || layer;
+  const bool clear = !layered && vtkStylizeGBufferPass::GetFlatBackground(frame.Renderer, flat);
+  vtkShaderProgram* background = nullptr;
+  if (!layered && !clear)
   {
-    vtkStylizeUniforms u(program);
-    uniforms(u);
-    in.TimeBegin();
-    in.Quads[stage]->Render();
-    in.TimeEnd(in.StageName(stage));
+    static const std::string source = std::string("#define STYLIZE_STAGE_BACKGROUND\n") +
+      vtkStylizeCommonFS + vtkStylizeDepthFS + vtkStylizeScreenFS; // assembled once
+    background = in.BackgroundQuad.Prepare(frame.Window, source, "  stylizeBackgroundMain();\n");
+    in.Runner->NoteFailure(!background);
   }
-  return program != nullptr;
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  std::unique_ptr<vtkStylizeUniforms> u;
+  if (background)
+  {
+    u.reset(new vtkStylizeUniforms(background));
+    this->BindSceneTextures(*u);
+    this->SetSceneOutputUniforms(*u, frame.Renderer);
+  }
+  if (clear)
+  {
+    ostate->vtkglClearColor(flat[0], flat[1], flat[2], flat[3]);
+    ostate->vtkglClearDepth(1.0);
+  }
+  for (const auto& b : strips)
+  {
+    if (layered || b[2] <= b[0] || b[3] <= b[1])
+    {
+      continue;
+    }
+    scissor(b[0], b[1], b[2], b[3]);
+    if (clear)
+    {
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+    else if (background)
+    {
+      in.BackgroundQuad.Render();
+    }
+  }
+  u.reset(); // releases the texture units
+  in.Runner->TimeEnd("BACKGROUND");
+  return layered || clear || background;
 }
 
 //------------------------------------------------------------------------------
@@ -984,20 +820,21 @@ vtkTextureObject*& vtkStylizeStylePass::TextureSlot(int slot)
 vtkTextureObject* vtkStylizeStylePass::EnsureTexture(int slot, int w, int h, int internalFormat)
 {
   vtkTextureObject*& tex = this->TextureSlot(slot);
-  vtkStylizeShaderUtilities::EnsureScreenTexture(tex, this->Internals->Window, w, h, internalFormat);
+  vtkStylizeShaderUtilities::EnsureScreenTexture(
+    tex, this->Internals->Runner->GetWindow(), w, h, internalFormat);
   return tex;
 }
 
 //------------------------------------------------------------------------------
 void vtkStylizeStylePass::FreeTexture(int slot)
 {
-  vtkStylizeShaderUtilities::FreeTexture(this->TextureSlot(slot), this->Internals->Window);
+  vtkStylizeShaderUtilities::FreeTexture(this->TextureSlot(slot), this->Internals->Runner->GetWindow());
 }
 
 //------------------------------------------------------------------------------
 bool vtkStylizeStylePass::DownloadTexture(vtkTextureObject* tex, vtkFloatArray* out)
 {
-  vtkOpenGLFramebufferObject* fbo = this->Internals->Framebuffer;
+  vtkOpenGLFramebufferObject* fbo = this->Internals->Runner->GetFramebuffer();
   if (!tex || !out || !fbo)
   {
     return false;
@@ -1023,12 +860,9 @@ void vtkStylizeStylePass::ReleaseGraphicsResources(vtkWindow* w)
   this->Superclass::ReleaseGraphicsResources(w);
   vtkInternals& in = *this->Internals;
   in.BackgroundQuad.Release(w);
-  for (auto& quad : in.Quads)
-  {
-    quad->Release(w);
-  }
+  in.Runner->ReleaseGraphicsResources(w);
   in.FreeTextures(w);
-  in.FreeFramebuffer(w);
+  vtkStylizeStageRunner::FreeFramebuffer(in.LayerFramebuffer, w);
   in.LayerQuad.Release(w);
   in.GBuffer->ReleaseGraphicsResources(w);
   in.LayerGBuffer->ReleaseGraphicsResources(w);
@@ -1036,29 +870,11 @@ void vtkStylizeStylePass::ReleaseGraphicsResources(vtkWindow* w)
 }
 
 //------------------------------------------------------------------------------
-std::string vtkStylizeStylePass::FieldDefines(const FieldSettings& s)
-{
-  std::string defines;
-  AddDefine(defines, true, "FIELD_NEIGHBORS " + std::to_string(s.Neighbors));
-  AddDefine(defines, s.Model, "FIELD_MODEL");
-  AddDefine(defines, true, "FIELD_DIRECTION " + std::to_string(s.Direction));
-  return defines;
-}
-
-//------------------------------------------------------------------------------
-double vtkStylizeStylePass::FocalPixelWorld(const Frame& frame)
-{
-  const double focal =
-    frame.Parallel ? frame.PixelWorld : frame.PixelWorld * frame.Camera->GetDistance();
-  return focal > 0.0 && std::isfinite(focal) ? focal : 1.0;
-}
-
-//------------------------------------------------------------------------------
 void vtkStylizeStylePass::SetFieldUniforms(vtkStylizeUniforms& u, const Frame& frame)
 {
   // The projection onto the stages' pixels: the guard band's screen transform after the
   // camera's (row a becomes s_a row a + t_a row 3). (Not GetProjectionTransformMatrix(ren),
-  // which returns a new matrix, transposed: a tile's off-centre terms were read as zero.)
+  // which returns a new matrix, transposed: read as this one, a tile's off-centre terms are lost.)
   vtkMatrix4x4* projection = frame.Camera->GetProjectionTransformMatrix(
     frame.Renderer->GetTiledAspectRatio(), -1.0, 1.0);
   auto element = [&](int row, int column) {
@@ -1075,174 +891,3 @@ void vtkStylizeStylePass::SetFieldUniforms(vtkStylizeUniforms& u, const Frame& f
   this->SetDepthMappingUniforms(u);
 }
 
-//------------------------------------------------------------------------------
-struct vtkStylizeStylePass::FieldPlan
-{
-  double SpacingWorld = 0.0; // the estimate's neighbour spacing, world units
-  int MaxStride = 1;         // the estimate's largest neighbour distance, pixels
-  int GradientStride = 1;    // the lighting-gradient fallback's tap distance, pixels
-  // The smoothing and fill passes: tap distance (pixels), fill only.
-  std::vector<std::pair<int, int>> Iterations;
-};
-
-//------------------------------------------------------------------------------
-vtkStylizeStylePass::FieldPlan vtkStylizeStylePass::PlanField(
-  const Frame& frame, const FieldSettings& s, double pointSize)
-{
-  FieldPlan plan;
-  const double focalPixel = FocalPixelWorld(frame);
-
-  // The estimate's neighbour spacing in world units: NeighborSpacing points at the focal
-  // distance, at least ObjectScale times the scene's diagonal; the smoothing radius grows by the
-  // same factor (at most 256 points).
-  double spacingWorld = s.NeighborSpacing * pointSize * focalPixel;
-  double scale = 1.0;
-  if (s.ObjectScale > 0.0 && spacingWorld > 0.0)
-  {
-    auto valid = [](const double* b) {
-      return std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }) && b[0] <= b[1] &&
-        b[2] <= b[3] && b[4] <= b[5];
-    };
-    double b[6];
-    std::copy(s.SceneBounds, s.SceneBounds + 6, b);
-    if (!valid(b))
-    {
-      frame.Renderer->ComputeVisiblePropBounds(b);
-    }
-    if (valid(b))
-    {
-      const double diagonal =
-        std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-          (b[5] - b[4]) * (b[5] - b[4]));
-      const double object = s.ObjectScale * diagonal;
-      if (std::isfinite(object) && object > spacingWorld)
-      {
-        scale = object / spacingWorld;
-        spacingWorld = object;
-      }
-    }
-  }
-  plan.SpacingWorld = spacingWorld;
-  const double smoothingRadius = std::min(s.SmoothingRadius * scale, 256.0) * pointSize;
-  plan.MaxStride = std::max(1, static_cast<int>(std::lround(s.MaxStride * pointSize)));
-  plan.GradientStride = std::max(1, static_cast<int>(std::lround(2.0 * pointSize)));
-  const double fillRadius = s.FillRadius > 0.0 ? std::max(1.0, s.FillRadius * pointSize) : -1.0;
-
-  // Smoothing (all pixels, 3x3 at tap distances 1, 2, 4, ... points up to the smoothing
-  // radius, then at distance 1 pixel), then filling (undefined pixels, distances 1, 2, 4, ...).
-  // The taps are in points (at least a pixel), so that a magnified image is smoothed over the
-  // same part of the picture.
-  // A smoothing pass fills undefined pixels as it smooths (they take their neighbours'
-  // directions), so the fill iterations start beyond the pyramid's largest tap distance: the
-  // ones below it would repeat it (fill-only passes at those distances changed at most 0.1% of
-  // the directions on the real-data meshes, and cost as much as a smoothing pass).
-  int pyramid = 0;
-  for (double pt = 1.0; pt <= smoothingRadius / pointSize; pt *= 2.0)
-  {
-    pyramid = std::max(1, static_cast<int>(std::lround(pt * pointSize)));
-    plan.Iterations.emplace_back(pyramid, 0);
-  }
-  for (int i = 0; i < s.SmoothingIterations; ++i)
-  {
-    plan.Iterations.emplace_back(1, 0);
-  }
-  for (int r = 1; fillRadius > 0.0 && r <= fillRadius; r *= 2)
-  {
-    if (r > pyramid)
-    {
-      plan.Iterations.emplace_back(r, 1);
-    }
-  }
-  return plan;
-}
-
-//------------------------------------------------------------------------------
-double vtkStylizeStylePass::FieldReach(
-  const Frame& frame, const FieldSettings& s, double pointSize)
-{
-  const FieldPlan plan = PlanField(frame, s, pointSize);
-  double reach = plan.MaxStride + plan.GradientStride;
-  for (const auto& it : plan.Iterations)
-  {
-    reach += it.first;
-  }
-  return reach;
-}
-
-//------------------------------------------------------------------------------
-vtkTextureObject* vtkStylizeStylePass::RenderDirectionField(
-  const Frame& frame, const FieldSettings& s, double pointSize)
-{
-  vtkInternals& in = *this->Internals;
-  if (in.FieldStage < 0)
-  {
-    return nullptr;
-  }
-  const int w = frame.Size[0], h = frame.Size[1];
-  const FieldPlan plan = PlanField(frame, s, pointSize);
-  const double fallback = vtkMath::RadiansFromDegrees(s.FallbackAngle);
-
-  // Every stage computes only the surface's pixels (SURFACE_PIXELS): the background is zero,
-  // "no direction", in every texture of the field.
-  // 1. Raw directions.
-  vtkTextureObject*& raw0 = in.FieldTextures[0];
-  vtkStylizeShaderUtilities::EnsureScreenTexture(raw0, in.Window, w, h, GL_RGBA16F);
-  this->RenderStage(in.FieldStage, { raw0 }, w, h, [&](vtkStylizeUniforms& u) {
-    this->SetFieldUniforms(u, frame);
-    u.Float("fieldSpacing", plan.SpacingWorld)
-      .Int("fieldMaxStride", plan.MaxStride)
-      .Float("fieldPlanar", s.PlanarTolerance)
-      .Float("fieldUmbilic", s.UmbilicTolerance);
-  }, SURFACE_PIXELS);
-
-  // 2. Smoothing and filling (PlanField()).
-  const std::vector<std::pair<int, int>>& iterations = plan.Iterations;
-  int current = 0;
-  if (iterations.empty())
-  {
-    vtkStylizeShaderUtilities::FreeTexture(in.FieldTextures[1], in.Window);
-  }
-  else
-  {
-    vtkStylizeShaderUtilities::EnsureScreenTexture(
-      in.FieldTextures[1], in.Window, w, h, GL_RGBA16F);
-  }
-  for (const auto& it : iterations)
-  {
-    const int next = 1 - current;
-    this->RenderStage(in.FieldStage + 1, { in.FieldTextures[next] }, w, h,
-      [&](vtkStylizeUniforms& u) {
-        this->SetFieldUniforms(u, frame);
-        u.Texture("fieldInput", in.FieldTextures[current])
-          .Int("fieldRadius", it.first)
-          .Int("fieldFillOnly", it.second);
-      },
-      SURFACE_PIXELS);
-    current = next;
-  }
-
-  // 3. Fallbacks and the requested direction.
-  vtkTextureObject*& resolved = in.FieldTextures[2];
-  vtkStylizeShaderUtilities::EnsureScreenTexture(resolved, in.Window, w, h, GL_RGBA32F);
-  this->RenderStage(in.FieldStage + 2, { resolved }, w, h, [&](vtkStylizeUniforms& u) {
-    this->SetFieldUniforms(u, frame);
-    u.Texture("fieldInput", in.FieldTextures[current])
-      .Int("fieldGradientStride", plan.GradientStride)
-      .Float2("fieldScreenDirection", std::cos(fallback), std::sin(fallback));
-  }, SURFACE_PIXELS);
-  in.FieldResolved = 2;
-  return resolved;
-}
-
-//------------------------------------------------------------------------------
-vtkTextureObject* vtkStylizeStylePass::GetDirectionFieldTexture()
-{
-  vtkInternals& in = *this->Internals;
-  return in.FieldResolved >= 0 ? in.FieldTextures[in.FieldResolved] : nullptr;
-}
-
-//------------------------------------------------------------------------------
-void vtkStylizeStylePass::FreeDirectionField()
-{
-  this->Internals->FreeField(this->Internals->Window);
-}

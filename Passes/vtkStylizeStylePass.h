@@ -4,63 +4,19 @@
  *          is an image-processing pass over the shared G-buffer.
  *
  * A style renders the scene into its G-buffer (vtkStylizeGBufferPass), lit by its lighting
- * pass (vtkStylizeLightingPass), then runs its screen-space stages. Where the scene comes from
- * depends on the delegate, as for VTK's other image-processing passes:
- *
- * - **No delegate** (the default): the style renders the renderer's opaque geometry itself,
- *   with every G-buffer channel it needs taken from the geometry (shading normals, object
- *   positions, direction attributes), then draws translucent geometry, volumes and the 2D
- *   overlay on top. This is the accurate path; use it whenever the style sees the geometry.
- * - **A delegate** (SetDelegatePass()): the style stylizes the delegate's image, its lit colour
- *   and window depth. Normals are reconstructed from the depth and positions are in world
- *   space (see vtkStylizeGBufferPass, SceneImagePass). The delegate lights the scene: give it
- *   GetLightingPass() (its own delegate renders the props) to keep the style's lighting model.
- *   This is the path for parallel rendering, where a compositor (ParaView's IceT) hands over
- *   only colour and depth: per-process lighting runs before compositing, the style after.
- *
+ * pass (vtkStylizeLightingPass), then runs its screen-space stages on the opaque scene and on
+ * each translucent layer. Without a delegate (the default, and the accurate path) it renders
+ * the geometry itself; with a delegate it stylizes the delegate's colour and depth, the path
+ * for parallel rendering behind a compositor such as ParaView's IceT:
  * @code
- * vtkNew<vtkComicPass> comic;
- * renderer->SetPass(comic);                 // stylize the geometry
- * // or stylize an image:
  * vtkNew<vtkCameraPass> camera;
  * camera->SetDelegatePass(comic->GetLightingPass()); // lights the scene, comic model
  * comic->SetDelegatePass(camera);
  * @endcode
  *
- * For subclasses, the base owns the skeleton every style shares, so that a style class holds
- * only its settings and its stages:
- * - the lighting pass (its default model is given by the subclass's constructor) and the
- *   G-buffer, whose per-frame configuration is one SceneRequest applied whole at every frame
- *   (nothing a style set for one frame leaks into the next);
- * - shader assembly: the style's GLSL file after the shared GLSL (common helpers, depth
- *   mapping, screen helpers), one program per stage, rebuilt only when the defines change;
- * - running a stage into textures or into the output, with the GL state saved and restored;
- * - the G-buffer's textures and the scene-output uniforms bound by name;
- * - the intermediate textures and framebuffer, and the release of all of it.
- *
- * The base's Render() runs the frame: BeginFrame(), the style's pipeline on the opaque scene,
- * the same pipeline on each translucent layer (TranslucentLayers), EndFrame(). A style's
- * RenderStyle() is that pipeline, for one scene:
- * @code
- * if (!this->RenderScene(s, request)) return false;
- * this->SetShaderDefines(defines);
- * this->RenderFirstStage(frame);  // each stage: RenderStage(stage, targets, w, h, uniforms)
- * this->RenderFinalStage(frame);  // RenderStageToOutput(stage, writeDepth, uniforms)
- * return true;
- * @endcode
- *
- * **Translucent surfaces** are stylized too. After the opaque scene, the style runs again on
- * each translucent layer, nearest first: the G-buffer of the layer (vtkStylizeGBufferPass::
- * RenderTranslucentLayer(): at each pixel the nearest translucent surface in front of the
- * opaque scene and behind the previous layer, depth peeling) goes through the style's stages
- * as an opaque scene would, edges and tone included. The style's final stage then gives each
- * pixel of the layer an alpha: the surface's opacity, or the ink of a line the style draws
- * there (an outline, a crease) if that is more, so that lines stay as dark as on opaque
- * surfaces while the tone lets what is behind show through; pixels where the layer has neither
- * add nothing. The layers are composited front to back and laid over the stylized opaque
- * scene. The renderer's own depth-peeling settings (UseDepthPeeling, MaximumNumberOfPeels) do
- * not change the picture: the style peels its layers itself. Volumes and the 2D overlay are
- * drawn afterwards, unstylized.
+ * A subclass holds only its settings and its stages: its RenderStyle() is the pipeline for one
+ * scene, and the base owns the lighting pass, the G-buffer, shader assembly, stage running and
+ * the GPU resources. Design, delegate path and translucent layers: docs/gbuffer.md.
  *
  * @sa vtkStylizeGBufferPass vtkStylizeLightingPass vtkImageProcessingPass
  */
@@ -71,6 +27,7 @@
 #include "vtkImageProcessingPass.h"
 #include "vtkStylizePassesModule.h" // for export macro
 
+#include <cstddef>          // for std::size_t
 #include <functional>       // for std::function
 #include <initializer_list> // for std::initializer_list
 #include <memory>           // for std::unique_ptr
@@ -85,6 +42,34 @@ class vtkStylizeGBufferPass;
 class vtkStylizeLightingPass;
 class vtkStylizeUniforms;
 class vtkTextureObject;
+
+#ifndef __VTK_WRAP__
+/**
+ * One stage of a style: its index (the style's enum of stages), the #define that selects it in
+ * the style's GLSL ("" for none) and its name in stage timings. A style lists its stages in one
+ * table, checked by vtkStylizeStagesInOrder() at compile time.
+ */
+struct vtkStylizeStage
+{
+  int Index;
+  const char* Define;
+  const char* Name;
+};
+
+/** Whether a table lists its stages in index order 0, 1, ... (for a static_assert). */
+template <std::size_t N>
+constexpr bool vtkStylizeStagesInOrder(const vtkStylizeStage (&stages)[N])
+{
+  for (std::size_t i = 0; i < N; ++i)
+  {
+    if (stages[i].Index != static_cast<int>(i))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+#endif
 
 class VTKSTYLIZEPASSES_EXPORT vtkStylizeStylePass : public vtkImageProcessingPass
 {
@@ -192,6 +177,36 @@ public:
 
   ///@{
   /**
+   * Patterns fixed to the surface, for animations: AnchorPatternsToSurface() anchors the
+   * style's pattern to the surface (comic dots and hatching in object space, pixel art in
+   * texels, the sketch's noise in object space and, unless `keepNoise`, the SPARSE noise whose
+   * strokes hold still), so that it does not swim over a turning surface; a pattern fixed to
+   * the screen does. RestorePatternAnchors() gives back the settings the first call replaced.
+   * vtkstylize --orbit, the Python package's orbit() and ParaView's SaveStylizedOrbit use them.
+   */
+  void AnchorPatternsToSurface(bool keepNoise = false);
+  void RestorePatternAnchors();
+  ///@}
+
+  ///@{
+  /**
+   * What a vector figure (vtkStylizeFigureWriter) reads of the style, beside its settings:
+   * - SwapLayer(layer): sets the layer the style writes to the output (the style's Layers
+   *   enumeration; 0 is the style's own picture) and returns the one it had (-1 for a style
+   *   without layers);
+   * - GetPixelsPerPoint(height, tiles): pixels per point in an image `height` pixels tall
+   *   rendered in `tiles` x `tiles` tiles (a magnified screenshot; 1 otherwise), with the
+   *   style's ReferenceHeight and the WindowScale: what the style multiplies its lengths by;
+   * - GetTinted(): whether the paper keeps the data's colours (false for a style without the
+   *   setting).
+   */
+  virtual int SwapLayer(int) { return -1; }
+  double GetPixelsPerPoint(int height, int tiles);
+  virtual bool GetTinted() { return false; }
+  ///@}
+
+  ///@{
+  /**
    * The last timed frame's stages, in the order they first ran: their number, their names (the
    * stage's #define, e.g. FIELD_STAGE_SMOOTH; SCENE for the lighting and G-buffer render of the
    * scene, AFTER for what follows the stylized image, OUTPUT for a final stage without a
@@ -204,17 +219,21 @@ public:
   ///@}
 
 protected:
-  /**
-   * `lightingModel`: the style's default lighting model (vtkStylizeLightingPass::Models).
-   * `styleSource`: the style's GLSL (declarations and `mainCall`'s function), assembled after the
-   * shared GLSL. `stageDefines`: one entry per stage, the #define that selects it ("" for
-   * none). `mainCall`: the statement main() runs, e.g. "  comicMain();\n". `directionField`:
-   * the style draws along the principal direction field (RenderDirectionField()): the field's
-   * GLSL (vtkStylizeFieldFS) goes before the style's and its three stages after the style's.
-   */
-  vtkStylizeStylePass(int lightingModel, const char* styleSource,
-    std::vector<std::string> stageDefines, const char* mainCall, bool directionField = false);
+  friend class vtkStylizeDirectionField;
+
+  /** `lightingModel`: the style's default lighting model (vtkStylizeLightingPass::Models). */
+  explicit vtkStylizeStylePass(int lightingModel);
   ~vtkStylizeStylePass() override;
+
+#ifndef __VTK_WRAP__
+  /**
+   * The style's stages (the constructor of a style calls it once): `source`, the style's GLSL
+   * (declarations and `mainCall`'s function), assembled after the shared GLSL; `mainCall`, the
+   * statement main() runs, e.g. "  comicMain();\n"; `stages`, in index order.
+   */
+  void SetStages(
+    const std::string& source, const std::string& mainCall, const std::vector<vtkStylizeStage>& stages);
+#endif
 
   /** The frame being rendered, as the stages see it (filled by BeginFrame()). */
   struct Frame
@@ -280,6 +299,25 @@ protected:
    * computes it, and RenderStageToOutput() writes the viewport alone.
    */
   bool BeginFrame(const vtkRenderState* s, Frame& frame);
+
+  /**
+   * Height in pixels of the image in which one point of the style's lengths is one pixel (the
+   * style's ReferenceHeight); 0, the default: one point is one window pixel, times the tile
+   * scale of a magnified screenshot.
+   */
+  virtual double GetPointReferenceHeight() { return 0.0; }
+
+  /** Pixels per point in this frame's full (possibly tiled, magnified) image. */
+  double PointSize(const Frame& frame);
+
+  ///@{
+  /**
+   * The style's part of AnchorPatternsToSurface(): saves the anchor settings and sets them to
+   * the surface; and of RestorePatternAnchors(): sets the saved ones back.
+   */
+  virtual void AnchorToSurface(bool) {}
+  virtual void RestoreAnchors() {}
+  ///@}
 
   /**
    * How far the style's result at a pixel depends on the G-buffer around it, pixels of this
@@ -397,7 +435,7 @@ protected:
   bool DownloadTexture(vtkTextureObject* tex, vtkFloatArray* out);
 
   /**
-   * Settings of the principal direction field (vtkStylizeFieldFS, docs/algorithms.md section 3),
+   * Settings of the principal direction field (vtkStylizeDirectionField),
    * as vtkSketchPass exposes them (its comments give each one's meaning); lengths in points.
    * The member initializers are the settings' defaults. Finite values are expected.
    */
@@ -418,33 +456,6 @@ protected:
     bool Model = false;             ///< the G-buffer's DIRECTION channel where it is defined
   };
 
-  /** The #defines of the field's stages for `s` (add them to the style's defines). */
-  static std::string FieldDefines(const FieldSettings& s);
-
-  /** World size of a pixel at the camera's focal distance (1 when it is not finite). */
-  static double FocalPixelWorld(const Frame& frame);
-
-  /**
-   * How far the resolved field at a pixel depends on the G-buffer around it, pixels (the
-   * estimate's neighbours, the smoothing and fill taps, the gradient fallback): for GetReach().
-   */
-  static double FieldReach(const Frame& frame, const FieldSettings& s, double pointSize);
-
-  /**
-   * Runs the field's stages (estimate, smoothing and fill, resolve) over the G-buffer of this
-   * frame, which must hold LINEAR_DEPTH and NORMAL (and DIRECTION for `s.Model`); the style's
-   * defines must include FieldDefines(s). `pointSize`: pixels per point. Returns the resolved
-   * field: xyz the view-space unit direction, w the linear depth (0: no surface).
-   */
-  vtkTextureObject* RenderDirectionField(
-    const Frame& frame, const FieldSettings& s, double pointSize);
-
-  /** The resolved field of the last RenderDirectionField() (nullptr when none). */
-  vtkTextureObject* GetDirectionFieldTexture();
-
-  /** Frees the field's textures (a frame that does not use the field). */
-  void FreeDirectionField();
-
   /**
    * The uniforms of vtkStylizeFieldFS' camera helpers (fieldSize, fieldProjection, ...), the
    * G-buffer textures and the depth mapping: what a stage that calls the helpers needs.
@@ -453,6 +464,9 @@ protected:
 
   /** Frees everything a style made for its stages (ReleaseGraphicsResources() calls it). */
   virtual void ReleaseStyleResources(vtkWindow*) {}
+
+  /** Bytes of the textures a style holds itself (its direction field), for GetTextureBytes(). */
+  virtual vtkIdType GetStyleTextureBytes() { return 0; }
 
   /**
    * The style's pipeline for one scene (the opaque scene, or a translucent layer): RenderScene(),
@@ -467,6 +481,7 @@ protected:
    */
   void RenderTranslucentLayers(const vtkRenderState* s, const Frame& frame);
 
+  bool PatternsAnchored = false; // AnchorPatternsToSurface() without a restore yet
   double InteractiveUpdateRate = 1.0;
   int WindowScale[2] = { 1, 1 };
   int TranslucentLayers = 4;
@@ -482,9 +497,12 @@ private:
   /** Gives `frame` its guard band (BeginFrame()). */
   void PlanGuardBand(Frame& frame);
 
-  /** The field's stages for a frame: their tap distances and strides (RenderDirectionField()). */
-  struct FieldPlan;
-  static FieldPlan PlanField(const Frame& frame, const FieldSettings& s, double pointSize);
+  /**
+   * The background around the scene's rectangle `rect` of the stages' pixels, as the final
+   * stage would write it (RenderStageToOutput()); `scissor` clips a box to the viewport.
+   */
+  bool RenderBackgroundStrips(const Frame& frame, const int rect[4], bool layer,
+    const std::function<void(int, int, int, int)>& scissor);
 };
 
 #endif

@@ -1,14 +1,19 @@
 // VTK Stylize comic pass (vtkComicPass): three-phase edges, halftone dots, hatch lines.
 // docs/algorithms.md section 2. The pass prepends #defines that select what is compiled:
 //   COMIC_STAGE_EDGES   first stage of the colour-edge path: writes f_normal and k1, k2
+//   COMIC_STAGE_COMPOSITE the composite stage: edges, pattern and ink into the output
 //   COMIC_DEPTH_EDGES, COMIC_NORMAL_EDGES, COMIC_COLOR_EDGES   the enabled edge phases
 //   COMIC_DOTS, COMIC_HATCH, COMIC_CROSS                       the enabled patterns
 //   COMIC_OBJECT_ANCHOR   patterns anchored to the object-space position, not the screen
 //   COMIC_HATCH_PRINCIPAL hatch lines around the form, along the principal direction field
-//                         (vtkStylizeFieldFS, computed by the base before the composite stage)
+//                         (vtkStylizeFieldFS, computed before the composite stage)
 //   COMIC_TINTED          keep the data's hue under the ink
 //   COMIC_LAYER           0 the comic image, 1 the edge factor alone, 2 the pattern alone,
 //                         3 the pattern's inputs (vector figures), 4 the paper under the ink
+// and the pattern's constants, which vtkComicPatterns.h holds for the pass and the vector figure:
+//   COMIC_PI, COMIC_DOT_DISC_COVERAGE, COMIC_DOT_CORNER_COVERAGE, COMIC_DOT_INSCRIBED_RADIUS,
+//   COMIC_DOT_CORNER_RADIUS   the dot's radius from its coverage
+//   COMIC_FIXED_ANGLE_STEP    the direction step FIGURE_INPUTS records for the fixed HatchAngle
 // Lengths arrive in pixels of the final (possibly magnified) image, already multiplied by the
 // pixels-per-point factor on the CPU, so the shader is resolution-free.
 
@@ -176,12 +181,13 @@ float comicDots(vec2 uv, float tone, float aa)
   float d = length(f);
   float coverage = clamp(1.0 - tone, 0.0, 1.0);
   // disc area pi r^2 = coverage up to r = 0.5; then the corners fill until r = sqrt(0.5)
-  if (coverage > 0.785398)
+  if (coverage > COMIC_DOT_DISC_COVERAGE)
   {
-    float r = mix(0.5, 0.7072, (coverage - 0.785398) / 0.214602);
+    float r = mix(COMIC_DOT_INSCRIBED_RADIUS, COMIC_DOT_CORNER_RADIUS,
+      (coverage - COMIC_DOT_DISC_COVERAGE) / COMIC_DOT_CORNER_COVERAGE);
     return smoothstep(r - aa, r + aa, d);
   }
-  float r2 = coverage / 3.14159265;
+  float r2 = coverage / COMIC_PI;
   float big = r2 - 0.2 * aa * aa;
   if (big >= aa * aa)
   {
@@ -256,7 +262,7 @@ void comicMain()
 
   float pattern = tone;
 #if !defined(COMIC_HATCH)
-  float angleStep = 255.0;
+  float angleStep = COMIC_FIXED_ANGLE_STEP;
 #endif
 #if defined(COMIC_DOTS) || defined(COMIC_HATCH)
 #ifdef COMIC_DOTS
@@ -270,7 +276,8 @@ void comicMain()
   vec2 hatchUV = plane / comicHatchSpacing;
   float hatchAA = clamp(0.5 * max(fwidth(hatchUV.x), fwidth(hatchUV.y)), 1e-4, 0.5);
   float angle = comicHatchAngle;
-  float angleStep = 255.0; // the layer FIGURE_INPUTS's record of the direction: 255 = comicHatchAngle
+  // the layer FIGURE_INPUTS's record of the direction: COMIC_FIXED_ANGLE_STEP = comicHatchAngle
+  float angleStep = COMIC_FIXED_ANGLE_STEP;
 #ifdef COMIC_HATCH_PRINCIPAL
   // Around the form: the screen angle of the field's direction (larger |curvature|), in
   // comicHatchSteps steps over 180 degrees so that each region keeps straight lines.
@@ -282,7 +289,7 @@ void comicMain()
       principal.xyz * (1e-3 * fieldPixelWorldAt(principal.w))) - f0;
     if (dot(s, s) > 1e-12)
     {
-      float stepAngle = 3.14159265 / float(max(comicHatchSteps, 1));
+      float stepAngle = COMIC_PI / float(max(comicHatchSteps, 1));
       float k = floor(atan(s.y, s.x) / stepAngle + 0.5);
       angle = stepAngle * k;
       angleStep = mod(k, float(max(comicHatchSteps, 1)));
@@ -295,7 +302,7 @@ void comicMain()
     vec3 n = texelFetch(stylizeNormalTexture, p, 0).xyz;
     if (dot(n.xy, n.xy) > 0.04)
     {
-      float stepAngle = 3.14159265 / float(comicHatchDirections);
+      float stepAngle = COMIC_PI / float(comicHatchDirections);
       float phi = atan(n.y, n.x);
       float k = floor(phi / stepAngle + 0.5);
       angle += stepAngle * k;
@@ -366,7 +373,7 @@ void comicMain()
   result = background ? colour : vec3(pattern);
 #elif COMIC_LAYER == 3
   // what vtkStylizeFigureWriter draws the dots and hatch lines from: the tone, the hatch
-  // direction's step (255: HatchAngle), 1 on surfaces
+  // direction's step (COMIC_FIXED_ANGLE_STEP: HatchAngle), 1 on surfaces
   result = vec3(surface ? tone : 1.0, angleStep / 255.0, surface ? 1.0 : 0.0);
 #elif COMIC_LAYER == 4
 #ifdef COMIC_TINTED

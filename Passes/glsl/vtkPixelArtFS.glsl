@@ -455,8 +455,8 @@ PixelTexel pixelTexelAt(ivec2 v)
 
 // The texel's lit colour: the mean of the pixels at 3 x 3 points spread over it (those on the
 // surface and on this texel), as the faithful art pixel is the mean of its block. One pixel's
-// colour, the one nearest the centre, changed as the surface moved a fraction of a pixel (a
-// scan's lighting varies from pixel to pixel), and a texel near a quantization level flipped.
+// colour, the one nearest the centre, changes as the surface moves a fraction of a pixel (a
+// scan's lighting varies from pixel to pixel), and would flip a texel near a quantization level.
 vec4 pixelTexelColour(PixelTexel t)
 {
   vec4 sum = vec4(0.0);

@@ -184,15 +184,9 @@ void fieldPair(vec2 u1, vec2 m1, bool ok1, vec2 u2, vec2 m2, bool ok2, inout vec
   acc.z += 2.0;
 }
 
-void stylizeFieldMain()
+// The stage at a surface pixel p, its linear depth d0 and normal n (stylizeFieldMain()).
+void fieldSurfaceStage(ivec2 p, float d0, vec3 n)
 {
-  ivec2 p;
-  float d0;
-  vec3 n;
-  if (!fieldStageStart(p, d0, n))
-  {
-    return;
-  }
 #ifdef FIELD_MODEL
   // The mapped direction where the data gives one with confidence (its vertices agree), else
   // the screen estimate.
@@ -317,15 +311,9 @@ uniform sampler2D fieldInput;
 uniform int fieldGradientStride; // Sobel tap distance of the lighting-gradient fallback
 uniform vec2 fieldScreenDirection; // the last resort: a fixed screen direction
 
-void stylizeFieldMain()
+// The stage at a surface pixel p, its linear depth d0 and normal n (stylizeFieldMain()).
+void fieldSurfaceStage(ivec2 p, float d0, vec3 n)
 {
-  ivec2 p;
-  float d0;
-  vec3 n;
-  if (!fieldStageStart(p, d0, n))
-  {
-    return;
-  }
   vec4 c = texelFetch(fieldInput, p, 0);
   vec3 e = c.xyz - n * dot(c.xyz, n);
   bool defined = c.w != 0.0 && dot(e, e) > 1e-8;
@@ -368,3 +356,16 @@ void stylizeFieldMain()
 }
 #endif
 
+#if defined(FIELD_STAGE_ESTIMATE) || defined(FIELD_STAGE_RESOLVE)
+// The estimate's and the resolve's main: their stage on the surface's pixels, zero elsewhere.
+void stylizeFieldMain()
+{
+  ivec2 p;
+  float d0;
+  vec3 n;
+  if (fieldStageStart(p, d0, n))
+  {
+    fieldSurfaceStage(p, d0, n);
+  }
+}
+#endif

@@ -108,6 +108,22 @@ vec3 stylizeStandard(vec3 N, vec3 P, vec3 ambientC, vec3 diffuseC, vec3 specular
 #endif
 }
 
+// The comic and pixel-art models' summed light: D the diffuse (Ip att max(0, N.L)), S the
+// Blinn-Phong specular (Ip att max(0, N.H)^beta where N.L >= 0).
+void stylizeBlinnPhongSums(vec3 N, vec3 P, vec3 V, float specPow, out vec3 D, out vec3 S)
+{
+  D = vec3(0.0);
+  S = vec3(0.0);
+  for (int i = 0; i < STYLIZE_LIGHT_COUNT; ++i)
+  {
+    stylizeLight l = stylizeFetchLight(i, P);
+    float ndl = dot(N, l.L);
+    D += l.color * (l.atten * max(0.0, ndl));
+    vec3 H = stylizeSafeNormalize(l.L + V, N);
+    S += l.color * (l.atten * step(0.0, ndl) * stylizeSafePow(max(0.0, dot(N, H)), specPow));
+  }
+}
+
 // Comic model: La = p1 + I - 2 p1 I; Ld = floor(pd kd D) / pmax with pd interpolated from near to
 // far depth and D the summed light (Ip max(0, N.L)); Blinn-Phong specular times a gain.
 vec3 stylizeComic(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 specularC,
@@ -129,16 +145,8 @@ vec3 stylizeComic(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 spe
   float pd = mix(stylizeLevelsNear, stylizeLevelsFar, t);
   float pmax = max(max(stylizeLevelsNear, stylizeLevelsFar), 1.0);
 
-  vec3 D = vec3(0.0);
-  vec3 S = vec3(0.0);
-  for (int i = 0; i < STYLIZE_LIGHT_COUNT; ++i)
-  {
-    stylizeLight l = stylizeFetchLight(i, P);
-    float ndl = dot(N, l.L);
-    D += l.color * (l.atten * max(0.0, ndl));
-    vec3 H = stylizeSafeNormalize(l.L + V, N);
-    S += l.color * (l.atten * step(0.0, ndl) * stylizeSafePow(max(0.0, dot(N, H)), specPow));
-  }
+  vec3 D, S;
+  stylizeBlinnPhongSums(N, P, V, specPow, D, S);
   float Dmax = max(D.r, max(D.g, D.b));
   float q = floor(pd * kd * Dmax) / pmax;
   vec3 tint = Dmax > 0.0 ? D / Dmax : vec3(0.0);
@@ -150,15 +158,7 @@ vec3 stylizeComic(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 spe
 vec3 stylizePixelArt(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 specularC,
   float specPow)
 {
-  vec3 D = vec3(0.0);
-  vec3 S = vec3(0.0);
-  for (int i = 0; i < STYLIZE_LIGHT_COUNT; ++i)
-  {
-    stylizeLight l = stylizeFetchLight(i, P);
-    float ndl = dot(N, l.L);
-    D += l.color * (l.atten * max(0.0, ndl));
-    vec3 H = stylizeSafeNormalize(l.L + V, N);
-    S += l.color * (l.atten * step(0.0, ndl) * stylizeSafePow(max(0.0, dot(N, H)), specPow));
-  }
+  vec3 D, S;
+  stylizeBlinnPhongSums(N, P, V, specPow, D, S);
   return ambientC + sqrt(stylizeScattering) * D * diffuseC + stylizeOcclusion * S * specularC;
 }

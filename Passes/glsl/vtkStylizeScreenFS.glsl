@@ -72,7 +72,7 @@ uniform int stylizeDiscardBackground; // 1 for layered renderers: keep the layer
 // Alpha of a style's output pixel. Surfaces are opaque. On the background, a scene that came
 // from an image (vtkStylizeGBufferPass::SceneImagePass: a compositor such as IceT leaves the
 // background transparent for the root to fill) keeps the image's alpha, plus the ink drawn
-// there (outlines); a scene rendered from geometry is opaque everywhere, as before.
+// there (outlines); a scene rendered from geometry is opaque everywhere.
 uniform int stylizeSceneFromImage;
 // rgb: the background the picture stands for (vtkStylizeGBufferPass::ImageBackground; the
 // G-buffer's colour holds it on the background); a = 1 when set. stylizeRendererBackground: the
