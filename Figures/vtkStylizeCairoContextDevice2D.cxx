@@ -104,8 +104,8 @@ void vtkStylizeCairoContextDevice2D::PathThrough(const float* points, int n, boo
   // Where the OpenGL device's lines fall (it projects (0.5, 0.5) .. (w - 0.5, h - 0.5) onto the
   // viewport): a line of an odd width on whole coordinates is centred on the pixel centres half a
   // pixel down and left, one of an even width covers as many pixels either side of the whole
-  // coordinate; the edges of a fill fall on pixel boundaries (measured against the screenshot:
-  // a 2-pixel box outline matches at SSIM 0.9996, 0.84 when centred on the pixel centres).
+  // coordinate; the edges of a fill fall on pixel boundaries (so the figure matches the
+  // screenshot: docs/figures.md).
   double shift = 0.0;
   if (line)
   {
@@ -458,7 +458,7 @@ void vtkStylizeCairoContextDevice2D::DrawString(float* point, const vtkStdString
   }
   // The outlines lie one pixel below the bitmap the OpenGL device draws for the same string (its
   // quad is the text renderer's box, one pixel taller than the box's extent): drawn one pixel up
-  // they fall on the screenshot's glyphs (ParaView's legend: SSIM 0.89 -> 0.99).
+  // they fall on the screenshot's glyphs (ParaView's legend: docs/figures.md).
   const double ax = std::floor(point[0]), ay = std::floor(point[1]);
   this->Open();
   if (tp->GetBackgroundOpacity() > 0)

@@ -4,36 +4,15 @@
  *          journals accept, drawn from the style's own layers and settings.
  *
  * Give it a render window whose renderer renders with one of the VTK Stylize styles, a file name
- * ending in `.svg` or `.pdf`, and call Write(). The writer renders the style's layers (the
- * style's Layer setting, restored afterwards) and draws with cairo:
+ * ending in `.svg` or `.pdf`, and call Write(). The writer renders the style's layers and draws
+ * them with cairo: the comic's paper, dots, hatch lines and traced outlines; pixel art's art
+ * pixels as exact rectangles; the sketch's pencil layer as an image under its traced
+ * silhouette; text, scalar bars and vtkContext2D items as vectors (other 2D actors are left out
+ * and named by GetWarning()). One figure unit is one image pixel, so at Magnification 1 the
+ * figure rasterizes back to the PNG's size. The file is written whole under a hidden name and
+ * renamed, so a failure leaves the previous file; WriteToMemory keeps the bytes instead.
  *
- * - **Comic** (vtkComicPass): the paper as filled regions of one colour each (the tint, the
- *   white paper, the background), or as an embedded image (PaperMode); the halftone dots as
- *   circles (discs clipped to their cell where the tone is darkest) and the hatch lines as line
- *   segments, generated from the pass's grid, angle, spacing, width and thresholds and from the
- *   tone the pass shaded (layer FIGURE_INPUTS), so they are exact rather than traced; the outlines
- *   traced by potrace at sub-pixel accuracy from the edge layer (bilinearly supersampled
- *   TraceSupersampling times), in the edge factor's levels (full ink and the half ink of normal
- *   edges). With the OBJECT anchor the pattern is not a screen grid: it is traced like the
- *   outlines.
- * - **Pixel art** (vtkPixelArtPass): every art pixel as an exact rectangle, runs of one colour
- *   merged (along rows, then rows of equal runs): rasterized at the image size the figure gives
- *   the PNG's pixels.
- * - **Sketch** (vtkSketchPass): the pencil layer as an embedded image, and the silhouette (the
- *   outline of the surfaces against the background) as a traced vector stroke in the pencil
- *   colour, SketchOutlineWidth points wide (0: none).
- * - **Text and scalar bars** (vtkTextActor, vtkScalarBarActor, in any renderer of the window):
- *   vector text in the actor's colour, fitted to the box VTK lays the text out in, and the
- *   bar's colour swatches as rectangles. 2D actors that paint through vtkContext2D (a
- *   vtkContextActor's scene; ParaView's vtkContext2DScalarBarActor through the plugin's view)
- *   are painted as vectors: shapes in the pen's and brush's colours, text as the glyph outlines
- *   of VTK's text renderer, a colour strip as a linear gradient (PaintContextOverlay). Other 2D
- *   actors are left out (GetWarning names them).
- *
- * The figure's unit is the image pixel: a W x H window at Magnification m gives a page of
- * mW x mH (SVG pixels, PDF points), which rasterizes back to the PNG's size at 96 dpi (SVG) or
- * 72 dpi (PDF). The file is written whole under a hidden name beside it and renamed: a failure
- * leaves no partial file and the previous file as it was. WriteToMemory keeps the bytes instead.
+ * What each style's figure holds, its limits and measured figures: docs/figures.md.
  *
  * @sa vtkComicPass vtkPixelArtPass vtkSketchPass
  */
@@ -50,6 +29,7 @@ class vtkContext2D;
 class vtkImageData;
 class vtkProp;
 class vtkRenderWindow;
+class vtkStylizeFigureLayerSource;
 class vtkStylizeStylePass;
 class vtkUnsignedCharArray;
 class vtkViewport;
@@ -80,6 +60,16 @@ public:
   /** The render window to draw (its renderers, passes and 2D actors). */
   void SetRenderWindow(vtkRenderWindow* window);
   vtkGetObjectMacro(RenderWindow, vtkRenderWindow);
+
+  ///@{
+  /**
+   * Where the style's layers come from: by default (none set) the render window
+   * (vtkStylizeFigureLayerSource on RenderWindow); an application that renders otherwise
+   * (ParaView's stylized view) gives a source of its own.
+   */
+  void SetLayerSource(vtkStylizeFigureLayerSource* source);
+  vtkGetObjectMacro(LayerSource, vtkStylizeFigureLayerSource);
+  ///@}
   ///@}
 
   ///@{
@@ -184,12 +174,6 @@ public:
   static std::string WriteFigure(vtkRenderWindow* window, const char* fileName);
 
   /**
-   * Sets the Layer of a comic, pixel-art or sketch pass (their enums); returns the layer it had,
-   * or -1 for any other pass (left alone).
-   */
-  static int SetStyleLayer(vtkStylizeStylePass* style, int layer);
-
-  /**
    * Encodes numbered PNG frames into an animation with ffmpeg (Debian: apt-get install ffmpeg):
    * `pattern` is ffmpeg's printf-style frame name (frame-%04d.png), `fps` frames per second
    * (clamped to [1, 120]), `output` ends in .gif (one palette from all the frames' colours, no
@@ -203,38 +187,8 @@ protected:
   vtkStylizeFigureWriter();
   ~vtkStylizeFigureWriter() override;
 
-  /**
-   * The style pass to draw: by default the first renderer's of RenderWindow that renders with
-   * one. A view that holds its style elsewhere (ParaView's) overrides it.
-   */
-  virtual vtkStylizeStylePass* FindStylePass();
-
-  /**
-   * Renders the frame with the style's Layer set to `layer` (the writer restores it) and reads
-   * it back, RGB, Magnification times the window's size, row 0 at the bottom. With `key` set, the
-   * background is that colour (flat) for this frame: what differs from it is the scene. The 2D
-   * actors are hidden. Returns false when nothing could be read.
-   */
-  virtual bool CaptureLayer(int layer, const double* key, vtkImageData* out);
-
-  /**
-   * Renders the window once as it is, so that the 2D actors lay themselves out before they are
-   * drawn as vectors: RenderWindow->Render() by default. A view that renders otherwise
-   * (ParaView's) overrides it.
-   */
-  virtual void RenderFrame();
-
-  /**
-   * Paints a 2D actor that draws through vtkContext2D into `painter`, whose device writes the
-   * figure's vector shapes (vtkStylizeCairoContextDevice2D: its coordinates are the viewport's
-   * pixels, as on the screen). Returns true when it painted the actor. By default it paints a
-   * vtkContextActor's scene; a view with 2D actors of its own kind (ParaView's
-   * vtkContext2DScalarBarActor) overrides it. Text actors are drawn before, and a
-   * vtkScalarBarActor this leaves alone is drawn from its layout afterwards.
-   */
-  virtual bool PaintContextOverlay(vtkProp* actor, vtkViewport* viewport, vtkContext2D* painter);
-
   vtkRenderWindow* RenderWindow = nullptr;
+  vtkStylizeFigureLayerSource* LayerSource = nullptr;
   char* FileName = nullptr;
   int Format = AUTO;
   int Magnification = 1;
