@@ -13,16 +13,6 @@ Embedded in the VTKStylize plugin; importable once the plugin is loaded::
 Both render as the view renders (under MPI every rank takes part; the first writes).
 """
 
-# The patterns each style (the view's Style value) anchors to the surface in an orbit, as (view
-# property, surface value) pairs: comic Object, pixel art Surface (texels), sketch Object with
-# the Sparse noise.
-_SURFACE_ANCHORS = {
-    1: [("ComicAnchor", 1)],
-    2: [("PixelArtDitherAnchor", 2)],
-    3: [("SketchNoiseSpace", 0), ("SketchNoise", 3)],  # object space, SPARSE noise
-}
-
-
 def _element(view, name):
     return view.SMProxy.GetProperty(name).GetElement(0)
 
@@ -90,10 +80,9 @@ def SaveStylizedOrbit(output, view=None, frames=36, degrees=360.0, elevation=0.0
     stem, ext = os.path.splitext(str(output))
     if ext.lower() not in (".png", ".gif", ".mp4"):
         raise ValueError("the orbit's output must end in .png, .gif or .mp4, got %r" % output)
-    restore = []
-    for name, value in _SURFACE_ANCHORS.get(_element(view, "Style"), []) if surface_anchor else []:
-        restore.append((name, _element(view, name)))
-        _set_element(view, name, value)
+    if surface_anchor:
+        # (vtkStylizeStylePass::AnchorPatternsToSurface() on every rank)
+        _set_element(view, "PatternsAnchored", 1)
     camera = view.GetActiveCamera()
     saved = (camera.GetPosition(), camera.GetFocalPoint(), camera.GetViewUp())
     digits = max(4, len(str(frames - 1)))
@@ -119,7 +108,7 @@ def SaveStylizedOrbit(output, view=None, frames=36, degrees=360.0, elevation=0.0
         camera.SetPosition(saved[0])
         camera.SetFocalPoint(saved[1])
         camera.SetViewUp(saved[2])
-        for name, value in restore:
-            _set_element(view, name, value)
+        if surface_anchor:
+            _set_element(view, "PatternsAnchored", 0)
         simple.Render(view)
     return written

@@ -12,6 +12,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSketchPass.h"
+#include "vtkStylizeFigureLayerSource.h"
 #include "vtkStylizeFigureWriter.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
@@ -21,33 +22,58 @@
 
 vtkStandardNewMacro(vtkPVStylizeView);
 
-namespace
-{
 /**
- * vtkStylizeFigureWriter for the view: the style is the view's (ParaView keeps it in its
- * synchronized renderers, not in the renderer), and every frame renders as the view renders
- * (StillRender: the ranks composited, the style applied after compositing).
+ * Where the view's vector figures get their layers (vtkStylizeFigureWriter::SetLayerSource()):
+ * the style is the view's (ParaView keeps it in its synchronized renderers, not in the
+ * renderer), and every frame renders as the view renders (StillRender: the ranks composited,
+ * the style applied after compositing).
  */
-class FigureWriter : public vtkStylizeFigureWriter
+class vtkPVStylizeViewFigureSource : public vtkStylizeFigureLayerSource
 {
 public:
-  static FigureWriter* New()
-  {
-    auto* writer = new FigureWriter;
-    writer->InitializeObjectBase();
-    return writer;
-  }
-  vtkTypeMacro(FigureWriter, vtkStylizeFigureWriter);
+  static vtkPVStylizeViewFigureSource* New();
+  vtkTypeMacro(vtkPVStylizeViewFigureSource, vtkStylizeFigureLayerSource);
   vtkPVStylizeView* View = nullptr;
 
-protected:
   vtkStylizeStylePass* FindStylePass() override { return this->View->GetActiveStylePass(); }
 
   void RenderFrame() override { this->View->StillRender(); }
 
-  bool CaptureLayer(int layer, const double* key, vtkImageData* out) override
+  bool CaptureLayer(int layer, const double* key, int, vtkImageData* out) override
   {
-    return this->View->CaptureFigureLayer(layer, key, out);
+    vtkPVStylizeView* view = this->View;
+    vtkStylizeStylePass* style = view->GetActiveStylePass();
+    if (!style)
+    {
+      return false;
+    }
+    double background[3];
+    view->GetBackground(background);
+    const int mode = view->ColorMode;
+    const bool own = view->GetUseRenderViewSettingsForBackground();
+    if (key)
+    {
+      view->SetUseRenderViewSettingsForBackground(false);
+      view->SetBackgroundColorMode(vtkPVRenderView::DEFAULT);
+      view->SetBackground(key[0], key[1], key[2]);
+    }
+    const int previous = style->SwapLayer(layer);
+    view->StillRender();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(view->GetRenderWindow());
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->ShouldRerenderOff();
+    grab->Update();
+    out->DeepCopy(grab->GetOutput());
+    style->SwapLayer(previous);
+    if (key)
+    {
+      view->SetUseRenderViewSettingsForBackground(own);
+      view->SetBackgroundColorMode(mode);
+      view->SetBackground(background);
+    }
+    return out->GetNumberOfPoints() > 0;
   }
 
   // ParaView's colour legends paint themselves through vtkContext2D (their layout is not
@@ -67,44 +93,27 @@ protected:
     }
     return this->Superclass::PaintContextOverlay(actor, viewport, painter);
   }
+
+protected:
+  vtkPVStylizeViewFigureSource() = default;
+  ~vtkPVStylizeViewFigureSource() override = default;
 };
-}
+vtkStandardNewMacro(vtkPVStylizeViewFigureSource);
 
 //------------------------------------------------------------------------------
-bool vtkPVStylizeView::CaptureFigureLayer(int layer, const double* key, vtkImageData* out)
+void vtkPVStylizeView::SetPatternsAnchored(int anchored)
 {
-  vtkStylizeStylePass* style = this->GetActiveStylePass();
-  if (!style)
+  if (vtkStylizeStylePass* style = this->GetActiveStylePass())
   {
-    return false;
+    if (anchored)
+    {
+      style->AnchorPatternsToSurface();
+    }
+    else
+    {
+      style->RestorePatternAnchors();
+    }
   }
-  double background[3];
-  this->GetBackground(background);
-  const int mode = this->ColorMode;
-  const bool own = this->GetUseRenderViewSettingsForBackground();
-  if (key)
-  {
-    this->SetUseRenderViewSettingsForBackground(false);
-    this->SetBackgroundColorMode(vtkPVRenderView::DEFAULT);
-    this->SetBackground(key[0], key[1], key[2]);
-  }
-  const int previous = vtkStylizeFigureWriter::SetStyleLayer(style, layer);
-  this->StillRender();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(this->GetRenderWindow());
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOff();
-  grab->Update();
-  out->DeepCopy(grab->GetOutput());
-  vtkStylizeFigureWriter::SetStyleLayer(style, previous);
-  if (key)
-  {
-    this->SetUseRenderViewSettingsForBackground(own);
-    this->SetBackgroundColorMode(mode);
-    this->SetBackground(background);
-  }
-  return out->GetNumberOfPoints() > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -127,9 +136,11 @@ void vtkPVStylizeView::WriteFigure(const char* fileName)
   {
     return;
   }
-  vtkNew<FigureWriter> writer;
-  writer->View = this;
-  writer->SetRenderWindow(this->GetRenderWindow());
+  vtkNew<vtkPVStylizeViewFigureSource> source;
+  source->View = this;
+  source->SetRenderWindow(this->GetRenderWindow());
+  vtkNew<vtkStylizeFigureWriter> writer;
+  writer->SetLayerSource(source);
   writer->SetFileName(fileName);
   // Every rank renders the layers (compositing is collective); the first writes the file.
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
@@ -314,7 +325,7 @@ void vtkPVStylizeView::ConfigurePasses()
     this->ReleasePassResources(style);
     this->LastStylePass = style;
   }
-  int model = this->LightingModel - 1;
+  int model = this->LightingModel;
   if (this->LightingModel == STYLE_DEFAULT)
   {
     model = this->Style == COMIC

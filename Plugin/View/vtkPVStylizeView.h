@@ -36,6 +36,7 @@
 
 #include "vtkPVRenderView.h"
 #include "vtkSmartPointer.h"              // for vtkSmartPointer
+#include "vtkStylizeLightingPass.h"       // for vtkStylizeLightingPass::Models
 #include "vtkStylizeParaViewViewModule.h" // for export macro
 
 #include <string> // for std::string
@@ -71,13 +72,16 @@ public:
   vtkGetMacro(Style, int);
   ///@}
 
-  /** Lighting model choices: the style's own, or one of vtkStylizeLightingPass's models. */
+  /**
+   * Lighting model choices: the style's own, or one of vtkStylizeLightingPass's models (the
+   * same values as vtkStylizeLightingPass::Models).
+   */
   enum LightingModels
   {
-    STYLE_DEFAULT = 0,
-    STANDARD = 1,
-    COMIC_LIGHTING = 2,
-    PIXEL_ART_LIGHTING = 3
+    STYLE_DEFAULT = -1,
+    STANDARD = vtkStylizeLightingPass::STANDARD,
+    COMIC_LIGHTING = vtkStylizeLightingPass::COMIC,
+    PIXEL_ART_LIGHTING = vtkStylizeLightingPass::PIXEL_ART
   };
 
   ///@{
@@ -133,6 +137,14 @@ public:
   vtkStylizeStylePass* GetActiveStylePass();
 
   /**
+   * 1: the active style's pattern is anchored to the surface for an animation
+   * (vtkStylizeStylePass::AnchorPatternsToSurface()); 0: its settings are given back. The
+   * view's PatternsAnchored property calls it (SaveStylizedOrbit() in the stylize Python
+   * module).
+   */
+  void SetPatternsAnchored(int anchored);
+
+  /**
    * Writes the view as a vector figure with vtkStylizeFigureWriter (SVG or PDF, from the name's
    * extension; the view's size, no magnification): the style's layers are rendered as the view
    * renders (on every rank, composited), and the first rank writes the file. An empty name does
@@ -152,14 +164,10 @@ public:
    */
   void EncodeAnimation(const char* pattern, int fps, const char* output);
 
-  /**
-   * For WriteFigure(): renders the frame (StillRender()) with the style's Layer set to `layer`
-   * (restored afterwards) and reads it back, RGB, row 0 at the bottom; with `key` set the view's
-   * background is that flat colour for this frame. False when nothing could be read.
-   */
-  bool CaptureFigureLayer(int layer, const double* key, vtkImageData* out);
 
 protected:
+  friend class vtkPVStylizeViewFigureSource;
+
   vtkPVStylizeView();
   ~vtkPVStylizeView() override;
 

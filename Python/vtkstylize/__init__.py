@@ -1,6 +1,6 @@
 """VTK Stylize: non-photorealistic render passes for VTK, as one Python package.
 
-The package holds the project's three wrapped VTK modules, re-exported at package level:
+The package holds the project's four wrapped VTK modules, re-exported at package level:
 
 Render passes (module ``vtkstylize.vtkStylizePasses``):
 
@@ -16,12 +16,19 @@ Render passes (module ``vtkstylize.vtkStylizePasses``):
   PixelArt); the lighting stage of the three styles (``GetLightingPass()``).
 - ``vtkStylizeGBufferPass``: the shared G-buffer (lit colour, depth, normals, positions) the
   screen-space styles read.
+- ``vtkStylizeSceneLights``: ``AddLights(renderer, count, center, distance, ...)``, the
+  deterministic lights of ``vtkstylize --lights N``: white scene lights spread over a sphere.
+- ``vtkStylizeAtomicFile``: ``Write(path, array)`` writes a file whole or not at all (a
+  temporary file renamed over it); returns 0 or an ``errno`` value.
 
 Filters (module ``vtkstylize.vtkStylizeFilters``):
 
 - ``vtkStylizeDemoScene``: the built-in scene (wavelet isosurface, torus, streamline tubes) as
   a multiblock dataset.
 - ``vtkStylizePrincipalCurvatures``: per-point principal curvatures and directions of a surface.
+
+Checked reading (module ``vtkstylize.vtkStylizeIO``):
+
 - ``vtkStylizeReader``: reads any dataset file the project renders (VTK XML and legacy, .pvd,
   Exodus, EnSight, OpenFOAM, STL, OBJ, PLY), checked before VTK's reader opens it and validated
   after, so that a broken or hostile file gives one error line (``GetErrorMessage()``) instead
@@ -79,6 +86,7 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (loads VTK's OpenGL classes
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLRenderPass as _vtkOpenGLRenderPass
 
 from .vtkStylizePasses import *  # noqa: F401,F403
+from .vtkStylizeIO import *  # noqa: F401,F403
 from .vtkStylizeFilters import *  # noqa: F401,F403
 from .vtkStylizeFigures import *  # noqa: F401,F403
 from .vtkStylizePasses import vtkComicPass as _vtkComicPass
@@ -208,25 +216,10 @@ def save_figure(window, path, **settings):
 
 def _surface_anchor(style_pass):
     """Anchors a style's pattern to the surface; returns the call that restores it."""
-    if isinstance(style_pass, _vtkComicPass):
-        old = style_pass.GetAnchor()
-        style_pass.SetAnchor(_vtkComicPass.OBJECT)
-        return lambda: style_pass.SetAnchor(old)
-    if isinstance(style_pass, _vtkPixelArtPass):
-        old = style_pass.GetDitherAnchor()
-        style_pass.SetDitherAnchor(_vtkPixelArtPass.SURFACE)
-        return lambda: style_pass.SetDitherAnchor(old)
-    if isinstance(style_pass, _vtkSketchPass):
-        # object space, and the noise whose strokes hold still (SPARSE)
-        old = (style_pass.GetNoiseSpace(), style_pass.GetNoise())
-        style_pass.SetNoiseSpace(_vtkSketchPass.OBJECT)
-        style_pass.SetNoise(_vtkSketchPass.SPARSE)
-
-        def restore():
-            style_pass.SetNoiseSpace(old[0])
-            style_pass.SetNoise(old[1])
-        return restore
-    return lambda: None
+    if not hasattr(style_pass, "AnchorPatternsToSurface"):
+        return lambda: None
+    style_pass.AnchorPatternsToSurface()
+    return style_pass.RestorePatternAnchors
 
 
 def orbit(window, frames, path_pattern, degrees=360.0, elevation=0.0, surface_anchor=True,
