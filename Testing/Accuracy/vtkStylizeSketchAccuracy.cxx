@@ -20,9 +20,6 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
-#include "vtkParametricEllipsoid.h"
-#include "vtkParametricFunctionSource.h"
-#include "vtkParametricTorus.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -61,15 +58,7 @@ struct Surface
 Surface MakeTorus()
 {
   const double R = 2.0, a = 0.6;
-  vtkNew<vtkParametricTorus> torus;
-  torus->SetRingRadius(R);
-  torus->SetCrossSectionRadius(a);
-  vtkNew<vtkParametricFunctionSource> src;
-  src->SetParametricFunction(torus);
-  src->SetUResolution(384);
-  src->SetVResolution(192);
-  src->GenerateNormalsOff();
-  return { "torus R=2 a=0.6", CleanMesh(src->GetOutputPort()),
+  return { "torus R=2 a=0.6", TorusMesh(R, a, 384, 192),
     [=](const double* x) { return TorusTruth(R, a, x); } };
 }
 
@@ -83,16 +72,7 @@ Surface MakeCylinder()
 Surface MakeEllipsoid()
 {
   static const double ax[3] = { 3.0, 2.0, 1.0 };
-  vtkNew<vtkParametricEllipsoid> ell;
-  ell->SetXRadius(ax[0]);
-  ell->SetYRadius(ax[1]);
-  ell->SetZRadius(ax[2]);
-  vtkNew<vtkParametricFunctionSource> src;
-  src->SetParametricFunction(ell);
-  src->SetUResolution(384);
-  src->SetVResolution(192);
-  src->GenerateNormalsOff();
-  return { "ellipsoid 3x2x1", CleanMesh(src->GetOutputPort()),
+  return { "ellipsoid 3x2x1", EllipsoidMesh(ax, 384, 192),
     [](const double* x) { return EllipsoidTruth(ax, x); } };
 }
 

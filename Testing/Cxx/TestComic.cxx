@@ -21,29 +21,15 @@ using namespace stylizetest;
 
 namespace
 {
-constexpr int W = 400;
-constexpr int H = 300;
-
+constexpr int W = 400, H = 300;
 using Configure = std::function<void(vtkRenderer*, vtkComicPass*)>;
 
-/** The standard test scene through a comic pass (1 point = 1 pixel at H rows). */
+/** The standard test scene through a comic pass (1 point = 1 pixel at h rows). */
 vtkSmartPointer<vtkImageData> RenderComic(const Configure& configure, int w = W, int h = H,
   int magnify = 1, double scale = 1.0, bool parallel = false)
 {
-  auto scene = MakeTestScene(w, h, parallel, scale);
-  vtkRenderWindow* win = scene.Window;
-  vtkRenderer* ren = scene.Renderer;
-  vtkNew<vtkComicPass> comic;
-  comic->SetReferenceHeight(h);
-  ren->SetPass(comic);
-  if (configure)
-  {
-    configure(ren, comic);
-  }
-  win->Render();
-  auto img = Capture(win, magnify);
-  win->Finalize();
-  return img;
+  return RenderThroughPass<vtkComicPass>(configure, w, h, parallel, magnify, scale,
+    [h](vtkComicPass* comic) { comic->SetReferenceHeight(h); });
 }
 
 /** Gray value (0..255) of pixel i of an RGB image. */
@@ -348,19 +334,18 @@ int TestComicMotion(int argc, char* argv[])
   double swim[2] = { 0, 0 };
   for (int anchor : { vtkComicPass::SCREEN, vtkComicPass::OBJECT })
   {
-    auto scene = MakeTestScene(W, H, false);
+    auto scene = MakeStyledScene<vtkComicPass>(W, H, false, [anchor](vtkComicPass* comic) {
+      comic->SetReferenceHeight(H);
+      comic->SetAnchor(anchor);
+      // Pattern everywhere (the paper's darker lighting, normal-dependent hatching), so that the
+      // measure is about the pattern and not the outlines, which are anchored in both modes.
+      comic->GetLightingPass()->SetSubjectFactor(0.0);
+      comic->GetLightingPass()->SetGrayLevelsFar(2.0);
+      comic->GetLightingPass()->SetGrayLevelsNear(4.0);
+      comic->SetHatchDirections(4);
+    });
     vtkRenderWindow* win = scene.Window;
     vtkRenderer* ren = scene.Renderer;
-    vtkNew<vtkComicPass> comic;
-    comic->SetReferenceHeight(H);
-    comic->SetAnchor(anchor);
-    // Pattern everywhere (the paper's darker lighting, normal-dependent hatching), so that the
-    // measure is about the pattern and not the outlines, which are anchored in both modes.
-    comic->GetLightingPass()->SetSubjectFactor(0.0);
-    comic->GetLightingPass()->SetGrayLevelsFar(2.0);
-    comic->GetLightingPass()->SetGrayLevelsNear(4.0);
-    comic->SetHatchDirections(4);
-    ren->SetPass(comic);
     vtkCamera* cam = ren->GetActiveCamera();
 
     std::vector<unsigned char> previous;

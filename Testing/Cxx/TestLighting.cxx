@@ -15,22 +15,30 @@ using namespace stylizetest;
 
 namespace
 {
-void SetCamera(vtkRenderer* ren, bool parallel)
+/**
+ * The lighting tests' scene: a w x h window, the test actors on a dark gray-blue background lit
+ * by the light set-up, seen from azimuth 25, elevation 20, 12 units away.
+ */
+TestScene MakeLightingScene(const std::string& setup, bool parallel, int w, int h)
 {
-  PlaceCamera(ren, 1.0, 25, 20, 12.0, 0.37, parallel);
+  TestScene scene;
+  scene.Window = MakeWindow(w, h);
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  scene.Window->AddRenderer(scene.Renderer);
+  scene.Renderer->SetBackground(0.3, 0.32, 0.36);
+  AddTestActors(scene.Renderer);
+  SetupLights(scene.Renderer, setup);
+  PlaceCamera(scene.Renderer, 1.0, 25, 20, 12.0, 0.37, parallel);
+  return scene;
 }
 
 vtkSmartPointer<vtkImageData> RenderScene(
   int model, const std::string& setup, bool parallel, int mode, int w = 300, int h = 240)
 {
   // mode: 0 plain VTK, 1 lighting pass, 2 lighting pass inside the G-buffer
-  auto win = MakeWindow(w, h);
-  vtkNew<vtkRenderer> ren;
-  win->AddRenderer(ren);
-  ren->SetBackground(0.3, 0.32, 0.36);
-  AddTestActors(ren);
-  SetupLights(ren, setup);
-  SetCamera(ren, parallel);
+  auto scene = MakeLightingScene(setup, parallel, w, h);
+  vtkRenderWindow* win = scene.Window;
+  vtkRenderer* ren = scene.Renderer;
   vtkNew<vtkStylizeLightingPass> lighting;
   lighting->SetModel(model);
   vtkNew<vtkStylizeGBufferPass> gbuffer;
@@ -64,16 +72,11 @@ int TestLightingRegression(int argc, char* argv[])
   const std::string setup = args.Positional[1];
   const bool parallel = args.Positional.size() > 2 && args.Positional[2] == "parallel";
 
-  auto win = MakeWindow(300, 240);
-  vtkNew<vtkRenderer> ren;
-  win->AddRenderer(ren);
-  ren->SetBackground(0.3, 0.32, 0.36);
-  AddTestActors(ren);
-  SetupLights(ren, setup);
-  SetCamera(ren, parallel);
+  auto scene = MakeLightingScene(setup, parallel, 300, 240);
+  vtkRenderWindow* win = scene.Window;
   vtkNew<vtkStylizeLightingPass> lighting;
   lighting->SetModel(model);
-  ren->SetPass(lighting);
+  scene.Renderer->SetPass(lighting);
   win->Render();
   const int verdict = RegressionVerdict(win, argc, argv, args, 2, 0.0005, 24);
   win->Finalize();

@@ -170,9 +170,7 @@ int TestLightingExtremes(int, char*[])
         AddTestActors(r, 1.0);
         SetupLights(r, "kit", 1.0);
         PlaceCamera(r, 1.0, 20, 15, 16.0, 0.37, r->GetActiveCamera()->GetParallelProjection());
-        double range[2];
-        r->GetActiveCamera()->GetClippingRange(range);
-        r->GetActiveCamera()->SetClippingRange(range[1] * 1e-7, range[1]);
+        SetNearFarRatio(r, 1e-7);
       }, b, "near/far 1e-7");
       STYLIZE_CHECK(SurfacePixels(b) > 1000, "near/far 1e7: surface not rendered");
     }

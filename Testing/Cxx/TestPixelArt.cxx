@@ -4,7 +4,6 @@
 // and an orbit, fidelity of the two pixelation modes against a supersampled reference (SSIM),
 // magnified screenshots, and the extremes.
 #include "vtkActor.h"
-#include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -35,29 +34,8 @@ using namespace stylizetest;
 
 namespace
 {
-constexpr int W = 400;
-constexpr int H = 300;
-
+constexpr int W = 400, H = 300;
 using Configure = std::function<void(vtkRenderer*, vtkPixelArtPass*)>;
-
-/** The standard test scene through a pixel-art pass. */
-vtkSmartPointer<vtkImageData> RenderPixelArt(const Configure& configure, int w = W, int h = H,
-  bool parallel = false, int magnify = 1, double scale = 1.0)
-{
-  auto scene = MakeTestScene(w, h, parallel, scale);
-  vtkRenderWindow* win = scene.Window;
-  vtkRenderer* ren = scene.Renderer;
-  vtkNew<vtkPixelArtPass> pass;
-  ren->SetPass(pass);
-  if (configure)
-  {
-    configure(ren, pass);
-  }
-  win->Render();
-  auto img = Capture(win, magnify);
-  win->Finalize();
-  return img;
-}
 
 /** RGB (0..255) of pixel (x, y) of an 8-bit image. */
 std::array<double, 3> Pixel(vtkImageData* img, int x, int y)
@@ -683,7 +661,7 @@ int TestPixelArtCanny(int, char*[])
   EdgeStats stats[2];
   for (int detector : { P::SOBEL, P::CANNY })
   {
-    auto img = RenderPixelArt(
+    auto img = RenderThroughPass<P>(
       [detector](vtkRenderer*, P* p) {
         p->SetPixelSize(block);
         p->SetEdgeDetector(detector);
@@ -749,15 +727,15 @@ int TestPixelArtStability(int argc, char* argv[])
   {
     for (bool stable : { false, true })
     {
-      auto scene = MakeTestScene(W, H, true);
+      auto scene = MakeStyledScene<P>(W, H, true, [&](P* pass) {
+        pass->SetMode(mode);
+        pass->SetPixelSize(block);
+        pass->SetSnapToGrid(stable);
+        pass->SetDitherAnchor(stable ? P::GRID : P::SCREEN);
+      });
       vtkRenderWindow* win = scene.Window;
       vtkRenderer* ren = scene.Renderer;
-      vtkNew<P> pass;
-      pass->SetMode(mode);
-      pass->SetPixelSize(block);
-      pass->SetSnapToGrid(stable);
-      pass->SetDitherAnchor(stable ? P::GRID : P::SCREEN);
-      ren->SetPass(pass);
+      P* pass = scene.Pass;
       vtkCamera* cam = ren->GetActiveCamera();
       const double pixelWorld = 2.0 * cam->GetParallelScale() / H;
       double right[3];
@@ -838,14 +816,14 @@ int TestPixelArtStability(int argc, char* argv[])
   {
     for (int anchor : { P::SCREEN, P::GRID, P::SURFACE })
     {
-      auto scene = MakeTestScene(W, H, false);
+      auto scene = MakeStyledScene<P>(W, H, false, [&](P* pass) {
+        pass->SetMode(mode);
+        pass->SetPixelSize(block);
+        pass->SetDitherAnchor(anchor);
+      });
       vtkRenderWindow* win = scene.Window;
       vtkRenderer* ren = scene.Renderer;
-      vtkNew<P> pass;
-      pass->SetMode(mode);
-      pass->SetPixelSize(block);
-      pass->SetDitherAnchor(anchor);
-      ren->SetPass(pass);
+      P* pass = scene.Pass;
       std::vector<std::array<double, 3>> previous;
       long long changed = 0, total = 0;
       for (int f = 0; f < frames; ++f)
@@ -896,8 +874,8 @@ int TestPixelArtFidelity(int, char*[])
           p->SetLayer(layer);
         };
       };
-      auto reference = ArtPixels(RenderPixelArt(configure(P::FAITHFUL, block * ss), w * ss, h * ss),
-        block * ss);
+      auto reference = ArtPixels(
+        RenderThroughPass<P>(configure(P::FAITHFUL, block * ss), w * ss, h * ss), block * ss);
       double ssim[2], ms[2];
       for (int mode : { P::FAST, P::FAITHFUL })
       {
@@ -945,13 +923,13 @@ int TestPixelArtMagnify(int, char*[])
   {
     for (bool parallel : { false, true })
     {
-      auto tiled = RenderPixelArt(
+      auto tiled = RenderThroughPass<P>(
         [mode](vtkRenderer*, P* p) {
           p->SetMode(mode);
           p->SetPixelSize(5); // 300 / 10 and 400 / 10: blocks straddle the tile borders
         },
         W, H, parallel, 2);
-      auto direct = RenderPixelArt(
+      auto direct = RenderThroughPass<P>(
         [mode](vtkRenderer*, P* p) {
           p->SetMode(mode);
           p->SetPixelSize(10);
@@ -991,12 +969,7 @@ int TestPixelArtExtremes(int argc, char* argv[])
     { "500 lights", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetupLights(r, "many:500"); }, true },
     { "scale 1e-6", 240, 180, 1e-6, nullptr, true },
     { "scale 1e6", 240, 180, 1e6, nullptr, true },
-    { "near/far 1e7", 240, 180, 1.0,
-      [](vtkRenderer* r, P*) {
-        double range[2];
-        r->GetActiveCamera()->GetClippingRange(range);
-        r->GetActiveCamera()->SetClippingRange(range[1] * 1e-7, range[1]);
-      },
+    { "near/far 1e7", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetNearFarRatio(r, 1e-7); },
       true },
     { "every option at its limits", 240, 180, 1.0,
       [](vtkRenderer*, P* p) {
@@ -1020,22 +993,12 @@ int TestPixelArtExtremes(int argc, char* argv[])
     { "colormap palette without scalars", 240, 180, 1.0,
       [](vtkRenderer* r, P* p) {
         p->SetPalette(P::COLORMAP);
-        vtkActorCollection* actors = r->GetActors();
-        actors->InitTraversal();
-        while (vtkActor* a = actors->GetNextActor())
-        {
-          a->GetMapper()->ScalarVisibilityOff();
-        }
+        ForEachActor(r, [](vtkActor* a) { a->GetMapper()->ScalarVisibilityOff(); });
       },
       true },
     { "lines and points only", 240, 180, 1.0,
       [](vtkRenderer* r, P*) {
-        vtkActorCollection* actors = r->GetActors();
-        actors->InitTraversal();
-        while (vtkActor* a = actors->GetNextActor())
-        {
-          a->GetProperty()->SetRepresentationToWireframe();
-        }
+        ForEachActor(r, [](vtkActor* a) { a->GetProperty()->SetRepresentationToWireframe(); });
       },
       true },
     { "empty data", 240, 180, 1.0,

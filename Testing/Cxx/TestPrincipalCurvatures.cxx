@@ -5,9 +5,6 @@
 #include "vtkCleanPolyData.h"
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
-#include "vtkParametricEllipsoid.h"
-#include "vtkParametricFunctionSource.h"
-#include "vtkParametricTorus.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -161,15 +158,7 @@ int TestPrincipalCurvatures(int, char*[])
     // Torus, ring radius R = 2, tube radius a = 0.6 (vtkParametricTorus: ring in the xy plane).
     {
       const double R = 2.0, a = 0.6;
-      vtkNew<vtkParametricTorus> torus;
-      torus->SetRingRadius(R);
-      torus->SetCrossSectionRadius(a);
-      vtkNew<vtkParametricFunctionSource> src;
-      src->SetParametricFunction(torus);
-      src->SetUResolution(96 * level);
-      src->SetVResolution(48 * level);
-      src->GenerateNormalsOff();
-      auto mesh = CleanMesh(src->GetOutputPort());
+      auto mesh = TorusMesh(R, a, 96 * level, 48 * level);
       auto e = Compare(
         mesh,
         [&](const double* x) { return TorusTruth(R, a, x); },
@@ -181,16 +170,7 @@ int TestPrincipalCurvatures(int, char*[])
     // (the Hessian projected on the tangent plane over |grad F|), directions its eigenvectors.
     {
       const double ax[3] = { 3.0, 2.0, 1.0 };
-      vtkNew<vtkParametricEllipsoid> ell;
-      ell->SetXRadius(ax[0]);
-      ell->SetYRadius(ax[1]);
-      ell->SetZRadius(ax[2]);
-      vtkNew<vtkParametricFunctionSource> src;
-      src->SetParametricFunction(ell);
-      src->SetUResolution(128 * level);
-      src->SetVResolution(64 * level);
-      src->GenerateNormalsOff();
-      auto mesh = CleanMesh(src->GetOutputPort());
+      auto mesh = EllipsoidMesh(ax, 128 * level, 64 * level);
       auto e = Compare(
         mesh,
         [&](const double* x) { return EllipsoidTruth(ax, x); },

@@ -174,11 +174,7 @@ void Extremes()
     { "scale 1e6", 320, 240, 1e6, false, false, nullptr },
     { "scale 1e-6 parallel", 320, 240, 1e-6, true, false, nullptr },
     { "near/far 1e7", 320, 240, 1.0, false, false,
-      [](vtkRenderer* r) {
-        double range[2];
-        r->GetActiveCamera()->GetClippingRange(range);
-        r->GetActiveCamera()->SetClippingRange(range[1] * 1e-7, range[1]);
-      } },
+      [](vtkRenderer* r) { SetNearFarRatio(r, 1e-7); } },
     { "1x1 window", 1, 1, 1.0, false, false, nullptr },
     { "empty scene", 160, 120, 1.0, false, true, nullptr },
   };

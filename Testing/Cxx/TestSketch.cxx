@@ -2,7 +2,6 @@
 // its options; the noise textures against their definitions; the extremes (umbilic and planar
 // surfaces, a cylinder through the near plane, scales 1e-6 and 1e6, lines and points, no
 // lights, a 1x1 window, out-of-range settings): no NaN or Inf, no pixel without a direction.
-#include "vtkActorCollection.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkClipPolyData.h"
 #include "vtkPlane.h"
@@ -27,15 +26,12 @@ using Configure = std::function<void(vtkRenderer*, vtkSketchPass*)>;
 /** Puts vtkStylizePrincipalCurvatures behind every actor's mapper (model-space directions). */
 void AddCurvatureArrays(vtkRenderer* ren)
 {
-  vtkActorCollection* actors = ren->GetActors();
-  actors->InitTraversal();
-  while (vtkActor* a = actors->GetNextActor())
-  {
+  ForEachActor(ren, [](vtkActor* a) {
     vtkMapper* m = a->GetMapper();
     vtkNew<vtkStylizePrincipalCurvatures> filter;
     filter->SetInputConnection(m->GetInputConnection(0, 0));
     m->SetInputConnection(filter->GetOutputPort());
-  }
+  });
 }
 
 /** Surface pixels whose resolved direction is missing or not unit length; all non-finite. */
@@ -244,12 +240,7 @@ int TestSketchExtremes(int, char*[])
     { "200 lights", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetupLights(r, "many:200"); }, true },
     { "scale 1e-6", 240, 180, 1e-6, nullptr, true },
     { "scale 1e6", 240, 180, 1e6, nullptr, true },
-    { "near/far 1e7", 240, 180, 1.0,
-      [](vtkRenderer* r, P*) {
-        double range[2];
-        r->GetActiveCamera()->GetClippingRange(range);
-        r->GetActiveCamera()->SetClippingRange(range[1] * 1e-7, range[1]);
-      },
+    { "near/far 1e7", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetNearFarRatio(r, 1e-7); },
       true },
     { "1x1 window", 1, 1, 1.0, nullptr, false },
     { "every option at its limits", 240, 180, 1.0,
@@ -279,11 +270,8 @@ int TestSketchExtremes(int, char*[])
       [](vtkRenderer*, P* p) { p->SetDirectionSource(P::MODEL); }, true },
     { "lines and points only", 240, 180, 1.0,
       [](vtkRenderer* r, P*) {
-        vtkActorCollection* actors = r->GetActors();
-        actors->InitTraversal();
         int i = 0;
-        while (vtkActor* a = actors->GetNextActor())
-        {
+        ForEachActor(r, [&i](vtkActor* a) {
           if (i++ % 2)
           {
             a->GetProperty()->SetRepresentationToWireframe();
@@ -293,7 +281,7 @@ int TestSketchExtremes(int, char*[])
             a->GetProperty()->SetRepresentationToPoints();
             a->GetProperty()->SetPointSize(3);
           }
-        }
+        });
       },
       false },
     { "empty data", 240, 180, 1.0,

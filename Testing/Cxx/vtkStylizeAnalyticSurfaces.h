@@ -8,6 +8,9 @@
 #include "vtkCleanPolyData.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkParametricEllipsoid.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricTorus.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -137,6 +140,38 @@ inline vtkSmartPointer<vtkPolyData> CleanMesh(vtkAlgorithmOutput* port)
   out->ShallowCopy(clean->GetOutput());
   out->GetPointData()->SetNormals(nullptr);
   return out;
+}
+
+/**
+ * A torus about the z axis (vtkParametricTorus: ring radius R, tube radius a) sampled u x v,
+ * cleaned, without normals.
+ */
+inline vtkSmartPointer<vtkPolyData> TorusMesh(double R, double a, int u, int v)
+{
+  vtkNew<vtkParametricTorus> torus;
+  torus->SetRingRadius(R);
+  torus->SetCrossSectionRadius(a);
+  vtkNew<vtkParametricFunctionSource> src;
+  src->SetParametricFunction(torus);
+  src->SetUResolution(u);
+  src->SetVResolution(v);
+  src->GenerateNormalsOff();
+  return CleanMesh(src->GetOutputPort());
+}
+
+/** An ellipsoid with semi-axes ax (x, y, z) sampled u x v, cleaned, without normals. */
+inline vtkSmartPointer<vtkPolyData> EllipsoidMesh(const double ax[3], int u, int v)
+{
+  vtkNew<vtkParametricEllipsoid> ell;
+  ell->SetXRadius(ax[0]);
+  ell->SetYRadius(ax[1]);
+  ell->SetZRadius(ax[2]);
+  vtkNew<vtkParametricFunctionSource> src;
+  src->SetParametricFunction(ell);
+  src->SetUResolution(u);
+  src->SetVResolution(v);
+  src->GenerateNormalsOff();
+  return CleanMesh(src->GetOutputPort());
 }
 
 /** An open cylinder of radius r along z, n around, m along, height h, triangulated. */

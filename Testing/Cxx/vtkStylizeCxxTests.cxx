@@ -10,6 +10,7 @@ int TestLightingExtremes(int argc, char* argv[]);
 int TestLightingModelSwitch(int argc, char* argv[]);
 int TestGBuffer(int argc, char* argv[]);
 int TestSceneImage(int argc, char* argv[]);
+int TestRankCompositor(int argc, char* argv[]);
 int TestComicRegression(int argc, char* argv[]);
 int TestComicScale(int argc, char* argv[]);
 int TestComicMagnify(int argc, char* argv[]);
@@ -47,6 +48,7 @@ const Entry Tests[] = {
   { "TestLightingModelSwitch", TestLightingModelSwitch },
   { "TestGBuffer", TestGBuffer },
   { "TestSceneImage", TestSceneImage },
+  { "TestRankCompositor", TestRankCompositor },
   { "TestComicRegression", TestComicRegression },
   { "TestComicScale", TestComicScale },
   { "TestComicMagnify", TestComicMagnify },

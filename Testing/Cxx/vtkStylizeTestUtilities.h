@@ -4,6 +4,7 @@
 #define vtkStylizeTestUtilities_h
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkCylinderSource.h"
 #include "vtkFloatArray.h"
@@ -194,6 +195,32 @@ inline TestScene MakeTestScene(int w, int h, bool parallel = false, double scale
   return scene;
 }
 
+/** The standard style test scene and the pass its renderer draws through. */
+template <class PassType>
+struct StyledScene : TestScene
+{
+  vtkSmartPointer<PassType> Pass;
+};
+
+/**
+ * MakeTestScene with a new pass on the renderer, set up by `prepare` (may be null) before the
+ * renderer gets it.
+ */
+template <class PassType>
+StyledScene<PassType> MakeStyledScene(int w, int h, bool parallel,
+  const std::function<void(PassType*)>& prepare = nullptr, double scale = 1.0)
+{
+  StyledScene<PassType> scene;
+  static_cast<TestScene&>(scene) = MakeTestScene(w, h, parallel, scale);
+  scene.Pass = vtkSmartPointer<PassType>::New();
+  if (prepare)
+  {
+    prepare(scene.Pass);
+  }
+  scene.Renderer->SetPass(scene.Pass);
+  return scene;
+}
+
 /**
  * Light set-ups: "headlight" (VTK's default), "none" (no light, automatic creation off),
  * "kit" (8 mixed lights: directional, positional with attenuation, a spot, a camera light,
@@ -296,6 +323,49 @@ inline vtkSmartPointer<vtkImageData> Capture(vtkRenderWindow* win, int scale = 1
   auto img = vtkSmartPointer<vtkImageData>::New();
   img->DeepCopy(w2i->GetOutput());
   return img;
+}
+
+/**
+ * The standard test scene (w x h, scaled, in either projection) rendered once through a new
+ * Pass: `prepare` (may be null) sets the pass up before the renderer gets it, `configure` (may
+ * be null) after. Returns the capture, magnified by `magnify`.
+ */
+template <class Pass>
+vtkSmartPointer<vtkImageData> RenderThroughPass(
+  const std::function<void(vtkRenderer*, Pass*)>& configure, int w, int h, bool parallel = false,
+  int magnify = 1, double scale = 1.0, const std::function<void(Pass*)>& prepare = nullptr)
+{
+  auto scene = MakeStyledScene<Pass>(w, h, parallel, prepare, scale);
+  if (configure)
+  {
+    configure(scene.Renderer, scene.Pass);
+  }
+  scene.Window->Render();
+  auto img = Capture(scene.Window, magnify);
+  scene.Window->Finalize();
+  return img;
+}
+
+/** Calls `visit` on each of the renderer's actors. */
+inline void ForEachActor(vtkRenderer* ren, const std::function<void(vtkActor*)>& visit)
+{
+  vtkActorCollection* actors = ren->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* a = actors->GetNextActor())
+  {
+    visit(a);
+  }
+}
+
+/**
+ * Moves the near plane of the renderer's camera to `ratio` times its far plane (the extremes
+ * tests' near/far ratio of 1e7 is ratio 1e-7).
+ */
+inline void SetNearFarRatio(vtkRenderer* ren, double ratio)
+{
+  double range[2];
+  ren->GetActiveCamera()->GetClippingRange(range);
+  ren->GetActiveCamera()->SetClippingRange(range[1] * ratio, range[1]);
 }
 
 inline void WritePNG(vtkImageData* img, const std::string& path)
@@ -469,21 +539,15 @@ int RunStyleVariant(int argc, char* argv[], const char* test,
     return 1;
   }
   const bool parallel = args.Positional.size() > 1 && args.Positional[1] == "parallel";
-  auto scene = MakeTestScene(w, h, parallel);
-  vtkNew<Pass> pass;
-  if (prepare)
-  {
-    prepare(pass);
-  }
-  scene.Renderer->SetPass(pass);
+  auto scene = MakeStyledScene<Pass>(w, h, parallel, prepare);
   if (it->second)
   {
-    it->second(scene.Renderer, pass);
+    it->second(scene.Renderer, scene.Pass);
   }
   scene.Window->Render();
   if (inspect)
   {
-    inspect(pass, name);
+    inspect(scene.Pass, name);
   }
   const int verdict = RegressionVerdict(scene.Window, argc, argv, args, 2, 0.002, 255);
   scene.Window->Finalize();

@@ -48,19 +48,22 @@ if [ "$with_python" = ON ]; then
     "$prefix" || fail "the installed Python package did not work from $prefix"
 fi
 
+# check_plugin WRAPPER STEM NOT_FROM_PREFIX: the installed WRAPPER runs check_load.py, which
+# writes $work/STEM.png (log: $work/STEM.log) and must say that the plugin was loaded from the
+# prefix; NOT_FROM_PREFIX is the failure's message when it was loaded from elsewhere.
+check_plugin() {
+  clean "$prefix/bin/$1" "$source/Testing/ParaView/check_load.py" \
+    "$work/$2.png" >"$work/$2.log" 2>&1 ||
+    fail "the installed $1 did not load the plugin (see $work/$2.log)"
+  grep -q "plugin loaded from $prefix/" "$work/$2.log" ||
+    fail "$3: $(cat "$work/$2.log")"
+}
+
 if [ "$with_plugin" = ON ]; then
-  clean "$prefix/bin/pvbatch-stylize" "$source/Testing/ParaView/check_load.py" \
-    "$work/plugin.png" >"$work/plugin.log" 2>&1 ||
-    fail "the installed pvbatch-stylize did not load the plugin (see $work/plugin.log)"
-  grep -q "plugin loaded from $prefix/" "$work/plugin.log" ||
-    fail "the plugin was not loaded from $prefix: $(cat "$work/plugin.log")"
+  check_plugin pvbatch-stylize plugin "the plugin was not loaded from $prefix"
   [ -s "$work/plugin.png" ] || fail "pvbatch-stylize wrote no image"
   # pvpython-stylize (ParaView's Python before Debian's VTK 9.1 modules), in its built-in session
-  clean "$prefix/bin/pvpython-stylize" "$source/Testing/ParaView/check_load.py" \
-    "$work/pvpython.png" >"$work/pvpython.log" 2>&1 ||
-    fail "the installed pvpython-stylize did not load the plugin (see $work/pvpython.log)"
-  grep -q "plugin loaded from $prefix/" "$work/pvpython.log" ||
-    fail "pvpython-stylize did not load the plugin from $prefix: $(cat "$work/pvpython.log")"
+  check_plugin pvpython-stylize pvpython "pvpython-stylize did not load the plugin from $prefix"
   [ -x "$prefix/bin/pvserver-stylize" ] || fail "no pvserver-stylize in $prefix/bin"
   echo "plugin from the moved prefix: $work/plugin.png, $work/pvpython.png"
 fi

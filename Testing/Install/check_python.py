@@ -8,30 +8,23 @@ import sys
 
 prefix = os.path.realpath(sys.argv[1])
 import vtkstylize  # noqa: E402
-from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: E402
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,  # noqa: E402
-                                         vtkRenderWindow, vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkRenderer, vtkWindowToImageFilter  # noqa: E402
 import vtkmodules.vtkRenderingOpenGL2  # noqa: E402,F401
+
+# The Python tests' shared scene pieces. Their folder goes last on the path, so that vtkstylize
+# can only come from PYTHONPATH (the prefix), as checked below.
+sys.path.append(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+from stylize_test_scene import offscreen_window, sphere_actor  # noqa: E402
 
 where = os.path.realpath(vtkstylize.__file__)
 if not where.startswith(prefix + os.sep):
     sys.exit("vtkstylize was imported from %s, not from %s" % (where, prefix))
 
-sphere = vtkSphereSource()
-sphere.SetThetaResolution(48)
-sphere.SetPhiResolution(24)
-mapper = vtkPolyDataMapper()
-mapper.SetInputConnection(sphere.GetOutputPort())
-actor = vtkActor()
-actor.SetMapper(mapper)
 renderer = vtkRenderer()
-renderer.AddActor(actor)
+renderer.AddActor(sphere_actor(48, 24))
 renderer.SetBackground(1, 1, 1)
 vtkstylize.apply_style(renderer, "comic")
-window = vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetMultiSamples(0)
-window.SetSize(120, 90)
+window = offscreen_window(120, 90)
 window.AddRenderer(renderer)
 window.Render()
 grab = vtkWindowToImageFilter()

@@ -37,11 +37,35 @@ chmod 700 "$tmp/runtime"
 HOME="$tmp/home" XDG_CONFIG_HOME="$tmp/config" XDG_CACHE_HOME="$tmp/cache"
 XDG_DATA_HOME="$tmp/data" XDG_RUNTIME_DIR="$tmp/runtime" STYLIZE_GUI_OUT="$out"
 export HOME XDG_CONFIG_HOME XDG_CACHE_HOME XDG_DATA_HOME XDG_RUNTIME_DIR STYLIZE_GUI_OUT
+# test_gui.py imports stylize_pv_scene from this folder (a --script does not put its own folder
+# on Python's path); after the wrapper's entries, so that ParaView's modules come first
+PYTHONPATH="${PYTHONPATH:+$PYTHONPATH:}$here"
+export PYTHONPATH
 rm -f "$out/gui-result.txt" "$out/gui-window.png" "$out/gui-comic.png" "$out/gui-none.png"
 
 panel=pqClientMainWindow/propertiesDock/propertiesPanel
 sections=$panel/scrollArea/qt_scrollarea_viewport/scrollAreaWidgetContents
 view_panel=$sections/ViewFrame/ProxyPanel
+
+# click OBJECT: QtTesting events that click OBJECT's left button at (20, 10).
+click() {
+  cat <<EOF
+  <pqevent object="$1" command="mousePress" arguments="1,1,0,20,10" />
+  <pqevent object="$1" command="mouseRelease" arguments="1,0,0,20,10" />
+EOF
+}
+
+# drag X Y X1 Y1 X2 Y2: QtTesting events that press the left button on the main window at
+# (X, Y), move it through (X1, Y1) to (X2, Y2) and release it there.
+drag() {
+  cat <<EOF
+  <pqevent object="pqClientMainWindow" command="mousePress" arguments="1,1,0,$1,$2" />
+  <pqevent object="pqClientMainWindow" command="mouseMove" arguments="1,1,0,$3,$4" />
+  <pqevent object="pqClientMainWindow" command="mouseMove" arguments="1,1,0,$5,$6" />
+  <pqevent object="pqClientMainWindow" command="mouseRelease" arguments="1,0,0,$5,$6" />
+EOF
+}
+
 cat > "$tmp/events.xml" <<EOF
 <?xml version="1.0" ?>
 <pqevents>
@@ -54,22 +78,10 @@ cat > "$tmp/events.xml" <<EOF
       property="currentText" arguments="Stylized Surface" />
   <!-- for the screenshot: collapse the source's and the display's sections, widen the left
        dock area and shorten the pipeline browser (drag the dock separators) -->
-  <pqevent object="$sections/PropertiesButtons/PropertiesButton" command="mousePress"
-      arguments="1,1,0,20,10" />
-  <pqevent object="$sections/PropertiesButtons/PropertiesButton" command="mouseRelease"
-      arguments="1,0,0,20,10" />
-  <pqevent object="$sections/DisplayButtons/DisplayButton" command="mousePress"
-      arguments="1,1,0,20,10" />
-  <pqevent object="$sections/DisplayButtons/DisplayButton" command="mouseRelease"
-      arguments="1,0,0,20,10" />
-  <pqevent object="pqClientMainWindow" command="mousePress" arguments="1,1,0,295,600" />
-  <pqevent object="pqClientMainWindow" command="mouseMove" arguments="1,1,0,380,600" />
-  <pqevent object="pqClientMainWindow" command="mouseMove" arguments="1,1,0,440,600" />
-  <pqevent object="pqClientMainWindow" command="mouseRelease" arguments="1,0,0,440,600" />
-  <pqevent object="pqClientMainWindow" command="mousePress" arguments="1,1,0,200,364" />
-  <pqevent object="pqClientMainWindow" command="mouseMove" arguments="1,1,0,200,300" />
-  <pqevent object="pqClientMainWindow" command="mouseMove" arguments="1,1,0,200,250" />
-  <pqevent object="pqClientMainWindow" command="mouseRelease" arguments="1,0,0,200,250" />
+$(click "$sections/PropertiesButtons/PropertiesButton")
+$(click "$sections/DisplayButtons/DisplayButton")
+$(drag 295 600 380 600 440 600)
+$(drag 200 364 200 300 200 250)
   <pqevent object="pqClientMainWindow" command="process_events" arguments="300" />
   <pqevent object="pqClientMainWindow/pythonShellDock/pythonShell/consoleWidget"
       command="executeCommand" arguments="import __main__; __main__.capture_window()" />

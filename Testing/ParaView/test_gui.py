@@ -18,28 +18,11 @@ import struct
 import zlib
 
 from paraview.simple import *  # noqa: F401,F403
-from paraview.vtk.vtkIOImage import vtkPNGReader
+from stylize_pv_scene import check, failures, pixels  # on PYTHONPATH through run_gui.sh
 
 out = os.environ.get("STYLIZE_GUI_OUT", os.getcwd())
 os.makedirs(out, exist_ok=True)
 result = os.path.join(out, "gui-result.txt")
-failures = []
-
-
-def check(condition, message):
-    print(("ok   " if condition else "FAIL ") + message, flush=True)
-    if not condition:
-        failures.append(message)
-
-
-def pixels(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    scalars = reader.GetOutput().GetPointData().GetScalars()
-    n = scalars.GetNumberOfComponents()
-    values = [scalars.GetValue(i) for i in range(scalars.GetNumberOfValues())]
-    return [tuple(values[i:i + 3]) for i in range(0, len(values), n)]
 
 
 def write_png(path, width, height, rgb):
@@ -181,7 +164,7 @@ def run():
         Render(view)
         path = os.path.join(out, "gui-%s.png" % name)
         SaveScreenshot(path, view, ImageResolution=[600, 450])
-        images[name] = pixels(path)
+        images[name] = pixels(path)[1]
     element = view.SMProxy.GetProperty("Style").GetElement(0)
     check(element == 1 and view.Style == "Comic", "Style is Comic (%d, %s)" % (element, view.Style))
     d = sum(abs(x - y) for p, q in zip(images["none"], images["comic"])

@@ -11,28 +11,10 @@ import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
-from paraview.vtk.vtkIOImage import vtkPNGReader
+from stylize_pv_scene import check, failures, pixels
 
 out = sys.argv[1]
 os.makedirs(out, exist_ok=True)
-failures = []
-
-
-def check(condition, message):
-    print(("ok   " if condition else "FAIL ") + message)
-    if not condition:
-        failures.append(message)
-
-
-def pixels(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    scalars = image.GetPointData().GetScalars()
-    n = scalars.GetNumberOfComponents()
-    values = [scalars.GetValue(i) for i in range(scalars.GetNumberOfValues())]
-    return image.GetDimensions(), [tuple(values[i:i + 3]) for i in range(0, len(values), n)]
 
 
 view = CreateView("StylizeView")

@@ -1,11 +1,11 @@
-"""Shared pieces of the Python tests: failure bookkeeping, styles by class and settings, and a
-torus test object (a curved surface whose principal directions are defined everywhere)."""
+"""Shared pieces of the Python tests: failure bookkeeping, styles by class and settings, a sphere
+and a torus test object (a curved surface whose principal directions are defined everywhere)."""
 import os
 
 import vtkstylize
 from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
+from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource, vtkSphereSource
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factories)
@@ -14,10 +14,11 @@ failures = []
 
 
 def check(cond, message):
-    """Records and prints a failure when cond is false."""
+    """Records and prints a failure when cond is false; returns cond."""
     if not cond:
         failures.append(message)
         print("FAIL:", message)
+    return cond
 
 
 def style_maker(class_name, **settings):
@@ -30,6 +31,20 @@ def style_maker(class_name, **settings):
             getattr(style, "Set" + name)(*args)
         return style
     return make
+
+
+def sphere_actor(theta_resolution=None, phi_resolution=None):
+    """A vtkSphereSource (its default resolutions unless given) as an actor."""
+    sphere = vtkSphereSource()
+    if theta_resolution is not None:
+        sphere.SetThetaResolution(theta_resolution)
+    if phi_resolution is not None:
+        sphere.SetPhiResolution(phi_resolution)
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputConnection(sphere.GetOutputPort())
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    return actor
 
 
 def torus_actor(cross_section, tilt):

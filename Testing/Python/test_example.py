@@ -30,21 +30,14 @@ from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLPolyDataWriter
 
+from stylize_test_scene import check, failures
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
     HERE, "..", "..", "Examples", "Python", "stylize_dataset.py")
 
 # Inside the object's area, in levels (0-255) per channel. Seen: 46 to 101 (see the output).
 MIN_STYLE_DIFFERENCE = 20.0
-
-failures = []
-
-
-def check(cond, message):
-    if not cond:
-        failures.append(message)
-        print("FAIL:", message)
-    return cond
 
 
 class Image:

@@ -17,21 +17,13 @@ import sys
 
 import vtkstylize
 import vtkstylize.vtkStylizeFilters
+import vtkstylize.vtkStylizeIO
 import vtkstylize.vtkStylizePasses
 from vtkstylize_testing import vtkStylizeImageMetrics
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
-                                         vtkRenderWindow, vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkRenderer, vtkWindowToImageFilter
 
-failures = []
-
-
-def check(cond, message):
-    if not cond:
-        failures.append(message)
-        print("FAIL:", message)
-    return cond
+from stylize_test_scene import check, failures, offscreen_window, sphere_actor
 
 
 def raises(kind, call, *needles):
@@ -50,7 +42,8 @@ def raises(kind, call, *needles):
 
 # The package: documented, every wrapped class re-exported, the build copy is the source.
 doc = vtkstylize.__doc__ or ""
-for module in (vtkstylize.vtkStylizePasses, vtkstylize.vtkStylizeFilters):
+for module in (vtkstylize.vtkStylizePasses, vtkstylize.vtkStylizeIO,
+               vtkstylize.vtkStylizeFilters):
     for name in (n for n in dir(module) if n.startswith("vtk")):
         check(getattr(vtkstylize, name, None) is getattr(module, name),
               "%s is not re-exported by the package" % name)
@@ -140,18 +133,11 @@ check(raises(ValueError, lambda: vtkstylize.configure(lighting, Bogus=1), "Bogus
 # apply_style on a renderer: the pass is set and returned; "none" restores plain VTK.
 messages = vtkStringOutputWindow()
 vtkOutputWindow.SetInstance(messages)
-window = vtkRenderWindow()
-window.SetSize(160, 120)
-window.SetMultiSamples(0)
-window.SetOffScreenRendering(1)
+window = offscreen_window(160, 120)
 renderer = vtkRenderer()
 renderer.SetBackground(1, 1, 1)
 window.AddRenderer(renderer)
-mapper = vtkPolyDataMapper()
-sphere = vtkSphereSource()
-mapper.SetInputConnection(sphere.GetOutputPort())
-actor = vtkActor()
-actor.SetMapper(mapper)
+actor = sphere_actor()
 renderer.AddActor(actor)
 renderer.ResetCamera()
 
@@ -184,7 +170,7 @@ d = metrics.MaximumDifference(plain, restored)
 print("apply_style('none'): max difference from plain VTK %g" % d)
 check(d == 0, "apply_style('none') does not restore plain VTK rendering (max difference %g)" % d)
 window.Finalize()
-window = renderer = actor = mapper = None  # destroy the window and the last pass now
+window = renderer = actor = None  # destroy the window and the last pass now
 log = messages.GetOutput() or ""
 check("ERROR" not in log.upper(), "VTK errors while switching styles:\n%s" % log)
 

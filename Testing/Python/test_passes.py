@@ -6,26 +6,17 @@ import sys
 
 import vtkstylize
 from vtkstylize_testing import vtkStylizeImageMetrics
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
-                                         vtkRenderWindow, vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkRenderer, vtkWindowToImageFilter
 from vtkmodules.vtkCommonCore import vtkFloatArray
 
-from stylize_test_scene import check, failures
+from stylize_test_scene import check, failures, offscreen_window, sphere_actor
 
 
 def render(model, gbuffer):
-    win = vtkRenderWindow()
-    win.SetSize(160, 120)
-    win.SetMultiSamples(0)
-    win.OffScreenRenderingOn()
+    win = offscreen_window(160, 120)
     ren = vtkRenderer()
     win.AddRenderer(ren)
-    sphere = vtkSphereSource()
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(sphere.GetOutputPort())
-    actor = vtkActor()
-    actor.SetMapper(mapper)
+    actor = sphere_actor()
     ren.AddActor(actor)
     lighting = vtkstylize.vtkStylizeLightingPass()
     lighting.SetModel(model)
@@ -77,20 +68,11 @@ def render_style(style_pass, colour=None, inspect=None):
     """A 200x150 sphere on white through style_pass; returns the image's scalars.
 
     inspect(), when given, runs after the render while the window's context is alive."""
-    win = vtkRenderWindow()
-    win.SetSize(200, 150)
-    win.SetMultiSamples(0)
-    win.OffScreenRenderingOn()
+    win = offscreen_window(200, 150)
     ren = vtkRenderer()
     ren.SetBackground(1, 1, 1)
     win.AddRenderer(ren)
-    sphere = vtkSphereSource()
-    sphere.SetThetaResolution(64)
-    sphere.SetPhiResolution(32)
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(sphere.GetOutputPort())
-    actor = vtkActor()
-    actor.SetMapper(mapper)
+    actor = sphere_actor(64, 32)
     if colour:
         actor.GetProperty().SetColor(*colour)
     ren.AddActor(actor)

@@ -13,30 +13,22 @@ than one image.
 usage: figures.py VTKSTYLIZE DATADIR OUTDIR [--check] [--meshes a,b] [--size WxH]
                   [--styles comic,pixel,sketch] [--annotations]
 """
-import argparse
 import os
 import re
 import subprocess
 import sys
 import time
 
-import vtk
 from vtkstylize_testing import vtkStylizeImageMetrics as M
+
+import realdata
 
 SSIM_MIN = 0.95
 
 
 def read_png(path):
-    reader = vtk.vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    rgb = vtk.vtkImageExtractComponents()
-    rgb.SetInputConnection(reader.GetOutputPort())
-    rgb.SetComponents(0, 1, 2)
-    rgb.Update()
-    image = vtk.vtkImageData()
-    image.DeepCopy(rgb.GetOutput())
-    return image
+    """The PNG's RGB channels (an alpha channel left out), so that every image compares alike."""
+    return realdata.read_png(path, rgb=True)
 
 
 def run(cmd):
@@ -63,11 +55,7 @@ def vector_content(figure):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("exe")
-    parser.add_argument("datadir")
-    parser.add_argument("outdir")
-    parser.add_argument("--check", action="store_true")
+    parser = realdata.argument_parser(__doc__)
     parser.add_argument("--meshes", default="bunny,fandisk,rotor,vessel")
     parser.add_argument("--styles", default="comic,pixel,sketch")
     parser.add_argument("--size", default="800x600")
@@ -112,11 +100,7 @@ def main():
                         failures.append("%s: %d vector paths (at least %d expected)" % (name, paths, need))
                     if style != "sketch" and images > 0:
                         failures.append("%s: embeds %d images (expected vector only)" % (name, images))
-    if args.check and failures:
-        for f in failures:
-            print("FAIL: " + f)
-        return 1
-    return 0
+    return realdata.exit_status(failures, args.check)
 
 
 if __name__ == "__main__":

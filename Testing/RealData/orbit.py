@@ -62,6 +62,8 @@ from vtk.util.numpy_support import vtk_to_numpy
 
 import vtkstylize
 
+import realdata
+
 ANCHORS = {
     "comic": ("Anchor", vtkstylize.vtkComicPass.SCREEN, vtkstylize.vtkComicPass.OBJECT),
     "pixel": ("DitherAnchor", vtkstylize.vtkPixelArtPass.SCREEN, vtkstylize.vtkPixelArtPass.SURFACE),
@@ -290,11 +292,7 @@ def main():
                 if not (0.8 <= surface[1] * surface[3] and surface[2] * surface[3] <= 1.2):
                     failures.append("%s %s: pattern scale outside 20%% of the still frame's" % (mesh, style))
             window.Finalize()
-    if args.check and failures:
-        for f in failures:
-            print("FAIL: " + f)
-        return 1
-    return 0
+    return realdata.exit_status(failures, args.check)
 
 
 if __name__ == "__main__":

@@ -33,13 +33,43 @@ BLUR_SIGMA, WINDOW, PAPER_LEVEL = 4.0, 15, 0.9
 OPEN = {}
 
 
-def read_png(path):
+def read_png(path, rgb=False):
+    """A PNG file as image data; with rgb, its first three channels only (no alpha)."""
     reader = vtk.vtkPNGReader()
     reader.SetFileName(path)
     reader.Update()
+    output = reader.GetOutput()
+    if rgb:
+        channels = vtk.vtkImageExtractComponents()
+        channels.SetInputConnection(reader.GetOutputPort())
+        channels.SetComponents(0, 1, 2)
+        channels.Update()
+        output = channels.GetOutput()
     image = vtk.vtkImageData()
-    image.DeepCopy(reader.GetOutput())
+    image.DeepCopy(output)
     return image
+
+
+def argument_parser(doc):
+    """The command line of a script that measures vtkstylize's pictures of the real-data set,
+    VTKSTYLIZE DATADIR OUTDIR [--check], described by the first line of doc; the script adds its
+    own options."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("exe")
+    parser.add_argument("datadir")
+    parser.add_argument("outdir")
+    parser.add_argument("--check", action="store_true")
+    return parser
+
+
+def exit_status(failures, check):
+    """The exit status of a script that measures with --check: 1 when checking and anything
+    failed (each failure printed as "FAIL: ..."), else 0."""
+    if check and failures:
+        for f in failures:
+            print("FAIL: " + f)
+        return 1
+    return 0
 
 
 def render(exe, mesh, out, size, options):
@@ -51,11 +81,7 @@ def render(exe, mesh, out, size, options):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("exe")
-    parser.add_argument("datadir")
-    parser.add_argument("outdir")
-    parser.add_argument("--check", action="store_true")
+    parser = argument_parser(__doc__)
     parser.add_argument("--meshes", default=",".join(MESHES))
     parser.add_argument("--size", default="1280x720")
     parser.add_argument("--common", default="", help="options for every rendering")
