@@ -18,7 +18,8 @@ STYLIZE_JOBS="${STYLIZE_JOBS:-$(nproc)}"
 # MP4) by ffmpeg.
 STYLIZE_PACKAGES=(cmake make g++ pkg-config libvtk9-dev python3-vtk9 python3-dev libglm-dev xvfb xauth
   x11-utils libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5 libcli11-dev
-  libcgal-demo libcairo2-dev libpotrace-dev fonts-liberation librsvg2-bin poppler-utils ffmpeg)
+  libcgal-demo libcairo2-dev libpotrace-dev fonts-liberation librsvg2-bin poppler-utils ffmpeg
+  clang-format)
 
 stylize_install_dependencies() {
   local missing=()

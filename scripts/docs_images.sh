@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# Re-renders the manual's images of the built-in scene, the CLI test data and the real-data set
+# (docs/images) with the current defaults: one vtkstylize command per image, as docs/overview.md
+# and README.md give them. Needs a build whose test data exist (run scripts/test.sh, or at least
+# the CLI and real-data tests, first) and an X display (scripts/common.sh starts Xvfb).
+#   scripts/docs_images.sh [BUILD]     (default: build)
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+build="${1:-$STYLIZE_BUILD}"
+program="$build/bin/vtkstylize"
+cli="$build/Testing/Cli/data"
+real="$build/Testing/RealData/data"
+out="$STYLIZE_ROOT/docs/images"
+for need in "$program" "$cli/hexes.vtu" "$cli/wavelet.vti" "$real/bunny.ply"; do
+  if [ ! -e "$need" ]; then
+    echo "missing $need: build and run the tests first (scripts/test.sh)" >&2
+    exit 1
+  fi
+done
+stylize_start_display
+
+# A 16-colour list for --colors (PICO-8's palette).
+pico8="#000000;#1d2b53;#7e2553;#008751;#ab5236;#5f574f;#c2c3c7;#fff1e8;#ff004d;#ffa300;#ffec27;#00e436;#29adff;#83769c;#ff77a8;#ffccaa"
+ablation="--style comic --size 960x540 --no-annotations"
+pixel="--style pixel --size 960x540"
+sketch="--style sketch --size 960x540"
+
+# name | options (a file name last, when the image is of data)
+images=(
+  "comic-scene|--style comic"
+  "pixel-scene|$pixel"
+  "pixel-fast|$pixel --mode fast"
+  "sketch-scene|$sketch"
+  "lighting-standard|--lighting standard --size 640x360"
+  "lighting-comic|--lighting comic --size 640x360"
+  "lighting-pixelart|--lighting pixelart --size 640x360"
+  "lighting-comic-8lights|--lighting comic --lights 8 --subject 0.8 --size 640x360"
+  "comic-hexes|--style comic --size 640x480 $cli/hexes.vtu"
+  "pixel-hexes|$pixel --palette 16 $cli/hexes.vtu"
+  "sketch-hexes|$sketch --tinted $cli/hexes.vtu"
+  "comic-wavelet-tinted|--style comic --tinted --size 640x480 $cli/wavelet.vti"
+  "pixel-wavelet|$pixel --palette colormap $cli/wavelet.vti"
+  "sketch-wavelet|$sketch $cli/wavelet.vti"
+  "comic|$ablation"
+  "comic-no-edges|$ablation --no-edges"
+  "comic-no-dots|$ablation --no-dots"
+  "comic-no-hatching|$ablation --no-hatching"
+  "comic-standard-lighting|$ablation --lighting standard"
+  "comic-object-anchor|$ablation --anchor object"
+  "comic-tinted|$ablation --tinted"
+  "pixel-1bit|$pixel --palette 1bit"
+  "pixel-4grays|$pixel --palette 4grays"
+  "pixel-16|$pixel --palette 16"
+  "pixel-colormap|$pixel --palette colormap"
+  "pixel-custom|$pixel --colors $pico8"
+  "pixel-size8|$pixel --pixel-size 8"
+  "pixel-edges-sobel|$pixel --pixel-layer edges --edge-detector sobel --no-depth-edges"
+  "pixel-edges-canny|$pixel --pixel-layer edges --no-depth-edges"
+  "pixel-edges-canny-depth|$pixel --pixel-layer edges"
+  "sketch-perlin|$sketch --noise perlin"
+  "sketch-worley|$sketch --noise worley"
+  "sketch-sparse|$sketch --noise sparse"
+  "sketch-directions|$sketch --sketch-layer directions"
+  "sketch-directions-model|$sketch --sketch-layer directions --direction-source model"
+  "sketch-strokes|$sketch --sketch-layer strokes"
+  "sketch-bisector|$sketch --direction bisector"
+)
+for style in comic pixel sketch; do
+  for mesh in bunny fandisk cow; do
+    images+=("real-$mesh-$style|--style $style --size 640x360 $real/$mesh.ply")
+  done
+done
+
+for entry in "${images[@]}"; do
+  name="${entry%%|*}"
+  read -r -a options <<< "${entry#*|}"
+  "$program" "${options[@]}" --output "$out/$name.png" > /dev/null
+  echo "$out/$name.png"
+done
