@@ -50,7 +50,8 @@ void vtkStylizeCairoContextDevice2D::Begin(vtkViewport* viewport)
   this->Stack.clear();
   this->Clipping = false;
   this->Origin[0] = this->Origin[1] = 0;
-  this->DotsPerInch = viewport && viewport->GetVTKWindow() ? viewport->GetVTKWindow()->GetDPI() : 72;
+  this->DotsPerInch =
+    viewport && viewport->GetVTKWindow() ? viewport->GetVTKWindow()->GetDPI() : 72;
   if (viewport)
   {
     // device coordinates are the viewport's pixels: the viewport's origin in the window
@@ -173,7 +174,8 @@ void vtkStylizeCairoContextDevice2D::StrokePen(const unsigned char* rgba)
   {
     d *= this->Scale;
   }
-  cairo_set_dash(this->Cr, dashes.empty() ? nullptr : dashes.data(), static_cast<int>(dashes.size()), 0);
+  cairo_set_dash(
+    this->Cr, dashes.empty() ? nullptr : dashes.data(), static_cast<int>(dashes.size()), 0);
   cairo_stroke_preserve(this->Cr);
   ++this->Shapes;
 }
@@ -266,7 +268,8 @@ void vtkStylizeCairoContextDevice2D::DrawMarkers(
     double x, y;
     this->ToPage(points[2 * i], points[2 * i + 1], x, y);
     cairo_new_path(this->Cr);
-    cairo_set_source_rgba(this->Cr, rgba[0] / 255.0, rgba[1] / 255.0, rgba[2] / 255.0, rgba[3] / 255.0);
+    cairo_set_source_rgba(
+      this->Cr, rgba[0] / 255.0, rgba[1] / 255.0, rgba[2] / 255.0, rgba[3] / 255.0);
     cairo_set_dash(this->Cr, nullptr, 0, 0);
     cairo_set_line_width(this->Cr, std::max(1.0, 0.25 * r));
     switch (shape)
@@ -351,8 +354,8 @@ void vtkStylizeCairoContextDevice2D::DrawColoredPolygon(
         sum[k] += k < nc ? colors[nc * i + k] : 255;
       }
     }
-    cairo_set_source_rgba(this->Cr, sum[0] / (255.0 * n), sum[1] / (255.0 * n), sum[2] / (255.0 * n),
-      sum[3] / (255.0 * n));
+    cairo_set_source_rgba(this->Cr, sum[0] / (255.0 * n), sum[1] / (255.0 * n),
+      sum[2] / (255.0 * n), sum[3] / (255.0 * n));
     cairo_fill_preserve(this->Cr);
     ++this->Shapes;
   }
@@ -416,13 +419,15 @@ void vtkStylizeCairoContextDevice2D::DrawEllipticArc(
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizeCairoContextDevice2D::ComputeStringBounds(const vtkStdString& string, float bounds[4])
+void vtkStylizeCairoContextDevice2D::ComputeStringBounds(
+  const vtkStdString& string, float bounds[4])
 {
   this->ComputeJustifiedStringBounds(string.c_str(), bounds);
   bounds[0] = bounds[1] = 0.f;
 }
 
-void vtkStylizeCairoContextDevice2D::ComputeJustifiedStringBounds(const char* string, float bounds[4])
+void vtkStylizeCairoContextDevice2D::ComputeJustifiedStringBounds(
+  const char* string, float bounds[4])
 {
   // what vtkOpenGLContextDevice2D measures: the text renderer's box at the window's DPI
   std::fill(bounds, bounds + 4, 0.f);
@@ -479,7 +484,8 @@ void vtkStylizeCairoContextDevice2D::DrawString(float* point, const vtkStdString
   vtkPoints* points = path->GetPoints();
   vtkDataArray* codes = path->GetCodes();
   const vtkIdType n = points->GetNumberOfPoints();
-  auto at = [&](vtkIdType i, double& x, double& y) {
+  auto at = [&](vtkIdType i, double& x, double& y)
+  {
     double q[3];
     points->GetPoint(i, q);
     this->ToPage(ax + q[0], ay + q[1] + 1.0, x, y);
@@ -540,7 +546,8 @@ void vtkStylizeCairoContextDevice2D::DrawString(float* point, const vtkUnicodeSt
   this->DrawString(point, vtkStdString(string.utf8_str()));
 }
 
-void vtkStylizeCairoContextDevice2D::ComputeStringBounds(const vtkUnicodeString& string, float bounds[4])
+void vtkStylizeCairoContextDevice2D::ComputeStringBounds(
+  const vtkUnicodeString& string, float bounds[4])
 {
   this->ComputeStringBounds(vtkStdString(string.utf8_str()), bounds);
 }
@@ -563,7 +570,8 @@ void vtkStylizeCairoContextDevice2D::PaintImage(
   {
     return;
   }
-  auto rgba = [&](vtkIdType i, double c[4]) {
+  auto rgba = [&](vtkIdType i, double c[4])
+  {
     double t[4] = { 0, 0, 0, 255 };
     scalars->GetTuple(i, t);
     if (nc < 3)
@@ -587,7 +595,8 @@ void vtkStylizeCairoContextDevice2D::PaintImage(
   this->ToPage(x, y, x0, y0);
   this->ToPage(x + w, y + h, x1, y1);
   this->Open();
-  cairo_rectangle(this->Cr, std::min(x0, x1), std::min(y0, y1), std::fabs(x1 - x0), std::fabs(y1 - y0));
+  cairo_rectangle(
+    this->Cr, std::min(x0, x1), std::min(y0, y1), std::fabs(x1 - x0), std::fabs(y1 - y0));
   if (dims[0] == 1 || dims[1] == 1)
   {
     // a colour strip (a scalar bar's): a linear gradient through the pixels' centres, as the
@@ -703,8 +712,9 @@ void vtkStylizeCairoContextDevice2D::MultiplyMatrix(vtkMatrix3x3* m)
 {
   const double* e = m->GetData();
   const Matrix a = this->Current;
-  this->Current = { a[0] * e[0] + a[1] * e[3], a[0] * e[1] + a[1] * e[4], a[0] * e[2] + a[1] * e[5] + a[2],
-    a[3] * e[0] + a[4] * e[3], a[3] * e[1] + a[4] * e[4], a[3] * e[2] + a[4] * e[5] + a[5] };
+  this->Current = { a[0] * e[0] + a[1] * e[3], a[0] * e[1] + a[1] * e[4],
+    a[0] * e[2] + a[1] * e[5] + a[2], a[3] * e[0] + a[4] * e[3], a[3] * e[1] + a[4] * e[4],
+    a[3] * e[2] + a[4] * e[5] + a[5] };
 }
 
 void vtkStylizeCairoContextDevice2D::PushMatrix()

@@ -46,14 +46,16 @@ std::vector<float> Channel(const Image& image, int c)
 }
 
 //------------------------------------------------------------------------------
-long long TraceInto(cairo_t* cr, const std::vector<float>& value, int W, int H, float threshold, int s)
+long long TraceInto(
+  cairo_t* cr, const std::vector<float>& value, int W, int H, float threshold, int s)
 {
   const long long sw = static_cast<long long>(W) * s, sh = static_cast<long long>(H) * s;
   const int bits = static_cast<int>(sizeof(potrace_word) * 8);
   const long long dy = (sw + bits - 1) / bits;
   std::vector<potrace_word> map(static_cast<size_t>(dy * sh), 0);
   bool any = false;
-  auto v = [&](int x, int y) {
+  auto v = [&](int x, int y)
+  {
     x = std::min(std::max(x, 0), W - 1);
     y = std::min(std::max(y, 0), H - 1);
     return value[static_cast<size_t>(y) * W + x];
@@ -85,8 +87,8 @@ long long TraceInto(cairo_t* cr, const std::vector<float>& value, int W, int H, 
       }
       if (in)
       {
-        map[static_cast<size_t>(Y * dy + X / bits)] |=
-          static_cast<potrace_word>(1) << (bits - 1 - X % bits);
+        map[static_cast<size_t>(Y * dy + X / bits)] |= static_cast<potrace_word>(1)
+          << (bits - 1 - X % bits);
         any = true;
       }
     }
@@ -183,7 +185,7 @@ void DrawImage(cairo_t* cr, const Image& image)
 //------------------------------------------------------------------------------
 void SetColor(cairo_t* cr, unsigned key, double alpha)
 {
-  cairo_set_source_rgba(cr, ((key >> 16) & 255) / 255.0, ((key >> 8) & 255) / 255.0,
-    (key & 255) / 255.0, alpha);
+  cairo_set_source_rgba(
+    cr, ((key >> 16) & 255) / 255.0, ((key >> 8) & 255) / 255.0, (key & 255) / 255.0, alpha);
 }
 }

@@ -71,7 +71,8 @@ std::vector<float> Channel(const Image& image, int c);
  * supersampled `s` times, with potrace, and appends the closed curves to cr's current path in
  * page coordinates (pixels, y down). Returns the number of curves.
  */
-long long TraceInto(cairo_t* cr, const std::vector<float>& value, int W, int H, float threshold, int s);
+long long TraceInto(
+  cairo_t* cr, const std::vector<float>& value, int W, int H, float threshold, int s);
 
 /** Fills where `value` < threshold (traced) with black at `alpha`: multiplies by 1 - alpha. */
 void FillTraced(Canvas& c, const std::vector<float>& value, float threshold, double alpha);

@@ -60,7 +60,8 @@ bool DrawPaperRegions(Canvas& c, const Image& paper, int maximum)
   }
   // every pixel to its nearest major colour
   std::map<unsigned, size_t> nearest;
-  auto dist = [](unsigned a, unsigned b) {
+  auto dist = [](unsigned a, unsigned b)
+  {
     int d = 0;
     for (int s : { 16, 8, 0 })
     {
@@ -239,7 +240,8 @@ void DrawLines(Canvas& c, double angle, double spacing, Take take)
     const double bx = m * spacing * ax, by = m * spacing * ay;
     int runW = -1, runA = -1;
     double runStart = 0, runEnd = 0;
-    auto flush = [&]() {
+    auto flush = [&]()
+    {
       if (runW > 0 && runA > 0)
       {
         const double x0 = bx + runStart * dx, y0 = by + runStart * dy;
@@ -302,7 +304,8 @@ void DrawHatching(Canvas& c, const Image& inputs, const ComicPattern& p)
     for (int second = 0; second < (p.Cross ? 2 : 1); ++second)
     {
       DrawLines(c, p.Angle(k) + (second ? 0.5 * Pi : 0.0), p.HatchSpacing,
-        [&](int x, int y, double& width, double& alpha) {
+        [&](int x, int y, double& width, double& alpha)
+        {
           const unsigned char* in = inputs.At(x, y);
           if (in[2] < 128 || in[1] != k)
           {
@@ -331,7 +334,8 @@ ComicPattern PatternOf(vtkComicPass* comic, int height, int tiles)
   p.DotSpacing = comic->GetDotSpacing() * points;
   p.DotAngle = comic->GetDotAngle() * Pi / 180.0;
   p.HatchSpacing = comic->GetHatchSpacing() * points;
-  p.HatchWidth = vtkComicPatterns::HatchWidthFraction(comic->GetHatchWidth(), comic->GetHatchSpacing());
+  p.HatchWidth =
+    vtkComicPatterns::HatchWidthFraction(comic->GetHatchWidth(), comic->GetHatchSpacing());
   p.HatchAngle = comic->GetHatchAngle() * Pi / 180.0;
   p.Principal = comic->GetHatchOrientation() == vtkComicPass::PRINCIPAL;
   p.HatchSteps = p.Principal ? vtkComicPatterns::PrincipalSteps(comic->GetHatchDirections())

@@ -69,10 +69,13 @@ void DrawText(Canvas& c, vtkTextActor* text, vtkViewport* viewport, int magnific
   box[3] += origin[1];
   // 2D text keeps its pixel size in a magnified image; its place scales with the image.
   const int hj = tp->GetJustification(), vj = tp->GetVerticalJustification();
-  const double anchorX = hj == VTK_TEXT_LEFT ? box[0] : (hj == VTK_TEXT_RIGHT ? box[1] : 0.5 * (box[0] + box[1]));
-  const double anchorY = vj == VTK_TEXT_BOTTOM ? box[2] : (vj == VTK_TEXT_TOP ? box[3] : 0.5 * (box[2] + box[3]));
+  const double anchorX =
+    hj == VTK_TEXT_LEFT ? box[0] : (hj == VTK_TEXT_RIGHT ? box[1] : 0.5 * (box[0] + box[1]));
+  const double anchorY =
+    vj == VTK_TEXT_BOTTOM ? box[2] : (vj == VTK_TEXT_TOP ? box[3] : 0.5 * (box[2] + box[3]));
   const double shiftX = anchorX * (magnification - 1), shiftY = anchorY * (magnification - 1);
-  const double x0 = box[0] + shiftX, x1 = box[1] + shiftX, y0 = box[2] + shiftY, y1 = box[3] + shiftY;
+  const double x0 = box[0] + shiftX, x1 = box[1] + shiftX, y0 = box[2] + shiftY,
+               y1 = box[3] + shiftY;
 
   const std::string family = tp->GetFontFamily() == VTK_COURIER
     ? "Liberation Mono"
@@ -157,8 +160,8 @@ void DrawScalarBar(Canvas& c, vtkScalarBarActor* bar, vtkViewport* viewport, int
       double color[4] = { 0, 0, 0, 255 };
       layout->SwatchColors->GetTuple(cell, color);
       const int n = layout->SwatchColors->GetNumberOfComponents();
-      cairo_set_source_rgba(c.Cr, color[0] / 255.0, color[1] / 255.0, color[2] / 255.0,
-        n > 3 ? color[3] / 255.0 : 1.0);
+      cairo_set_source_rgba(
+        c.Cr, color[0] / 255.0, color[1] / 255.0, color[2] / 255.0, n > 3 ? color[3] / 255.0 : 1.0);
       // a hairline of the swatch's own colour closes the anti-aliased seams between swatches
       cairo_fill_preserve(c.Cr);
       cairo_set_line_width(c.Cr, 0.5);

@@ -34,7 +34,8 @@ struct Overlay
 };
 
 /** Paints a 2D actor through vtkContext2D; true when it did (the writer's PaintContextOverlay). */
-using PaintFunction = std::function<bool(vtkProp* actor, vtkViewport* viewport, vtkContext2D* painter)>;
+using PaintFunction =
+  std::function<bool(vtkProp* actor, vtkViewport* viewport, vtkContext2D* painter)>;
 
 /**
  * The visible 2D actors of `window`'s visible props (text, scalar bars, vtkContextActor),

@@ -45,7 +45,8 @@ int ResolveFormat(int format, const std::string& name, bool toMemory, std::strin
   {
     return format;
   }
-  auto endsWith = [&](const char* ext) {
+  auto endsWith = [&](const char* ext)
+  {
     const size_t n = std::strlen(ext);
     if (name.size() < n)
     {
@@ -55,8 +56,9 @@ int ResolveFormat(int format, const std::string& name, bool toMemory, std::strin
     std::transform(tail.begin(), tail.end(), tail.begin(), ::tolower);
     return tail == ext;
   };
-  format = endsWith(".svg") ? vtkStylizeFigureWriter::SVG
-                            : (endsWith(".pdf") ? vtkStylizeFigureWriter::PDF : vtkStylizeFigureWriter::AUTO);
+  format = endsWith(".svg")
+    ? vtkStylizeFigureWriter::SVG
+    : (endsWith(".pdf") ? vtkStylizeFigureWriter::PDF : vtkStylizeFigureWriter::AUTO);
   if (format == vtkStylizeFigureWriter::AUTO)
   {
     error = name.empty() && toMemory
@@ -81,7 +83,8 @@ int BoundedSupersampling(int requested, int w, int h)
  * Draws the style's picture with its drawer, from `frame` (its final layer) and the layers it
  * captures. Returns false when a layer could not be captured.
  */
-bool DrawStyle(Canvas& c, const Image& frame, vtkStylizeStylePass* style, vtkStylizeFigureWriter* writer)
+bool DrawStyle(
+  Canvas& c, const Image& frame, vtkStylizeStylePass* style, vtkStylizeFigureWriter* writer)
 {
   if (vtkPixelArtPass::SafeDownCast(style))
   {
@@ -129,7 +132,8 @@ vtkUnsignedCharArray* vtkStylizeFigureWriter::GetResult()
 }
 
 //------------------------------------------------------------------------------
-std::string vtkStylizeFigureWriter::EncodeAnimation(const char* pattern, int fps, const char* output)
+std::string vtkStylizeFigureWriter::EncodeAnimation(
+  const char* pattern, int fps, const char* output)
 {
   const std::string out = output ? output : "";
   std::string ext = out.size() >= 4 ? out.substr(out.size() - 4) : std::string();
@@ -140,8 +144,9 @@ std::string vtkStylizeFigureWriter::EncodeAnimation(const char* pattern, int fps
   }
   const std::string what = "cannot write \"" + out + "\"";
   const size_t slash = out.find_last_of('/');
-  const std::string temporary = (slash == std::string::npos ? std::string() : out.substr(0, slash + 1)) +
-    "." + out.substr(slash == std::string::npos ? 0 : slash + 1) + ".encoding" + ext;
+  const std::string temporary =
+    (slash == std::string::npos ? std::string() : out.substr(0, slash + 1)) + "." +
+    out.substr(slash == std::string::npos ? 0 : slash + 1) + ".encoding" + ext;
   std::vector<std::string> args = { "ffmpeg", "-nostdin", "-y", "-v", "error", "-framerate",
     std::to_string(std::min(120, std::max(1, fps))), "-i", pattern };
   if (ext == ".gif")
@@ -149,13 +154,14 @@ std::string vtkStylizeFigureWriter::EncodeAnimation(const char* pattern, int fps
     // one palette from all the frames' colours (comic: black, white and gray; pixel art: its
     // palette), no dithering of its own
     args.insert(args.end(),
-      { "-vf", "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none",
-        "-loop", "0" });
+      { "-vf", "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none", "-loop",
+        "0" });
   }
   else
   {
-    args.insert(args.end(), { "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264",
-      "-pix_fmt", "yuv420p", "-crf", "18" });
+    args.insert(args.end(),
+      { "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf",
+        "18" });
   }
   args.push_back(temporary);
   std::vector<char*> argv;
@@ -212,7 +218,8 @@ int vtkStylizeFigureWriter::Write()
   this->NumberOfDots = this->NumberOfHatchSegments = this->NumberOfTracedPaths = 0;
   this->NumberOfRectangles = this->NumberOfImages = this->NumberOfTexts = 0;
   this->Internal->Result->Initialize();
-  auto fail = [this](const std::string& message) {
+  auto fail = [this](const std::string& message)
+  {
     this->ErrorMessage = message;
     vtkErrorMacro(<< message);
     return 0;
@@ -273,7 +280,8 @@ int vtkStylizeFigureWriter::Write()
 
   Canvas c;
   const int magnification = this->Magnification;
-  c.Capture = [source, magnification](int layer, const double* key, Image& image) {
+  c.Capture = [source, magnification](int layer, const double* key, Image& image)
+  {
     vtkNew<vtkImageData> data;
     return source->CaptureLayer(layer, key, magnification, data) && ToImage(data, image);
   };
@@ -295,9 +303,9 @@ int vtkStylizeFigureWriter::Write()
   c.Magnification = this->Magnification;
   c.Supersampling = BoundedSupersampling(this->TraceSupersampling, c.W, c.H);
   const bool ok = DrawStyle(c, frame, style, this);
-  DrawOverlays(c, overlays, [source](vtkProp* actor, vtkViewport* viewport, vtkContext2D* painter) {
-    return source->PaintContextOverlay(actor, viewport, painter);
-  });
+  DrawOverlays(c, overlays,
+    [source](vtkProp* actor, vtkViewport* viewport, vtkContext2D* painter)
+    { return source->PaintContextOverlay(actor, viewport, painter); });
   this->Warning = c.Warning;
   if (!this->Warning.empty())
   {

@@ -1,6 +1,7 @@
 #include "vtkStylizePrincipalCurvatures.h"
 
 #include "vtkCellArray.h"
+#include "vtkCommunicator.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -8,14 +9,13 @@
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkMultiProcessController.h"
-#include "vtkCommunicator.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTriangleFilter.h"
 
 #include <algorithm>
@@ -85,11 +85,11 @@ Vec Rotate(const Vec& a, const Vec& b, const Vec& x)
 struct Surface
 {
   std::vector<std::array<vtkIdType, 3>> Faces; // non-degenerate triangles (distinct ids)
-  std::vector<Vec> P;                           // the points
-  std::vector<Vec> Normal;                      // unit where Valid
-  std::vector<bool> Valid;                      // the normal is defined
-  std::vector<Vec> FrameU, FrameV;              // unit tangents where Framed
-  std::vector<bool> Framed;                     // the vertex has a face and a valid normal
+  std::vector<Vec> P;                          // the points
+  std::vector<Vec> Normal;                     // unit where Valid
+  std::vector<bool> Valid;                     // the normal is defined
+  std::vector<Vec> FrameU, FrameV;             // unit tangents where Framed
+  std::vector<bool> Framed;                    // the vertex has a face and a valid normal
 };
 
 /** The triangles of the input's polygons and strips (the points are unchanged). */
@@ -363,8 +363,7 @@ void AccumulateTensors(
       const double bu = Dot(a2, t), bv = Dot(a2, b);
       const double w = corner[k];
       tensor[i][0] += w * (au * au * form.FE + 2.0 * au * av * form.FF + av * av * form.FG);
-      tensor[i][1] +=
-        w * (au * bu * form.FE + (au * bv + av * bu) * form.FF + av * bv * form.FG);
+      tensor[i][1] += w * (au * bu * form.FE + (au * bv + av * bu) * form.FF + av * bv * form.FG);
       tensor[i][2] += w * (bu * bu * form.FE + 2.0 * bu * bv * form.FF + bv * bv * form.FG);
       weight[i] += w;
     }
@@ -373,8 +372,8 @@ void AccumulateTensors(
   for (size_t i = 0; i < s.P.size(); ++i)
   {
     const bool ok = weight[i] > 0.0 && s.Framed[i] &&
-      std::all_of(tensor[i].begin(), tensor[i].end(),
-        [&](double v) { return std::isfinite(v / weight[i]); });
+      std::all_of(
+        tensor[i].begin(), tensor[i].end(), [&](double v) { return std::isfinite(v / weight[i]); });
     for (double& v : tensor[i])
     {
       v = ok ? v / weight[i] : 0.0;
@@ -392,7 +391,8 @@ struct CurvatureArrays
   /** Every array named, with np zero tuples. */
   explicit CurvatureArrays(vtkIdType np)
   {
-    auto makeArray = [np](const char* name, int comps) {
+    auto makeArray = [np](const char* name, int comps)
+    {
       vtkNew<vtkDoubleArray> a;
       a->SetName(name);
       a->SetNumberOfComponents(comps);
@@ -400,7 +400,8 @@ struct CurvatureArrays
       a->Fill(0.0);
       return vtkSmartPointer<vtkDoubleArray>(a);
     };
-    auto makeDirections = [np](const char* name) {
+    auto makeDirections = [np](const char* name)
+    {
       vtkNew<vtkFloatArray> a;
       a->SetName(name);
       a->SetNumberOfComponents(3);
@@ -593,8 +594,8 @@ int vtkStylizePrincipalCurvatures::RequestData(
     np > 0 && std::isfinite(diagonal) ? this->SmoothingRadius * diagonal : 0.0;
   if (smoothing > 0.0)
   {
-    tensor = this->SmoothTensors(
-      s.P, s.Normal, s.FrameU, s.FrameV, s.Faces, tensor, weight, smoothing);
+    tensor =
+      this->SmoothTensors(s.P, s.Normal, s.FrameU, s.FrameV, s.Faces, tensor, weight, smoothing);
   }
 
   CurvatureArrays arrays(np);

@@ -58,7 +58,8 @@ public:
   ///@}
 
   ///@{
-  /** Most points averaged into one point's tensor (SmoothingRadius). Range [1, 100000], default 2000. */
+  /** Most points averaged into one point's tensor (SmoothingRadius). Range [1, 100000], default
+   * 2000. */
   vtkSetClampMacro(MaximumNeighbors, int, 1, 100000);
   vtkGetMacro(MaximumNeighbors, int);
   ///@}

@@ -90,8 +90,8 @@ public:
         values *= static_cast<double>(dims[id]);
       }
       unsigned long long type = 0, vsize = 0, begin = 0;
-      if (!this->Attributes() || !this->Value(type, 4) || !this->Count(vsize, "a variable's size") ||
-        !this->Value(begin, this->Version == 1 ? 4 : 8))
+      if (!this->Attributes() || !this->Value(type, 4) ||
+        !this->Count(vsize, "a variable's size") || !this->Value(begin, this->Version == 1 ? 4 : 8))
       {
         return this->Problem.empty() ? "the header ends inside a variable" : this->Problem;
       }
@@ -150,8 +150,8 @@ private:
   }
 
   /** A list's tag and element count (ABSENT: zeros); each element at least minimum bytes. */
-  bool List(unsigned long long expected, unsigned long long& tag, unsigned long long& n,
-    double minimum)
+  bool List(
+    unsigned long long expected, unsigned long long& tag, unsigned long long& n, double minimum)
   {
     if (!this->Value(tag, 4) || !this->Value(n, this->Width()))
     {
@@ -234,7 +234,8 @@ std::string CheckExodus(FileReader& in, const std::string&)
   {
     return "cannot read the file";
   }
-  if (bytes.size() >= 8 && bytes[0] == 0x89 && bytes[1] == 'H' && bytes[2] == 'D' && bytes[3] == 'F')
+  if (bytes.size() >= 8 && bytes[0] == 0x89 && bytes[1] == 'H' && bytes[2] == 'D' &&
+    bytes[3] == 'F')
   {
     return std::string(); // netCDF-4: HDF5 checks its own structure
   }

@@ -59,7 +59,8 @@ bool NonFiniteToken(std::string token)
   {
     token.erase(0, 1);
   }
-  return token == "nan" || token == "inf" || token == "infinity" || token.compare(0, 4, "nan(") == 0;
+  return token == "nan" || token == "inf" || token == "infinity" ||
+    token.compare(0, 4, "nan(") == 0;
 }
 
 /**
@@ -207,8 +208,9 @@ private:
       this->Points = this->Number(1);
       ok = this->Claim(3.0 * this->Points, LegacyTypeBytes(w[2]), section);
     }
-    else if ((key == "VERTICES" || key == "LINES" || key == "POLYGONS" || key == "TRIANGLE_STRIPS" ||
-               key == "CELLS") && w.size() >= 3)
+    else if ((key == "VERTICES" || key == "LINES" || key == "POLYGONS" ||
+               key == "TRIANGLE_STRIPS" || key == "CELLS") &&
+      w.size() >= 3)
     {
       ok = this->CellsLine(section);
     }

@@ -39,8 +39,7 @@ int PLYTypeSize(const std::string& t)
   {
     return 2;
   }
-  if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" ||
-    t == "float32")
+  if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32")
   {
     return 4;
   }
@@ -154,8 +153,8 @@ struct PLYHeader
 };
 
 /** One property line of the header, added to the last element: the problem, or "". */
-std::string AddPLYProperty(const std::vector<std::string>& w, const std::string& where,
-  std::vector<PLYElement>& elements)
+std::string AddPLYProperty(
+  const std::vector<std::string>& w, const std::string& where, std::vector<PLYElement>& elements)
 {
   if (elements.empty())
   {
@@ -313,8 +312,8 @@ std::string CheckPLYASCIIBody(FileReader& in, PLYHeader& header)
     {
       if (!in.GetLine(line))
       {
-        return "the PLY file is truncated (element '" + e.Name + "' " + std::to_string(i) +
-          " of " + std::to_string(e.Count) + " is missing)";
+        return "the PLY file is truncated (element '" + e.Name + "' " + std::to_string(i) + " of " +
+          std::to_string(e.Count) + " is missing)";
       }
       ++header.LineNumber;
       const std::vector<std::string> w = Words(line);
@@ -442,8 +441,7 @@ std::string CheckPLY(FileReader& in, const std::string&)
   {
     return problem;
   }
-  return header.Format == "ascii" ? CheckPLYASCIIBody(in, header)
-                                  : CheckPLYBinaryBody(in, header);
+  return header.Format == "ascii" ? CheckPLYASCIIBody(in, header) : CheckPLYBinaryBody(in, header);
 }
 } // namespace
 

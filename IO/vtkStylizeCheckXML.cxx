@@ -478,7 +478,8 @@ std::string CheckImageData(FileReader& in, const std::string&)
     return std::string(); // the reader reports what it cannot find
   }
   const std::size_t close = head.find('>', tag);
-  const std::string element = head.substr(tag, close == std::string::npos ? std::string::npos : close - tag);
+  const std::string element =
+    head.substr(tag, close == std::string::npos ? std::string::npos : close - tag);
   static const std::pair<const char*, int> attributes[3] = { { "Origin", 3 }, { "Spacing", 3 },
     { "Direction", 9 } };
   for (const auto& a : attributes)
@@ -491,7 +492,8 @@ std::string CheckImageData(FileReader& in, const std::string&)
     }
     const std::size_t start = at + key.size();
     const std::size_t end = element.find('"', start);
-    const std::string text = element.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    const std::string text =
+      element.substr(start, end == std::string::npos ? std::string::npos : end - start);
     const std::vector<std::string> words = Words(text);
     if (static_cast<int>(words.size()) != a.second)
     {

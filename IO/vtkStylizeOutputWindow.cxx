@@ -107,9 +107,9 @@ void vtkStylizeOutputWindow::ClearMessages()
 
 bool vtkStylizeOutputWindow::HasFailure() const
 {
-  return std::any_of(this->Messages.begin(), this->Messages.end(), [](const Message& m) {
-    return m.Kind == ERROR_MESSAGE || (m.Kind == WARNING_MESSAGE && SaysError(m.Text));
-  });
+  return std::any_of(this->Messages.begin(), this->Messages.end(),
+    [](const Message& m)
+    { return m.Kind == ERROR_MESSAGE || (m.Kind == WARNING_MESSAGE && SaysError(m.Text)); });
 }
 
 std::string vtkStylizeOutputWindow::GetFirstFailure() const

@@ -176,7 +176,8 @@ using ReaderFactory = std::function<vtkSmartPointer<vtkAlgorithm>(const std::str
 template <typename T>
 ReaderFactory MakeReader()
 {
-  return [](const std::string& path) -> vtkSmartPointer<vtkAlgorithm> {
+  return [](const std::string& path) -> vtkSmartPointer<vtkAlgorithm>
+  {
     vtkNew<T> reader;
     reader->SetFileName(path.c_str());
     return reader;
@@ -206,7 +207,8 @@ const std::map<std::string, ReaderFactory>& Readers()
     { ".vti", MakeReader<vtkXMLImageDataReader>() },
     { ".vtm", MakeReader<vtkXMLMultiBlockDataReader>() },
     { ".vtk",
-      [](const std::string& path) -> vtkSmartPointer<vtkAlgorithm> {
+      [](const std::string& path) -> vtkSmartPointer<vtkAlgorithm>
+      {
         vtkNew<vtkGenericDataObjectReader> reader;
         reader->SetFileName(path.c_str());
         reader->ReadAllScalarsOn();
@@ -229,7 +231,8 @@ const std::map<std::string, ReaderFactory>& Readers()
     { ".e", MakeExodusReader },
     { ".g", MakeExodusReader },
     { ".case",
-      [](const std::string& path) -> vtkSmartPointer<vtkAlgorithm> {
+      [](const std::string& path) -> vtkSmartPointer<vtkAlgorithm>
+      {
         vtkNew<vtkGenericEnSightReader> reader;
         reader->SetCaseFileName(path.c_str());
         return reader;
@@ -310,16 +313,21 @@ std::string ClaimsThen(const std::string& path)
 std::string StructuralCheck(const std::string& path)
 {
   using Check = std::string (*)(const std::string&);
-  static const std::map<std::string, Check> checks = { { ".ply", vtkStylizeFileChecks::CheckPLYFile },
-    { ".obj", vtkStylizeFileChecks::CheckOBJFile }, { ".stl", vtkStylizeFileChecks::CheckSTLFile },
+  static const std::map<std::string, Check> checks = {
+    { ".ply", vtkStylizeFileChecks::CheckPLYFile }, { ".obj", vtkStylizeFileChecks::CheckOBJFile },
+    { ".stl", vtkStylizeFileChecks::CheckSTLFile },
     { ".vtk", vtkStylizeFileChecks::CheckLegacyVTKFile },
     { ".vtu", ClaimsThen<vtkStylizeFileChecks::CheckUnstructuredGridFaces> },
     { ".vti", ClaimsThen<vtkStylizeFileChecks::CheckImageDataFile> },
-    { ".vtp", vtkStylizeFileChecks::CheckXMLClaims }, { ".vts", vtkStylizeFileChecks::CheckXMLClaims },
+    { ".vtp", vtkStylizeFileChecks::CheckXMLClaims },
+    { ".vts", vtkStylizeFileChecks::CheckXMLClaims },
     { ".vtr", vtkStylizeFileChecks::CheckXMLClaims },
-    { ".pvti", vtkStylizeFileChecks::CheckImageDataFile }, { ".case", vtkStylizeFileChecks::CheckEnSightCaseFile },
-    { ".ex2", vtkStylizeFileChecks::CheckExodusFile }, { ".exo", vtkStylizeFileChecks::CheckExodusFile },
-    { ".e", vtkStylizeFileChecks::CheckExodusFile }, { ".g", vtkStylizeFileChecks::CheckExodusFile } };
+    { ".pvti", vtkStylizeFileChecks::CheckImageDataFile },
+    { ".case", vtkStylizeFileChecks::CheckEnSightCaseFile },
+    { ".ex2", vtkStylizeFileChecks::CheckExodusFile },
+    { ".exo", vtkStylizeFileChecks::CheckExodusFile },
+    { ".e", vtkStylizeFileChecks::CheckExodusFile }, { ".g", vtkStylizeFileChecks::CheckExodusFile }
+  };
   const auto check = checks.find(Extension(path));
   if (check == checks.end())
   {
@@ -329,7 +337,6 @@ std::string StructuralCheck(const std::string& path)
   ClearVTKErrors(); // (a check that reads with VTK leaves the reader's own complaints)
   return problem;
 }
-
 
 /** path's folder with a slash ("" for a bare name). */
 std::string Folder(const std::string& path)
@@ -401,7 +408,7 @@ void CheckReferencedFiles(const std::string& path, std::vector<std::string> chai
       Fail("cannot read " + Quote(top) + ": " + (path == top ? "it" : Quote(path)) + " names " +
         Quote(file) + ", which " +
         (::stat(file.c_str(), &st) != 0 ? std::string("cannot be read: ") + std::strerror(errno)
-                                         : std::string("is not a regular file")));
+                                        : std::string("is not a regular file")));
     }
     CheckInputFile(file);
     const std::string problem = StructuralCheck(file);
@@ -451,8 +458,8 @@ std::vector<std::string> CollectionFiles(const std::string& path)
   {
     Fail("cannot read " + Quote(path) + ": the collection lists no data set file");
   }
-  std::stable_sort(entries.begin(), entries.end(),
-    [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(
+    entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::string> files;
   for (const auto& e : entries)
   {
@@ -465,7 +472,6 @@ std::string StepsText(std::size_t n)
 {
   return n == 1 ? "1 time step" : std::to_string(n) + " time steps";
 }
-
 
 vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
 {
@@ -591,7 +597,6 @@ std::string vtkStylizeReader::GetBlockName(vtkCompositeDataIterator* iterator, i
   }
   return "block " + std::to_string(index);
 }
-
 
 //------------------------------------------------------------------------------
 void vtkStylizeReader::ForEachBlock(vtkCompositeDataSet* composite,

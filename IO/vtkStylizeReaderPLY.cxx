@@ -37,8 +37,8 @@ struct PLYIndexList
  * the strips (split at -1) into strips, the faces into polys. The problem (an index outside the
  * pointCount vertices), or "". Every record is read, so that vtkPLY frees each list.
  */
-std::string ReadPLYIndexLists(PlyFile* ply, char* name, int count, int pointCount,
-  vtkCellArray* strips, vtkCellArray* polys)
+std::string ReadPLYIndexLists(
+  PlyFile* ply, char* name, int count, int pointCount, vtkCellArray* strips, vtkCellArray* polys)
 {
   PlyProperty listProp = { "vertex_indices", PLY_INT, PLY_INT,
     static_cast<int>(offsetof(PLYIndexList, Indices)), 1, PLY_INT, PLY_INT,

@@ -55,8 +55,8 @@ void CheckCells(vtkCellArray* cells, vtkIdType numberOfPoints, const std::string
     (range[0] < 0 || range[1] >= static_cast<double>(numberOfPoints)))
   {
     Fail(what + ": a cell references point " +
-      std::to_string(static_cast<long long>(range[0] < 0 ? range[0] : range[1])) + " but there are " +
-      std::to_string(static_cast<long long>(numberOfPoints)) + " points");
+      std::to_string(static_cast<long long>(range[0] < 0 ? range[0] : range[1])) +
+      " but there are " + std::to_string(static_cast<long long>(numberOfPoints)) + " points");
   }
 }
 
@@ -76,16 +76,16 @@ bool CellTypeSize(int type, CellSize& size)
   static const std::map<int, CellSize> sizes = { { VTK_EMPTY_CELL, { 0, false } },
     { VTK_VERTEX, { 1, false } }, { VTK_POLY_VERTEX, { 1, true } }, { VTK_LINE, { 2, false } },
     { VTK_POLY_LINE, { 2, true } }, { VTK_TRIANGLE, { 3, false } },
-    { VTK_TRIANGLE_STRIP, { 3, true } }, { VTK_POLYGON, { 3, true } },
-    { VTK_PIXEL, { 4, false } }, { VTK_QUAD, { 4, false } }, { VTK_TETRA, { 4, false } },
-    { VTK_VOXEL, { 8, false } }, { VTK_HEXAHEDRON, { 8, false } }, { VTK_WEDGE, { 6, false } },
-    { VTK_PYRAMID, { 5, false } }, { VTK_PENTAGONAL_PRISM, { 10, false } },
-    { VTK_HEXAGONAL_PRISM, { 12, false } }, { VTK_QUADRATIC_EDGE, { 3, false } },
-    { VTK_QUADRATIC_TRIANGLE, { 6, false } }, { VTK_QUADRATIC_QUAD, { 8, false } },
-    { VTK_QUADRATIC_TETRA, { 10, false } }, { VTK_QUADRATIC_HEXAHEDRON, { 20, false } },
-    { VTK_QUADRATIC_WEDGE, { 15, false } }, { VTK_QUADRATIC_PYRAMID, { 13, false } },
-    { VTK_BIQUADRATIC_QUAD, { 9, false } }, { VTK_TRIQUADRATIC_HEXAHEDRON, { 27, false } },
-    { VTK_QUADRATIC_LINEAR_QUAD, { 6, false } }, { VTK_QUADRATIC_LINEAR_WEDGE, { 12, false } },
+    { VTK_TRIANGLE_STRIP, { 3, true } }, { VTK_POLYGON, { 3, true } }, { VTK_PIXEL, { 4, false } },
+    { VTK_QUAD, { 4, false } }, { VTK_TETRA, { 4, false } }, { VTK_VOXEL, { 8, false } },
+    { VTK_HEXAHEDRON, { 8, false } }, { VTK_WEDGE, { 6, false } }, { VTK_PYRAMID, { 5, false } },
+    { VTK_PENTAGONAL_PRISM, { 10, false } }, { VTK_HEXAGONAL_PRISM, { 12, false } },
+    { VTK_QUADRATIC_EDGE, { 3, false } }, { VTK_QUADRATIC_TRIANGLE, { 6, false } },
+    { VTK_QUADRATIC_QUAD, { 8, false } }, { VTK_QUADRATIC_TETRA, { 10, false } },
+    { VTK_QUADRATIC_HEXAHEDRON, { 20, false } }, { VTK_QUADRATIC_WEDGE, { 15, false } },
+    { VTK_QUADRATIC_PYRAMID, { 13, false } }, { VTK_BIQUADRATIC_QUAD, { 9, false } },
+    { VTK_TRIQUADRATIC_HEXAHEDRON, { 27, false } }, { VTK_QUADRATIC_LINEAR_QUAD, { 6, false } },
+    { VTK_QUADRATIC_LINEAR_WEDGE, { 12, false } },
     { VTK_BIQUADRATIC_QUADRATIC_WEDGE, { 18, false } },
     { VTK_BIQUADRATIC_QUADRATIC_HEXAHEDRON, { 24, false } },
     { VTK_BIQUADRATIC_TRIANGLE, { 7, false } }, { VTK_CUBIC_LINE, { 4, false } },
@@ -317,11 +317,9 @@ vtkSmartPointer<vtkDataSet> WithoutNonFinitePoints(vtkDataSet* ds, const std::st
     std::to_string(static_cast<long long>(n)) + " points " + (badPoints == 1 ? "has" : "have") +
     " coordinates that are not finite (NaN or infinity): " + (badPoints == 1 ? "it" : "they") +
     " and the " + std::to_string(static_cast<long long>(dropped)) + " cell" +
-    (dropped == 1 ? "" : "s") + " that use " + (badPoints == 1 ? "it" : "them") +
-    " are left out");
+    (dropped == 1 ? "" : "s") + " that use " + (badPoints == 1 ? "it" : "them") + " are left out");
   return extract->GetOutput();
 }
-
 
 //------------------------------------------------------------------------------
 void ValidateBlocks(vtkDataObject* data, const std::string& what)
@@ -331,8 +329,9 @@ void ValidateBlocks(vtkDataObject* data, const std::string& what)
   {
     return;
   }
-  vtkStylizeReader::ForEachBlock(
-    composite, [&](vtkCompositeDataIterator* it, const std::string& name) {
+  vtkStylizeReader::ForEachBlock(composite,
+    [&](vtkCompositeDataIterator* it, const std::string& name)
+    {
       auto* ds = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
       if (!ds)
       {

@@ -42,9 +42,9 @@ enum Textures
 struct vtkComicPass::Plan
 {
   bool DepthEdges, NormalEdges, ColorEdges, ObjectAnchor;
-  bool Principal;     // hatching along the principal direction field
+  bool Principal;      // hatching along the principal direction field
   FieldSettings Field; // its settings: the defaults
-  double WeightSum; // of the enabled edge phases, 1 when none
+  double WeightSum;    // of the enabled edge phases, 1 when none
   SceneRequest Scene;
   std::string Defines;
 };
@@ -86,8 +86,7 @@ void vtkComicPass::SetEdgeWeights(double depth, double normal, double color)
 {
   auto clamp01 = [](double v) { return std::isfinite(v) ? std::min(1.0, std::max(0.0, v)) : 0.0; };
   const double w[3] = { clamp01(depth), clamp01(normal), clamp01(color) };
-  if (w[0] != this->EdgeWeights[0] || w[1] != this->EdgeWeights[1] ||
-    w[2] != this->EdgeWeights[2])
+  if (w[0] != this->EdgeWeights[0] || w[1] != this->EdgeWeights[1] || w[2] != this->EdgeWeights[2])
   {
     std::copy(w, w + 3, this->EdgeWeights);
     this->Modified();
@@ -117,8 +116,9 @@ void vtkComicPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CrossThreshold: " << this->CrossThreshold << "\n";
   os << indent << "BrightThreshold: " << this->BrightThreshold << "\n";
   os << indent << "DarkThreshold: " << this->DarkThreshold << "\n";
-  os << indent << "HatchOrientation: "
-     << (this->HatchOrientation == PRINCIPAL ? "principal" : "fixed") << "\n";
+  os << indent
+     << "HatchOrientation: " << (this->HatchOrientation == PRINCIPAL ? "principal" : "fixed")
+     << "\n";
   os << indent << "Tinted: " << this->Tinted << "\n";
   os << indent << "Anchor: " << (this->Anchor == OBJECT ? "object" : "screen") << "\n";
   os << indent << "Layer: "
@@ -240,8 +240,8 @@ void vtkComicPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, c
     .Float("comicColorThreshold", this->ColorThreshold)
     .Float("comicDotSpacing", this->DotSpacing * patternUnit)
     .Float("comicHatchSpacing", this->HatchSpacing * patternUnit)
-    .Float("comicHatchWidth",
-      vtkComicPatterns::HatchWidthFraction(this->HatchWidth, this->HatchSpacing))
+    .Float(
+      "comicHatchWidth", vtkComicPatterns::HatchWidthFraction(this->HatchWidth, this->HatchSpacing))
     .Float2("comicDotDirection", std::cos(dotAngle), std::sin(dotAngle))
     .Float("comicHatchAngle", vtkMath::RadiansFromDegrees(this->HatchAngle))
     .Int("comicHatchDirections", this->HatchDirections)
@@ -306,7 +306,8 @@ void vtkComicPass::RenderCompositeStage(const Frame& frame, const Plan& plan)
     std::max(1, static_cast<int>(std::lround(this->EdgeWidth * this->PointSize(frame))));
   this->RenderStageToOutput(
     frame, COMPOSITE_STAGE, true,
-    [&](vtkStylizeUniforms& u) {
+    [&](vtkStylizeUniforms& u)
+    {
       this->SetStageUniforms(u, frame, plan);
       u.Texture("comicEdgeTexture", this->TextureSlot(EDGE_TEXTURE));
     },

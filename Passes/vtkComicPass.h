@@ -23,9 +23,8 @@
 #ifndef vtkComicPass_h
 #define vtkComicPass_h
 
-#include "vtkStylizeStylePass.h"
 #include "vtkStylizePassesModule.h" // for export macro
-
+#include "vtkStylizeStylePass.h"
 
 class vtkStylizeDirectionField;
 

@@ -51,9 +51,8 @@ constexpr double DotCornerRadius = 0.7072;
 /** The radius of the dot (cell units) that covers `coverage` of its cell (eq. 10). */
 inline double DotRadius(double coverage)
 {
-  return coverage <= DotDiscCoverage
-    ? std::sqrt(coverage / Pi)
-    : DotInscribedRadius +
+  return coverage <= DotDiscCoverage ? std::sqrt(coverage / Pi)
+                                     : DotInscribedRadius +
       (DotCornerRadius - DotInscribedRadius) * (coverage - DotDiscCoverage) / DotCornerCoverage;
 }
 
@@ -118,7 +117,8 @@ inline int PrincipalSteps(int hatchDirections)
  */
 inline std::string ShaderDefines()
 {
-  auto literal = [](double value) {
+  auto literal = [](double value)
+  {
     char text[32];
     for (int digits = 15; digits <= 17; ++digits)
     {
@@ -132,9 +132,8 @@ inline std::string ShaderDefines()
     return s.find_first_of(".e") == std::string::npos ? s + ".0" : s;
   };
   std::string defines;
-  auto define = [&](const char* name, double value) {
-    defines += std::string("#define ") + name + " " + literal(value) + "\n";
-  };
+  auto define = [&](const char* name, double value)
+  { defines += std::string("#define ") + name + " " + literal(value) + "\n"; };
   define("COMIC_PI", Pi);
   define("COMIC_DOT_DISC_COVERAGE", DotDiscCoverage);
   define("COMIC_DOT_CORNER_COVERAGE", DotCornerCoverage);

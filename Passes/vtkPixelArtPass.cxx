@@ -27,9 +27,9 @@
 namespace
 {
 // Eq. 10 of the pixel-art paper (values 1..64), row-major.
-const int DitherMatrix[64] = { 1, 49, 13, 61, 4, 52, 16, 64, 33, 17, 45, 29, 36, 20, 48, 32, 9,
-  57, 5, 53, 12, 60, 8, 56, 41, 25, 37, 21, 44, 28, 40, 24, 3, 51, 15, 63, 2, 50, 14, 62, 35, 19,
-  47, 31, 34, 18, 46, 30, 11, 59, 7, 55, 10, 58, 6, 54, 43, 27, 39, 23, 42, 26, 38, 22 };
+const int DitherMatrix[64] = { 1, 49, 13, 61, 4, 52, 16, 64, 33, 17, 45, 29, 36, 20, 48, 32, 9, 57,
+  5, 53, 12, 60, 8, 56, 41, 25, 37, 21, 44, 28, 40, 24, 3, 51, 15, 63, 2, 50, 14, 62, 35, 19, 47,
+  31, 34, 18, 46, 30, 11, 59, 7, 55, 10, 58, 6, 54, 43, 27, 39, 23, 42, 26, 38, 22 };
 
 // DawnBringer's 16-colour palette (2011), a pixel-art standard.
 const double Palette16[48] = { 20 / 255., 12 / 255., 28 / 255., 68 / 255., 36 / 255., 52 / 255.,
@@ -53,13 +53,13 @@ int PositiveMod(long long a, long long b)
 
 enum Stages
 {
-  REDUCE_STAGE = 0,   // FAITHFUL: average each block of the full-resolution G-buffer
-  GAUSS_STAGE,        // grayscale and the paper's 3x3 Gaussian
-  GRADIENT_STAGE,     // Sobel gradient
-  CLASSIFY_STAGE,     // non-maximum suppression, double threshold, depth and normal edges
-  HYSTERESIS_STAGE,   // one step of hysteresis
-  STYLIZE_STAGE,      // the art pixels: palette, dither, outlines
-  UPSAMPLE_STAGE      // the art pixels into the output
+  REDUCE_STAGE = 0, // FAITHFUL: average each block of the full-resolution G-buffer
+  GAUSS_STAGE,      // grayscale and the paper's 3x3 Gaussian
+  GRADIENT_STAGE,   // Sobel gradient
+  CLASSIFY_STAGE,   // non-maximum suppression, double threshold, depth and normal edges
+  HYSTERESIS_STAGE, // one step of hysteresis
+  STYLIZE_STAGE,    // the art pixels: palette, dither, outlines
+  UPSAMPLE_STAGE    // the art pixels into the output
 };
 constexpr vtkStylizeStage PixelArtStages[] = {
   { REDUCE_STAGE, "PIXEL_STAGE_REDUCE", "PIXEL_STAGE_REDUCE" },
@@ -105,12 +105,12 @@ struct vtkPixelArtPass::Plan
   int ExtentOrigin[2]; // FAITHFUL: the rendered extent of the blocks, viewport pixels
   int Extent[2];
   int DitherOrigin[2];
-  double Shift[2];     // the snap shift, pixels
-  double ArtWorld;     // world size of an art pixel (times the depth in perspective)
-  double AnchorUnit;   // world size of a dither cell on the surface
-  double TexelUnit;    // world size of a surface art pixel (a texel) at the focal point
+  double Shift[2];   // the snap shift, pixels
+  double ArtWorld;   // world size of an art pixel (times the depth in perspective)
+  double AnchorUnit; // world size of a dither cell on the surface
+  double TexelUnit;  // world size of a surface art pixel (a texel) at the focal point
   bool Fast, WriteDepth, Canny, Sobel, DepthEdges, NormalEdges, Edges, SurfaceAnchor;
-  bool Texels;         // SURFACE at full resolution: the art pixels are fixed to the surface
+  bool Texels;                // SURFACE at full resolution: the art pixels are fixed to the surface
   std::vector<float> Colours; // the list palette (RGBA); empty for LEVELS and GRAYS
   SceneRequest Scene;
   std::string Defines;
@@ -134,8 +134,8 @@ vtkPixelArtPass::vtkPixelArtPass()
   : vtkStylizeStylePass(vtkStylizeLightingPass::PIXEL_ART)
   , Internals(new vtkInternals)
 {
-  this->SetStages(vtkPixelArtFS, "  pixelMain();\n",
-    { std::begin(PixelArtStages), std::end(PixelArtStages) });
+  this->SetStages(
+    vtkPixelArtFS, "  pixelMain();\n", { std::begin(PixelArtStages), std::end(PixelArtStages) });
 }
 
 //------------------------------------------------------------------------------
@@ -205,7 +205,8 @@ void vtkPixelArtPass::AddPaletteColor(double r, double g, double b)
     vtkWarningMacro("The custom palette holds at most 256 colours; colour ignored.");
     return;
   }
-  this->Internals->Custom.insert(this->Internals->Custom.end(), { Clamp01(r), Clamp01(g), Clamp01(b) });
+  this->Internals->Custom.insert(
+    this->Internals->Custom.end(), { Clamp01(r), Clamp01(g), Clamp01(b) });
   this->Modified();
 }
 
@@ -301,9 +302,9 @@ vtkScalarsToColors* FindLookupTable(const vtkRenderState* s)
     int cellFlag = 0;
     vtkDataSet* input = mapper->GetInputAsDataSet();
     vtkDataArray* scalars = input
-      ? vtkDataArray::SafeDownCast(vtkAbstractMapper::GetAbstractScalars(input,
-          mapper->GetScalarMode(), mapper->GetArrayAccessMode(), mapper->GetArrayId(),
-          mapper->GetArrayName(), cellFlag))
+      ? vtkDataArray::SafeDownCast(
+          vtkAbstractMapper::GetAbstractScalars(input, mapper->GetScalarMode(),
+            mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag))
       : nullptr;
     if (!scalars)
     {
@@ -398,8 +399,8 @@ vtkPixelArtPass::Plan vtkPixelArtPass::PlanFrame(const vtkRenderState* s, const 
   for (int i = 0; i < s->GetPropArrayCount() && !p.WriteDepth; ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    p.WriteDepth = prop->GetVisibility() &&
-      (prop->HasTranslucentPolygonalGeometry() || prop->IsA("vtkVolume"));
+    p.WriteDepth =
+      prop->GetVisibility() && (prop->HasTranslucentPolygonalGeometry() || prop->IsA("vtkVolume"));
   }
   const bool layerEdges = this->Layer != PIXELATED;
   p.Canny = layerEdges && this->EdgeDetector == CANNY;
@@ -570,7 +571,8 @@ void vtkPixelArtPass::PlanGrid(const Frame& frame, Plan& p) const
 //------------------------------------------------------------------------------
 void vtkPixelArtPass::PlanPalette(const vtkRenderState* s, Plan& p) const
 {
-  auto addColour = [&p](double r, double g, double b) {
+  auto addColour = [&p](double r, double g, double b)
+  {
     p.Colours.insert(p.Colours.end(),
       { static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), 1.0f });
   };
@@ -624,16 +626,15 @@ void vtkPixelArtPass::UpdatePalette(const Frame& frame, const Plan& plan)
   this->FreeTexture(PALETTE);
   texture = vtkTextureObject::New();
   texture->SetContext(frame.Window);
-  texture->Create2DFromRaw(
-    static_cast<unsigned int>(plan.Colours.size() / 4), 1, 4, VTK_FLOAT,
+  texture->Create2DFromRaw(static_cast<unsigned int>(plan.Colours.size() / 4), 1, 4, VTK_FLOAT,
     const_cast<float*>(plan.Colours.data()));
   in.PaletteData = plan.Colours;
   in.PaletteSpread = MedianSpacing(plan.Colours);
 }
 
 //------------------------------------------------------------------------------
-void vtkPixelArtPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame,
-  const Plan& p, const Inputs& inputs, vtkTextureObject* input, vtkTextureObject* art)
+void vtkPixelArtPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, const Plan& p,
+  const Inputs& inputs, vtkTextureObject* input, vtkTextureObject* art)
 {
   const vtkInternals& in = *this->Internals;
   u.Texture("stylizeColorTexture", inputs.Colour)
@@ -664,8 +665,8 @@ void vtkPixelArtPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame
     .Int("pixelParallel", frame.Parallel ? 1 : 0)
     .Float("pixelAnchorUnit", p.AnchorUnit)
     .Float("pixelTexelUnit", p.TexelUnit)
-    .Float3("pixelOutlineColor", this->OutlineColor[0], this->OutlineColor[1],
-      this->OutlineColor[2]);
+    .Float3(
+      "pixelOutlineColor", this->OutlineColor[0], this->OutlineColor[1], this->OutlineColor[2]);
   this->SetSceneOutputUniforms(u, frame.Renderer);
 }
 
@@ -673,25 +674,24 @@ void vtkPixelArtPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame
 void vtkPixelArtPass::RenderReduceStage(const Frame& frame, const Plan& p, Inputs& inputs)
 {
   const int nx = p.Grid[0], ny = p.Grid[1];
-  const bool full =
-    this->GetGBufferPass()->GetPrecision() == vtkStylizeGBufferPass::FULL;
-  vtkTextureObject* colour = this->EnsureTexture(REDUCED_COLOR, nx, ny, full ? GL_RGBA32F : GL_RGBA16F);
+  const bool full = this->GetGBufferPass()->GetPrecision() == vtkStylizeGBufferPass::FULL;
+  vtkTextureObject* colour =
+    this->EnsureTexture(REDUCED_COLOR, nx, ny, full ? GL_RGBA32F : GL_RGBA16F);
   vtkTextureObject* linear = this->EnsureTexture(REDUCED_LINEAR, nx, ny, GL_R32F);
   vtkTextureObject* normal =
     p.NormalEdges ? this->EnsureTexture(REDUCED_NORMAL, nx, ny, GL_RGBA16F) : nullptr;
   vtkTextureObject* position =
     p.SurfaceAnchor ? this->EnsureTexture(REDUCED_POSITION, nx, ny, GL_RGBA32F) : nullptr;
-  auto uniforms = [&](vtkStylizeUniforms& u) {
-    this->SetStageUniforms(u, frame, p, inputs, nullptr, nullptr);
-  };
+  auto uniforms = [&](vtkStylizeUniforms& u)
+  { this->SetStageUniforms(u, frame, p, inputs, nullptr, nullptr); };
   if (normal && position)
   {
     this->RenderStage(REDUCE_STAGE, { colour, linear, normal, position }, nx, ny, uniforms);
   }
   else if (normal || position)
   {
-    this->RenderStage(REDUCE_STAGE, { colour, linear, normal ? normal : position }, nx, ny,
-      uniforms);
+    this->RenderStage(
+      REDUCE_STAGE, { colour, linear, normal ? normal : position }, nx, ny, uniforms);
   }
   else
   {
@@ -710,10 +710,10 @@ vtkTextureObject* vtkPixelArtPass::RenderEdgeStages(
   const int nx = p.Grid[0], ny = p.Grid[1];
   Inputs art = inputs;
   art.Depth = nullptr; // not read at the art resolution
-  auto stage = [&](int index, vtkTextureObject* target, vtkTextureObject* input) {
-    this->RenderStage(index, { target }, nx, ny, [&](vtkStylizeUniforms& u) {
-      this->SetStageUniforms(u, frame, p, art, input, nullptr);
-    });
+  auto stage = [&](int index, vtkTextureObject* target, vtkTextureObject* input)
+  {
+    this->RenderStage(index, { target }, nx, ny,
+      [&](vtkStylizeUniforms& u) { this->SetStageUniforms(u, frame, p, art, input, nullptr); });
   };
   vtkTextureObject* classes = this->EnsureTexture(CLASSES_0, nx, ny, GL_R32F);
   vtkTextureObject* gradient = nullptr;
@@ -751,16 +751,15 @@ void vtkPixelArtPass::RenderArtStage(
   Inputs art = inputs;
   art.Depth = nullptr; // not read at the art resolution
   vtkTextureObject* target = this->EnsureTexture(ART, nx, ny, GL_RGBA16F);
-  this->RenderStage(STYLIZE_STAGE, { target }, nx, ny, [&](vtkStylizeUniforms& u) {
-    this->SetStageUniforms(u, frame, p, art, edges, nullptr);
-  });
+  this->RenderStage(STYLIZE_STAGE, { target }, nx, ny,
+    [&](vtkStylizeUniforms& u) { this->SetStageUniforms(u, frame, p, art, edges, nullptr); });
 }
 
 //------------------------------------------------------------------------------
 void vtkPixelArtPass::RenderUpsampleStage(
   const Frame& frame, const Plan& p, const Inputs& inputs, vtkTextureObject* gray)
 {
-  this->RenderStageToOutput(frame, UPSAMPLE_STAGE, p.WriteDepth, [&](vtkStylizeUniforms& u) {
-    this->SetStageUniforms(u, frame, p, inputs, gray, this->TextureSlot(ART));
-  });
+  this->RenderStageToOutput(frame, UPSAMPLE_STAGE, p.WriteDepth,
+    [&](vtkStylizeUniforms& u)
+    { this->SetStageUniforms(u, frame, p, inputs, gray, this->TextureSlot(ART)); });
 }

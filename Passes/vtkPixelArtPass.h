@@ -24,9 +24,9 @@
 #ifndef vtkPixelArtPass_h
 #define vtkPixelArtPass_h
 
-#include "vtkStylizeStylePass.h"
 #include "vtkStylizePassesModule.h" // for export macro
-#include "vtkWrappingHints.h"        // for VTK_SIZEHINT
+#include "vtkStylizeStylePass.h"
+#include "vtkWrappingHints.h" // for VTK_SIZEHINT
 
 #include <memory> // for std::unique_ptr
 
@@ -57,11 +57,11 @@ public:
   /** The colours art pixels are reduced to. */
   enum Palettes
   {
-    LEVELS = 0,   ///< Levels values per channel (Levels^3 colours)
-    GRAYS = 1,    ///< Levels grays (Levels = 2: 1-bit black and white)
+    LEVELS = 0,    ///< Levels values per channel (Levels^3 colours)
+    GRAYS = 1,     ///< Levels grays (Levels = 2: 1-bit black and white)
     PALETTE16 = 2, ///< the 16-colour DawnBringer palette
-    CUSTOM = 3,   ///< the user's list (AddPaletteColor); empty list: LEVELS
-    COLORMAP = 4  ///< the data's colormap at ColormapColors values x ColormapShades shades
+    CUSTOM = 3,    ///< the user's list (AddPaletteColor); empty list: LEVELS
+    COLORMAP = 4   ///< the data's colormap at ColormapColors values x ColormapShades shades
   };
 
   /** What the dither pattern is attached to. */
@@ -300,8 +300,9 @@ public:
   /** When the pass writes the scene's depth into the output's depth buffer. */
   enum DepthOutputs
   {
-    DEPTH_AUTO = 0,  ///< when translucent geometry or volumes follow; otherwise cleared to far
-    DEPTH_ALWAYS = 1 ///< always (for readers of the depth buffer: vtkRenderer::GetZ, z-buffer capture)
+    DEPTH_AUTO = 0, ///< when translucent geometry or volumes follow; otherwise cleared to far
+    DEPTH_ALWAYS =
+      1 ///< always (for readers of the depth buffer: vtkRenderer::GetZ, z-buffer capture)
   };
 
   ///@{

@@ -39,7 +39,7 @@
 namespace
 {
 constexpr int NoiseTextureSize = 64;
-constexpr int NoiseCell = 8; // lattice period of Perlin and cell size of Worley, texels
+constexpr int NoiseCell = 8;        // lattice period of Perlin and cell size of Worley, texels
 constexpr double SparseDots = 0.05; // SPARSE: the share of texels that hold a dot
 // SPARSE: the smallest texel, window pixels. The strokes are then wider than a pixel's
 // sampling can alias (their profile is band-limited), so a sub-pixel motion moves them
@@ -102,12 +102,12 @@ struct vtkSketchPass::Plan
   std::string Defines;
   FieldSettings Field; // the direction field's settings (NaN settings replaced)
   // Settings as used (a NaN setting counts as its range's minimum), lengths in pixels.
-  double PointSize;   // pixels per point
-  double FocalPixel;  // world size of a pixel at the focal distance
+  double PointSize;  // pixels per point
+  double FocalPixel; // world size of a pixel at the focal distance
   double StepLength, StrokeContrast, CrossThreshold, ContrastSetting;
   int Steps; // LIC steps on each side
   int BlurSize[2];
-  double BlurRadius;  // pixels
+  double BlurRadius; // pixels
   double NoiseUnit;
 };
 
@@ -179,9 +179,8 @@ void vtkSketchPass::SetNeighbors(int n)
 //------------------------------------------------------------------------------
 void vtkSketchPass::SetBrightThresholds(double t1, double t2)
 {
-  auto clamp01 = [](double v, double fallback) {
-    return std::isfinite(v) ? std::min(1.0, std::max(0.0, v)) : fallback;
-  };
+  auto clamp01 = [](double v, double fallback)
+  { return std::isfinite(v) ? std::min(1.0, std::max(0.0, v)) : fallback; };
   t1 = clamp01(t1, this->BrightThresholds[0]);
   t2 = std::max(t1, clamp01(t2, this->BrightThresholds[1]));
   if (t1 != this->BrightThresholds[0] || t2 != this->BrightThresholds[1])
@@ -241,11 +240,13 @@ void vtkSketchPass::GenerateNoise(int kind, int size, vtkFloatArray* out)
   out->SetNumberOfTuples(total);
   std::mt19937 rng(20261121u + static_cast<unsigned>(kind));
   auto wrap = [&](int i) { return ((i % cells) + cells) % cells; };
-  auto cellIndex = [&](int i, int j, int k) { return (wrap(k) * cells + wrap(j)) * cells + wrap(i); };
+  auto cellIndex = [&](int i, int j, int k)
+  { return (wrap(k) * cells + wrap(j)) * cells + wrap(i); };
 
   // Evaluates value(p, c) at every texel centre p (in lattice cells; c = floor(p)), then scales
   // the values linearly to [0, 1].
-  auto fill = [&](const std::function<double(const double*, const int*)>& value) {
+  auto fill = [&](const std::function<double(const double*, const int*)>& value)
+  {
     std::vector<double> raw(static_cast<size_t>(total));
     for (int z = 0; z < size; ++z)
     {
@@ -255,8 +256,8 @@ void vtkSketchPass::GenerateNoise(int kind, int size, vtkFloatArray* out)
         {
           const double p[3] = { (x + 0.5) / NoiseCell, (y + 0.5) / NoiseCell,
             (z + 0.5) / NoiseCell };
-          const int c[3] = { static_cast<int>(std::floor(p[0])),
-            static_cast<int>(std::floor(p[1])), static_cast<int>(std::floor(p[2])) };
+          const int c[3] = { static_cast<int>(std::floor(p[0])), static_cast<int>(std::floor(p[1])),
+            static_cast<int>(std::floor(p[2])) };
           raw[(static_cast<size_t>(z) * size + y) * size + x] = value(p, c);
         }
       }
@@ -290,23 +291,25 @@ void vtkSketchPass::GenerateNoise(int kind, int size, vtkFloatArray* out)
         c /= std::sqrt(l2);
       }
     }
-    fill([&](const double* p, const int* c) {
-      const double f[3] = { p[0] - c[0], p[1] - c[1], p[2] - c[2] };
-      double v = 0.0;
-      for (int corner = 0; corner < 8; ++corner)
+    fill(
+      [&](const double* p, const int* c)
       {
-        const int o[3] = { corner & 1, (corner >> 1) & 1, (corner >> 2) & 1 };
-        const auto& g = gradients[cellIndex(c[0] + o[0], c[1] + o[1], c[2] + o[2])];
-        const double dot = g[0] * (f[0] - o[0]) + g[1] * (f[1] - o[1]) + g[2] * (f[2] - o[2]);
-        double w = 1.0;
-        for (int a = 0; a < 3; ++a)
+        const double f[3] = { p[0] - c[0], p[1] - c[1], p[2] - c[2] };
+        double v = 0.0;
+        for (int corner = 0; corner < 8; ++corner)
         {
-          w *= o[a] ? Fade(f[a]) : 1.0 - Fade(f[a]);
+          const int o[3] = { corner & 1, (corner >> 1) & 1, (corner >> 2) & 1 };
+          const auto& g = gradients[cellIndex(c[0] + o[0], c[1] + o[1], c[2] + o[2])];
+          const double dot = g[0] * (f[0] - o[0]) + g[1] * (f[1] - o[1]) + g[2] * (f[2] - o[2]);
+          double w = 1.0;
+          for (int a = 0; a < 3; ++a)
+          {
+            w *= o[a] ? Fade(f[a]) : 1.0 - Fade(f[a]);
+          }
+          v += w * dot;
         }
-        v += w * dot;
-      }
-      return v;
-    });
+        return v;
+      });
     return;
   }
   if (kind == WORLEY)
@@ -320,23 +323,25 @@ void vtkSketchPass::GenerateNoise(int kind, int size, vtkFloatArray* out)
         c = Uniform(rng);
       }
     }
-    fill([&](const double* p, const int* c) {
-      double best = 1e30;
-      for (int k = -1; k <= 1; ++k)
+    fill(
+      [&](const double* p, const int* c)
       {
-        for (int j = -1; j <= 1; ++j)
+        double best = 1e30;
+        for (int k = -1; k <= 1; ++k)
         {
-          for (int i = -1; i <= 1; ++i)
+          for (int j = -1; j <= 1; ++j)
           {
-            const auto& q = points[cellIndex(c[0] + i, c[1] + j, c[2] + k)];
-            const double d[3] = { c[0] + i + q[0] - p[0], c[1] + j + q[1] - p[1],
-              c[2] + k + q[2] - p[2] };
-            best = std::min(best, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            for (int i = -1; i <= 1; ++i)
+            {
+              const auto& q = points[cellIndex(c[0] + i, c[1] + j, c[2] + k)];
+              const double d[3] = { c[0] + i + q[0] - p[0], c[1] + j + q[1] - p[1],
+                c[2] + k + q[2] - p[2] };
+              best = std::min(best, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            }
           }
         }
-      }
-      return std::sqrt(best);
-    });
+        return std::sqrt(best);
+      });
     return;
   }
   if (kind == SPARSE)
@@ -365,8 +370,9 @@ void vtkSketchPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Layer: " << layers[this->Layer] << "\n";
   os << indent << "DirectionSource: " << (this->DirectionSource == MODEL ? "model" : "screen")
      << "\n";
-  os << indent << "DirectionArrayName: "
-     << (this->DirectionArrayName ? this->DirectionArrayName : "(none)") << "\n";
+  os << indent
+     << "DirectionArrayName: " << (this->DirectionArrayName ? this->DirectionArrayName : "(none)")
+     << "\n";
   os << indent << "Direction: " << directions[this->Direction] << "\n";
   os << indent << "Neighbors: " << this->Neighbors << "\n";
   os << indent << "NeighborSpacing: " << this->NeighborSpacing << " pt\n";
@@ -381,8 +387,7 @@ void vtkSketchPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
   os << indent << "FillRadius: " << this->FillRadius << " pt\n";
   os << indent << "FallbackAngle: " << this->FallbackAngle << " deg\n";
-  os << indent << "LicMode: " << (this->LicMode == SCREEN_2D ? "screen-2d" : "perspective")
-     << "\n";
+  os << indent << "LicMode: " << (this->LicMode == SCREEN_2D ? "screen-2d" : "perspective") << "\n";
   os << indent << "StepLength: " << this->StepLength << " pt\n";
   os << indent << "Steps: " << this->Steps << "\n";
   os << indent << "Noise: " << noises[this->Noise] << "\n";
@@ -410,16 +415,17 @@ void vtkSketchPass::MapDirectionArrays(vtkRenderer* ren)
   const std::string name = this->DirectionArrayName ? this->DirectionArrayName : "";
   auto& mapped = this->Internals->Mapped;
   mapped.erase(std::remove_if(mapped.begin(), mapped.end(),
-                 [](const std::pair<vtkWeakPointer<vtkOpenGLPolyDataMapper>, std::string>& m) {
-                   return m.first == nullptr;
-                 }),
+                 [](const std::pair<vtkWeakPointer<vtkOpenGLPolyDataMapper>, std::string>& m)
+                 { return m.first == nullptr; }),
     mapped.end());
-  auto directions = [&name](vtkDataSet* data) {
+  auto directions = [&name](vtkDataSet* data)
+  {
     vtkDataArray* a = data->GetPointData()->GetArray(name.c_str());
     return a && a->GetNumberOfComponents() == 3;
   };
   // The helpers of VTK's composite data mapper upload the tangents, no mapped array.
-  auto tangents = [](vtkDataSet* data) {
+  auto tangents = [](vtkDataSet* data)
+  {
     vtkDataArray* t = data->GetPointData()->GetTangents();
     return vtkFloatArray::SafeDownCast(t) && t->GetNumberOfComponents() == 3;
   };
@@ -461,9 +467,8 @@ void vtkSketchPass::MapDirectionArrays(vtkRenderer* ren)
     }
     anyDirections = anyDirections || input->GetNumberOfPoints() > 0;
     auto found = std::find_if(mapped.begin(), mapped.end(),
-      [&](const std::pair<vtkWeakPointer<vtkOpenGLPolyDataMapper>, std::string>& m) {
-        return m.first == mapper;
-      });
+      [&](const std::pair<vtkWeakPointer<vtkOpenGLPolyDataMapper>, std::string>& m)
+      { return m.first == mapper; });
     if (found != mapped.end() && found->second == name)
     {
       continue;
@@ -652,8 +657,8 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
     // its tiles), and steps of at least SparseStepPerTexel texels (on a small image the steps
     // in points would otherwise turn the strokes into spots).
     noiseSize = std::max(noiseSize, SparseMinimumTexel * frame.TileScale[1] / p.PointSize);
-    p.StepLength = std::max(p.StepLength,
-      SparseStepPerTexel * noiseSize * this->Steps / std::max(p.Steps, 1));
+    p.StepLength =
+      std::max(p.StepLength, SparseStepPerTexel * noiseSize * this->Steps / std::max(p.Steps, 1));
   }
   p.NoiseUnit = p.ObjectNoise ? noiseSize * p.PointSize * p.FocalPixel : noiseSize * p.PointSize;
   return p;
@@ -695,8 +700,8 @@ void vtkSketchPass::UpdateNoise(const Frame& frame)
   noise->SetGenerateMipmap(prefiltered);
   noise->SetMaxLevel(prefiltered ? 1000 : 0);
   noise->SetMagnificationFilter(filter);
-  noise->Create3DFromRaw(NoiseTextureSize, NoiseTextureSize, NoiseTextureSize, 1, VTK_FLOAT,
-    values->GetPointer(0));
+  noise->Create3DFromRaw(
+    NoiseTextureSize, NoiseTextureSize, NoiseTextureSize, 1, VTK_FLOAT, values->GetPointer(0));
   if (prefiltered)
   {
     noise->Activate();
@@ -715,7 +720,8 @@ void vtkSketchPass::RenderBlurStages(const Frame& frame, const Plan& p)
   blurY->SetMinificationFilter(vtkTextureObject::Linear);
   blurY->SetMagnificationFilter(vtkTextureObject::Linear);
   const int taps = static_cast<int>(std::ceil(p.BlurRadius / this->BlurStride));
-  auto uniforms = [&](vtkStylizeUniforms& u) {
+  auto uniforms = [&](vtkStylizeUniforms& u)
+  {
     this->SetFieldUniforms(u, frame);
     u.Int("sketchBlurStride", this->BlurStride)
       .Float("sketchBlurSigma", std::max(0.5, p.BlurRadius / 3.0))
@@ -723,33 +729,39 @@ void vtkSketchPass::RenderBlurStages(const Frame& frame, const Plan& p)
       .Int2("sketchBlurSize", bw, bh);
   };
   this->RenderStage(BLUR_X_STAGE, { blurX }, bw, bh, uniforms);
-  this->RenderStage(BLUR_Y_STAGE, { blurY }, bw, bh, [&](vtkStylizeUniforms& u) {
-    uniforms(u);
-    u.Texture("sketchInput", blurX);
-  });
+  this->RenderStage(BLUR_Y_STAGE, { blurY }, bw, bh,
+    [&](vtkStylizeUniforms& u)
+    {
+      uniforms(u);
+      u.Texture("sketchInput", blurX);
+    });
 }
 
 //------------------------------------------------------------------------------
 void vtkSketchPass::RenderFinalStage(const Frame& frame, const Plan& p)
 {
   const vtkInternals& in = *this->Internals;
-  this->RenderStageToOutput(frame, FINAL_STAGE, true, [&](vtkStylizeUniforms& u) {
-    this->SetFieldUniforms(u, frame);
-    u.Texture("sketchField", this->Internals->Field->GetTexture())
-      .Texture("sketchBlur", this->TextureSlot(BLUR_Y))
-      .Float2("sketchBlurExtent", p.BlurSize[0] * this->BlurStride,
-        p.BlurSize[1] * this->BlurStride)
-      .Texture("sketchNoise", this->TextureSlot(NOISE))
-      .Float2("sketchNoiseStats", in.NoiseStats[0], in.NoiseStats[1])
-      .Float("sketchNoiseScale", 1.0 / (p.NoiseUnit * NoiseTextureSize))
-      .Float("sketchStepPixels", p.StepLength * p.PointSize)
-      .Int("sketchSteps", p.Steps)
-      .Float("sketchStrokeContrast", p.StrokeContrast)
-      .Float("sketchContrast", p.ContrastSetting)
-      .Float2("sketchBright", this->BrightThresholds[0], this->BrightThresholds[1])
-      .Float("sketchCross", p.CrossThreshold)
-      .Float3("sketchPencil", this->PencilColor[0], this->PencilColor[1], this->PencilColor[2])
-      .Float3("sketchPaper", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2]);
-    this->SetSceneOutputUniforms(u, frame.Renderer);
-  }, 0); // the background keeps its colour: the stage runs where the scene is
+  this->RenderStageToOutput(
+    frame, FINAL_STAGE, true,
+    [&](vtkStylizeUniforms& u)
+    {
+      this->SetFieldUniforms(u, frame);
+      u.Texture("sketchField", this->Internals->Field->GetTexture())
+        .Texture("sketchBlur", this->TextureSlot(BLUR_Y))
+        .Float2(
+          "sketchBlurExtent", p.BlurSize[0] * this->BlurStride, p.BlurSize[1] * this->BlurStride)
+        .Texture("sketchNoise", this->TextureSlot(NOISE))
+        .Float2("sketchNoiseStats", in.NoiseStats[0], in.NoiseStats[1])
+        .Float("sketchNoiseScale", 1.0 / (p.NoiseUnit * NoiseTextureSize))
+        .Float("sketchStepPixels", p.StepLength * p.PointSize)
+        .Int("sketchSteps", p.Steps)
+        .Float("sketchStrokeContrast", p.StrokeContrast)
+        .Float("sketchContrast", p.ContrastSetting)
+        .Float2("sketchBright", this->BrightThresholds[0], this->BrightThresholds[1])
+        .Float("sketchCross", p.CrossThreshold)
+        .Float3("sketchPencil", this->PencilColor[0], this->PencilColor[1], this->PencilColor[2])
+        .Float3("sketchPaper", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2]);
+      this->SetSceneOutputUniforms(u, frame.Renderer);
+    },
+    0); // the background keeps its colour: the stage runs where the scene is
 }

@@ -24,8 +24,8 @@
 #ifndef vtkSketchPass_h
 #define vtkSketchPass_h
 
-#include "vtkStylizeStylePass.h"
 #include "vtkStylizePassesModule.h" // for export macro
+#include "vtkStylizeStylePass.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -66,8 +66,8 @@ public:
   /** Where the noise is fixed. */
   enum NoiseSpaces
   {
-    OBJECT = 0,       ///< the object-space position: strokes stick to the surface
-    SCREEN_SPACE = 1  ///< the image: strokes swim when the camera moves
+    OBJECT = 0,      ///< the object-space position: strokes stick to the surface
+    SCREEN_SPACE = 1 ///< the image: strokes swim when the camera moves
   };
 
   /** How a stroke is traced. */
@@ -187,7 +187,8 @@ public:
   ///@}
 
   ///@{
-  /** Largest neighbour stride, points (at least NeighborSpacing to keep it). Range [1, 64], default 32. */
+  /** Largest neighbour stride, points (at least NeighborSpacing to keep it). Range [1, 64],
+   * default 32. */
   vtkSetClampMacro(MaxStride, double, 1.0, 64.0);
   vtkGetMacro(MaxStride, double);
   ///@}

@@ -75,8 +75,8 @@ bool vtkStylizeDepthPeeler::HasTranslucentGeometry(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeDepthPeeler::RenderLayer(const vtkRenderState* s,
-  vtkStylizeGBufferPass* gbuffer, vtkStylizeGBufferPass* opaque, int index)
+bool vtkStylizeDepthPeeler::RenderLayer(
+  const vtkRenderState* s, vtkStylizeGBufferPass* gbuffer, vtkStylizeGBufferPass* opaque, int index)
 {
   if (!opaque || !opaque->GetDepthTexture() || index < 0 ||
     (index > 0 && !gbuffer->GetDepthTexture()))
@@ -230,8 +230,8 @@ void vtkStylizeDepthPeeler::SetShaderParameters(vtkShaderProgram* program)
     program->SetUniformi("stylizeOpaqueDepth", this->OpaqueDepth->GetTextureUnit());
     const bool peel = this->LayerIndex > 0;
     program->SetUniformi("stylizePeel", peel ? 1 : 0);
-    program->SetUniformi("stylizePeelDepth",
-      (peel ? this->PeelDepthTexture : this->OpaqueDepth)->GetTextureUnit());
+    program->SetUniformi(
+      "stylizePeelDepth", (peel ? this->PeelDepthTexture : this->OpaqueDepth)->GetTextureUnit());
   }
 }
 
@@ -323,8 +323,8 @@ bool vtkStylizeDepthPeeler::CompositeLayer(vtkStylizeGBufferPass* gbuffer, bool 
       }
       for (size_t c = 0; c < buffers.size(); ++c)
       {
-        vtkStylizeGBufferTransfer::UploadTexels(gbuffer->GetBufferTexture(buffers[c]),
-          layer.Rect, buffers[c], layer.Channels[c].data());
+        vtkStylizeGBufferTransfer::UploadTexels(
+          gbuffer->GetBufferTexture(buffers[c]), layer.Rect, buffers[c], layer.Channels[c].data());
       }
       vtkStylizeGBufferTransfer::UploadTexels(gbuffer->GetDepthTexture(), layer.Rect,
         vtkStylizeGBufferPass::DEPTH_BUFFER, layer.Depth.data());

@@ -23,8 +23,8 @@ vtkStylizeDirectionField::~vtkStylizeDirectionField()
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizeDirectionField::AddStages(std::string& source, std::string& mainCall,
-  std::vector<vtkStylizeStage>& stages)
+void vtkStylizeDirectionField::AddStages(
+  std::string& source, std::string& mainCall, std::vector<vtkStylizeStage>& stages)
 {
   source = std::string(vtkStylizeFieldFS) + source;
   mainCall = "#ifdef STYLIZE_FIELD_STAGE\n  stylizeFieldMain();\n#else\n" + mainCall + "#endif\n";
@@ -67,7 +67,8 @@ vtkStylizeDirectionField::Plan vtkStylizeDirectionField::MakePlan(
   double scale = 1.0;
   if (s.ObjectScale > 0.0 && spacingWorld > 0.0)
   {
-    auto valid = [](const double* b) {
+    auto valid = [](const double* b)
+    {
       return std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }) && b[0] <= b[1] &&
         b[2] <= b[3] && b[4] <= b[5];
     };
@@ -79,9 +80,8 @@ vtkStylizeDirectionField::Plan vtkStylizeDirectionField::MakePlan(
     }
     if (valid(b))
     {
-      const double diagonal =
-        std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-          (b[5] - b[4]) * (b[5] - b[4]));
+      const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
+        (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
       const double object = s.ObjectScale * diagonal;
       if (std::isfinite(object) && object > spacingWorld)
       {
@@ -148,18 +148,22 @@ vtkTextureObject* vtkStylizeDirectionField::Render(
   const Plan plan = MakePlan(frame, s, pointSize);
   const double fallback = vtkMath::RadiansFromDegrees(s.FallbackAngle);
 
-  // Every stage computes only the surface's pixels (vtkStylizeStylePass::SURFACE_PIXELS): the background is zero,
-  // "no direction", in every texture of the field.
+  // Every stage computes only the surface's pixels (vtkStylizeStylePass::SURFACE_PIXELS): the
+  // background is zero, "no direction", in every texture of the field.
   // 1. Raw directions.
   vtkTextureObject*& raw0 = this->Textures[0];
   vtkStylizeShaderUtilities::EnsureScreenTexture(raw0, frame.Window, w, h, GL_RGBA16F);
-  style->RenderStage(this->FirstStage, { raw0 }, w, h, [&](vtkStylizeUniforms& u) {
-    style->SetFieldUniforms(u, frame);
-    u.Float("fieldSpacing", plan.SpacingWorld)
-      .Int("fieldMaxStride", plan.MaxStride)
-      .Float("fieldPlanar", s.PlanarTolerance)
-      .Float("fieldUmbilic", s.UmbilicTolerance);
-  }, vtkStylizeStylePass::SURFACE_PIXELS);
+  style->RenderStage(
+    this->FirstStage, { raw0 }, w, h,
+    [&](vtkStylizeUniforms& u)
+    {
+      style->SetFieldUniforms(u, frame);
+      u.Float("fieldSpacing", plan.SpacingWorld)
+        .Int("fieldMaxStride", plan.MaxStride)
+        .Float("fieldPlanar", s.PlanarTolerance)
+        .Float("fieldUmbilic", s.UmbilicTolerance);
+    },
+    vtkStylizeStylePass::SURFACE_PIXELS);
 
   // 2. Smoothing and filling (MakePlan()).
   const std::vector<std::pair<int, int>>& iterations = plan.Iterations;
@@ -176,8 +180,10 @@ vtkTextureObject* vtkStylizeDirectionField::Render(
   for (const auto& it : iterations)
   {
     const int next = 1 - current;
-    style->RenderStage(this->FirstStage + 1, { this->Textures[next] }, w, h,
-      [&](vtkStylizeUniforms& u) {
+    style->RenderStage(
+      this->FirstStage + 1, { this->Textures[next] }, w, h,
+      [&](vtkStylizeUniforms& u)
+      {
         style->SetFieldUniforms(u, frame);
         u.Texture("fieldInput", this->Textures[current])
           .Int("fieldRadius", it.first)
@@ -190,12 +196,16 @@ vtkTextureObject* vtkStylizeDirectionField::Render(
   // 3. Fallbacks and the requested direction.
   vtkTextureObject*& resolved = this->Textures[2];
   vtkStylizeShaderUtilities::EnsureScreenTexture(resolved, frame.Window, w, h, GL_RGBA32F);
-  style->RenderStage(this->FirstStage + 2, { resolved }, w, h, [&](vtkStylizeUniforms& u) {
-    style->SetFieldUniforms(u, frame);
-    u.Texture("fieldInput", this->Textures[current])
-      .Int("fieldGradientStride", plan.GradientStride)
-      .Float2("fieldScreenDirection", std::cos(fallback), std::sin(fallback));
-  }, vtkStylizeStylePass::SURFACE_PIXELS);
+  style->RenderStage(
+    this->FirstStage + 2, { resolved }, w, h,
+    [&](vtkStylizeUniforms& u)
+    {
+      style->SetFieldUniforms(u, frame);
+      u.Texture("fieldInput", this->Textures[current])
+        .Int("fieldGradientStride", plan.GradientStride)
+        .Float2("fieldScreenDirection", std::cos(fallback), std::sin(fallback));
+    },
+    vtkStylizeStylePass::SURFACE_PIXELS);
   this->Resolved = 2;
   return resolved;
 }

@@ -36,8 +36,7 @@ public:
    * call its camera helpers), its three stages (their defines and names) after the style's,
    * main() running the field's function in those. Remembers the first stage's index.
    */
-  void AddStages(std::string& source, std::string& mainCall,
-    std::vector<vtkStylizeStage>& stages);
+  void AddStages(std::string& source, std::string& mainCall, std::vector<vtkStylizeStage>& stages);
 
   /** The #defines of the field's stages for `s` (add them to the style's defines). */
   static std::string Defines(const Settings& s);

@@ -160,7 +160,8 @@ void vtkStylizeGBufferImagePath::RenderImage(const vtkRenderState* s,
   gbuffer->ChannelSourceUsed = false;
   if (source && composited)
   {
-    gbuffer->ChannelSourceUsed = this->CompositeChannelSource(gbuffer, renWin, sourceRendered, w, h);
+    gbuffer->ChannelSourceUsed =
+      this->CompositeChannelSource(gbuffer, renWin, sourceRendered, w, h);
   }
   else if (sourceRendered)
   {
@@ -187,11 +188,10 @@ bool vtkStylizeGBufferImagePath::CompositeChannelSource(
   vtkStylizeGBufferPass* source = gbuffer->GetChannelSource();
   // Every process asked its source for the same channels.
   std::vector<int> buffers;
-  for (auto channel : { std::make_pair(vtkStylizeGBufferPass::NORMAL,
-                          vtkStylizeGBufferPass::NORMAL_BUFFER),
-         std::make_pair(vtkStylizeGBufferPass::POSITION, vtkStylizeGBufferPass::POSITION_BUFFER),
-         std::make_pair(
-           vtkStylizeGBufferPass::DIRECTION, vtkStylizeGBufferPass::DIRECTION_BUFFER) })
+  for (auto channel :
+    { std::make_pair(vtkStylizeGBufferPass::NORMAL, vtkStylizeGBufferPass::NORMAL_BUFFER),
+      std::make_pair(vtkStylizeGBufferPass::POSITION, vtkStylizeGBufferPass::POSITION_BUFFER),
+      std::make_pair(vtkStylizeGBufferPass::DIRECTION, vtkStylizeGBufferPass::DIRECTION_BUFFER) })
   {
     if (source->GetChannels() & channel.first)
     {

@@ -95,7 +95,6 @@ private:
 };
 }
 
-
 vtkStandardNewMacro(vtkStylizeGBufferPass);
 vtkCxxSetObjectMacro(vtkStylizeGBufferPass, LightingPass, vtkStylizeLightingPass);
 vtkCxxSetObjectMacro(vtkStylizeGBufferPass, SceneImagePass, vtkRenderPass);
@@ -174,19 +173,18 @@ void vtkStylizeGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
      << ((this->Channels & LINEAR_DEPTH) ? "linear-depth " : "")
      << ((this->Channels & DIRECTION) ? "direction" : "") << "\n";
   os << indent << "Precision: " << (this->Precision == FULL ? "full" : "half") << "\n";
-  os << indent << "NormalPrecision: " << (this->NormalPrecision == FULL ? "full" : "half")
-     << "\n";
+  os << indent << "NormalPrecision: " << (this->NormalPrecision == FULL ? "full" : "half") << "\n";
   os << indent << "PositionSpace: " << (this->PositionSpace == VIEW ? "view" : "object") << "\n";
   os << indent << "Viewport: " << this->Viewport[0] << " " << this->Viewport[1] << " "
      << this->Viewport[2] << " " << this->Viewport[3] << "\n";
-  os << indent << "LightingPass: " << (this->LightingPass ? "set" : "(none: VTK lighting)")
-     << "\n";
+  os << indent << "LightingPass: " << (this->LightingPass ? "set" : "(none: VTK lighting)") << "\n";
   os << indent << "ChannelSource: " << (this->ChannelSource ? "set" : "(none)") << "\n";
   os << indent << "ImageBackground: " << this->ImageBackground[0] << " " << this->ImageBackground[1]
      << " " << this->ImageBackground[2] << (this->UseImageBackground ? " (used)" : " (off)")
      << "\n";
-  os << indent << "Controller: "
-     << (this->Controller ? this->Controller->GetNumberOfProcesses() : 1) << " process(es)\n";
+  os << indent
+     << "Controller: " << (this->Controller ? this->Controller->GetNumberOfProcesses() : 1)
+     << " process(es)\n";
   os << indent << "SceneImagePass: "
      << (this->SceneImagePass ? this->SceneImagePass->GetClassName() : "(none: the geometry)")
      << "\n";
@@ -248,9 +246,8 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
   const int colorFormat = this->Precision == FULL ? GL_RGBA32F : GL_RGBA16F;
   const int normalFormat = normalPrecision == FULL ? GL_RGBA32F : GL_RGBA16F;
   using Utilities = vtkStylizeShaderUtilities;
-  auto make = [&](vtkTextureObject*& tex, int internalFormat, bool changed = false) {
-    Utilities::EnsureScreenTexture(tex, renWin, w, h, internalFormat, changed);
-  };
+  auto make = [&](vtkTextureObject*& tex, int internalFormat, bool changed = false)
+  { Utilities::EnsureScreenTexture(tex, renWin, w, h, internalFormat, changed); };
   auto drop = [&](vtkTextureObject*& tex) { Utilities::FreeTexture(tex, renWin); };
   make(this->ColorTexture, colorFormat, colorChanged);
   make(this->DepthTexture, GL_DEPTH_COMPONENT32F);
@@ -296,9 +293,8 @@ void vtkStylizeGBufferPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int 
 //------------------------------------------------------------------------------
 void vtkStylizeGBufferPass::FreeTextures(vtkWindow* w)
 {
-  for (vtkTextureObject** tex : { &this->ColorTexture, &this->NormalTexture,
-         &this->PositionTexture, &this->LinearDepthTexture, &this->DepthTexture,
-         &this->DirectionTexture })
+  for (vtkTextureObject** tex : { &this->ColorTexture, &this->NormalTexture, &this->PositionTexture,
+         &this->LinearDepthTexture, &this->DepthTexture, &this->DirectionTexture })
   {
     vtkStylizeShaderUtilities::FreeTexture(*tex, w);
   }

@@ -242,11 +242,11 @@ public:
    * `opaque`'s depth (the opaque G-buffer of the same frame, rendered at the same size) and, for
    * `index` > 0, behind this G-buffer's previous layer (depth peeling: layer `index` - 1 must be
    * the last one rendered). The depth is stored in `opaque`'s mapping (window or logarithmic;
-   * an opaque scene from an image has the image's window depth). The colour's alpha is that surface's opacity, 0 where the layer has
-   * no surface; the other channels are as for opaque geometry. Channels, precision, resolution
-   * and screen transform are this pass's own settings: give them `opaque`'s. Returns false
-   * when the layer holds no surface (an occlusion query counts its samples) or nothing could be
-   * rendered.
+   * an opaque scene from an image has the image's window depth). The colour's alpha is that
+   * surface's opacity, 0 where the layer has no surface; the other channels are as for opaque
+   * geometry. Channels, precision, resolution and screen transform are this pass's own settings:
+   * give them `opaque`'s. Returns false when the layer holds no surface (an occlusion query counts
+   * its samples) or nothing could be rendered.
    *
    * When `opaque` has a Controller of several processes (each rendering its own props), this is
    * a collective call: every process gets process 0's opaque depth (at `index` 0), peels its
@@ -355,8 +355,9 @@ public:
 
   /**
    * Reads a buffer of the last frame back as floats (4 components per pixel for colour, normal,
-   * position and direction, 1 for depth and linear depth), rows bottom to top. The window's context must be current, as it
-   * is right after a render. Returns false when the channel was not allocated.
+   * position and direction, 1 for depth and linear depth), rows bottom to top. The window's context
+   * must be current, as it is right after a render. Returns false when the channel was not
+   * allocated.
    */
   bool DownloadChannel(int buffer, vtkFloatArray* out);
 

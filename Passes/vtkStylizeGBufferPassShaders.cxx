@@ -69,12 +69,13 @@ bool vtkStylizeGBufferPass::PreReplaceShaderValues(std::string& vertexShader, st
           "out vec3 stylizeDirDiagVSOutput;\nout vec3 stylizeDirOffVSOutput;\n",
         false);
       vtkShaderProgram::Substitute(vertexShader, "//VTK::Normal::Impl",
-        "//VTK::Normal::Impl\n  vec3 stylizeDirVC = stylizeDirectionMCVC * " + attribute + ";\n"
-        "  float stylizeDirLength = length(stylizeDirVC);\n"
-        "  stylizeDirVC = stylizeDirLength > 0.0 && !isinf(stylizeDirLength) ?\n"
-        "    stylizeDirVC / stylizeDirLength : vec3(0.0);\n"
-        "  stylizeDirDiagVSOutput = stylizeDirVC * stylizeDirVC;\n"
-        "  stylizeDirOffVSOutput = stylizeDirVC.xxy * stylizeDirVC.yzz;\n",
+        "//VTK::Normal::Impl\n  vec3 stylizeDirVC = stylizeDirectionMCVC * " + attribute +
+          ";\n"
+          "  float stylizeDirLength = length(stylizeDirVC);\n"
+          "  stylizeDirVC = stylizeDirLength > 0.0 && !isinf(stylizeDirLength) ?\n"
+          "    stylizeDirVC / stylizeDirLength : vec3(0.0);\n"
+          "  stylizeDirDiagVSOutput = stylizeDirVC * stylizeDirVC;\n"
+          "  stylizeDirOffVSOutput = stylizeDirVC.xxy * stylizeDirVC.yzz;\n",
         false);
     }
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
@@ -103,9 +104,8 @@ bool vtkStylizeGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
   // The depth the G-buffer stores: the window depth (VTK's own when its shader writes one) or,
   // after VTK's depth code (//VTK::Depth::Impl), the logarithmic depth that overrides it.
   // (VTK's template names gl_FragDepth in a comment: look for an assignment)
-  std::string depth = fragmentShader.find("gl_FragDepth =") != std::string::npos
-    ? "gl_FragDepth"
-    : "gl_FragCoord.z";
+  std::string depth =
+    fragmentShader.find("gl_FragDepth =") != std::string::npos ? "gl_FragDepth" : "gl_FragCoord.z";
   if (this->LogarithmicDepth)
   {
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
@@ -297,4 +297,3 @@ bool vtkStylizeGBufferPass::SetShaderParameters(
   }
   return true;
 }
-

@@ -96,8 +96,8 @@ void UploadTexels(vtkTextureObject* texture, const int rect[4], int buffer, cons
     return;
   }
   const GLenum format = buffer == vtkStylizeGBufferPass::DEPTH_BUFFER ? GL_DEPTH_COMPONENT
-    : ComponentsOf(buffer) == 1                                      ? GL_RED
-                                                                     : GL_RGBA;
+    : ComponentsOf(buffer) == 1                                       ? GL_RED
+                                                                      : GL_RGBA;
   texture->Activate();
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTexSubImage2D(GL_TEXTURE_2D, 0, rect[0], rect[1], rect[2], rect[3], format, GL_FLOAT, data);

@@ -23,9 +23,9 @@
 #include "vtkTransform.h"
 #include "vtk_glew.h"
 
-#include "vtkStylizeShaderUtilities.h"
 #include "vtkStylizeLightingDec.h"
 #include "vtkStylizeLightingImpl.h"
+#include "vtkStylizeShaderUtilities.h"
 
 #include <algorithm>
 #include <cctype>
@@ -61,7 +61,8 @@ vtkInformation* EnsureKeys(vtkProp* prop)
   return prop->GetPropertyKeys();
 }
 
-double ActorValue(vtkProp* prop, vtkInformationDoubleKey* key, double fallback, double lo, double hi)
+double ActorValue(
+  vtkProp* prop, vtkInformationDoubleKey* key, double fallback, double lo, double hi)
 {
   vtkInformation* info = prop ? prop->GetPropertyKeys() : nullptr;
   if (info && info->Has(key))
@@ -133,7 +134,8 @@ int vtkStylizeLightingPass::GetModelFromName(const char* name)
   }
   std::string n(name);
   std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::tolower(c); });
-  n.erase(std::remove_if(n.begin(), n.end(), [](char c) { return c == '-' || c == '_' || c == ' '; }),
+  n.erase(
+    std::remove_if(n.begin(), n.end(), [](char c) { return c == '-' || c == '_' || c == ' '; }),
     n.end());
   for (int m = STANDARD; m <= PIXEL_ART; ++m)
   {
@@ -268,15 +270,14 @@ void vtkStylizeLightingPass::UploadLights(vtkRenderer* ren, vtkOpenGLRenderWindo
     vtkMath::Normalize(dirVC);
     const double* att = light->GetAttenuationValues();
     const bool positional = light->GetPositional() != 0;
-    const float texels[16] = {
-      static_cast<float>(dColor[0] * intensity), static_cast<float>(dColor[1] * intensity),
-      static_cast<float>(dColor[2] * intensity), positional ? 1.f : 0.f, //
+    const float texels[16] = { static_cast<float>(dColor[0] * intensity),
+      static_cast<float>(dColor[1] * intensity), static_cast<float>(dColor[2] * intensity),
+      positional ? 1.f : 0.f, //
       static_cast<float>(dirVC[0]), static_cast<float>(dirVC[1]), static_cast<float>(dirVC[2]),
       static_cast<float>(light->GetConeAngle()), //
       static_cast<float>(posVC[0]), static_cast<float>(posVC[1]), static_cast<float>(posVC[2]),
       static_cast<float>(light->GetExponent()), //
-      static_cast<float>(att[0]), static_cast<float>(att[1]), static_cast<float>(att[2]), 0.f
-    };
+      static_cast<float>(att[0]), static_cast<float>(att[1]), static_cast<float>(att[2]), 0.f };
     this->LightData.insert(this->LightData.end(), texels, texels + 16);
     headlights += light->LightTypeIsHeadlight() ? 1 : 0;
     anyPositional = anyPositional || positional;
@@ -454,8 +455,8 @@ vtkMTimeType vtkStylizeLightingPass::GetShaderStageMTime()
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeLightingPass::PreReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+bool vtkStylizeLightingPass::PreReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
@@ -473,8 +474,8 @@ bool vtkStylizeLightingPass::PreReplaceShaderValues(std::string&, std::string&,
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeLightingPass::PostReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+bool vtkStylizeLightingPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
   if (fragmentShader.find(LightImplTag) == std::string::npos)
   {

@@ -27,7 +27,7 @@
 
 #include "vtkOpenGLRenderPass.h"
 #include "vtkStylizePassesModule.h" // for export macro
-#include "vtkTimeStamp.h"            // for vtkTimeStamp
+#include "vtkTimeStamp.h"           // for vtkTimeStamp
 
 #include <vector> // for std::vector
 
@@ -101,8 +101,8 @@ public:
    * Comic: number of gray levels pd of the quantized diffuse term at the near end (GrayLevelsNear)
    * and the far end (GrayLevelsFar) of the visible depth range, in [0, 100]; pd varies linearly
    * in between. 0 gives black diffuse. Defaults 6 and 6: equal, so that a flat face is one tone
-   * whatever its depth (the paper's depth-dependent levels split it). Per actor: GRAY_LEVELS_NEAR(),
-   * GRAY_LEVELS_FAR().
+   * whatever its depth (the paper's depth-dependent levels split it). Per actor:
+   * GRAY_LEVELS_NEAR(), GRAY_LEVELS_FAR().
    */
   vtkSetClampMacro(GrayLevelsNear, double, 0.0, 100.0);
   vtkGetMacro(GrayLevelsNear, double);
@@ -216,9 +216,9 @@ protected:
 
   vtkRenderPass* DelegatePass = nullptr;
   int Model = STANDARD;
-  int ShaderModel = -1;   // the model the mappers' shaders were last built for
+  int ShaderModel = -1;         // the model the mappers' shaders were last built for
   int ShaderHeadlightOnly = -1; // and the light class (1: VTK's single headlight)
-  vtkTimeStamp ModelTime; // when either changed: GetShaderStageMTime()
+  vtkTimeStamp ModelTime;       // when either changed: GetShaderStageMTime()
   double SubjectFactor = 0.35;
   double GrayLevelsNear = 6.0;
   double GrayLevelsFar = 6.0;

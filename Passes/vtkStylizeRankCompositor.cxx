@@ -23,8 +23,9 @@ vtkStylizeRankCompositor::~vtkStylizeRankCompositor()
 void vtkStylizeRankCompositor::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Controller: "
-     << (this->Controller ? this->Controller->GetNumberOfProcesses() : 1) << " process(es)\n";
+  os << indent
+     << "Controller: " << (this->Controller ? this->Controller->GetNumberOfProcesses() : 1)
+     << " process(es)\n";
 }
 
 //------------------------------------------------------------------------------
@@ -101,8 +102,7 @@ bool vtkStylizeRankCompositor::InsideImage(const int rect[4], int w, int h)
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeRankCompositor::Reduce(
-  Part& own, const std::vector<int>& components, int w, int h)
+bool vtkStylizeRankCompositor::Reduce(Part& own, const std::vector<int>& components, int w, int h)
 {
   vtkMultiProcessController* controller = this->Controller;
   const int rank = controller ? controller->GetLocalProcessId() : 0;

@@ -52,8 +52,8 @@ void vtkStylizeSceneLights::AddLights(vtkRenderer* renderer, int count, const do
     light->SetColor(1.0, 1.0, 1.0);
     light->SetIntensity(intensity);
     light->SetFocalPoint(center[0], center[1], center[2]);
-    light->SetPosition(center[0] + distance * dir[0], center[1] + distance * dir[1],
-      center[2] + distance * dir[2]);
+    light->SetPosition(
+      center[0] + distance * dir[0], center[1] + distance * dir[1], center[2] + distance * dir[2]);
     switch (i % kinds)
     {
       case 0:

@@ -188,8 +188,7 @@ vtkStylizeUniforms::~vtkStylizeUniforms()
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeUniforms& vtkStylizeUniforms::Int(
-  const char* name, int v)
+vtkStylizeUniforms& vtkStylizeUniforms::Int(const char* name, int v)
 {
   if (this->Program->IsUniformUsed(name))
   {
@@ -199,8 +198,7 @@ vtkStylizeUniforms& vtkStylizeUniforms::Int(
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeUniforms& vtkStylizeUniforms::Float(
-  const char* name, double v)
+vtkStylizeUniforms& vtkStylizeUniforms::Float(const char* name, double v)
 {
   if (this->Program->IsUniformUsed(name))
   {
@@ -210,8 +208,7 @@ vtkStylizeUniforms& vtkStylizeUniforms::Float(
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeUniforms& vtkStylizeUniforms::Int2(
-  const char* name, int x, int y)
+vtkStylizeUniforms& vtkStylizeUniforms::Int2(const char* name, int x, int y)
 {
   if (this->Program->IsUniformUsed(name))
   {
@@ -222,8 +219,7 @@ vtkStylizeUniforms& vtkStylizeUniforms::Int2(
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeUniforms& vtkStylizeUniforms::Float2(
-  const char* name, double x, double y)
+vtkStylizeUniforms& vtkStylizeUniforms::Float2(const char* name, double x, double y)
 {
   if (this->Program->IsUniformUsed(name))
   {
@@ -234,8 +230,7 @@ vtkStylizeUniforms& vtkStylizeUniforms::Float2(
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeUniforms& vtkStylizeUniforms::Float3(
-  const char* name, double x, double y, double z)
+vtkStylizeUniforms& vtkStylizeUniforms::Float3(const char* name, double x, double y, double z)
 {
   if (this->Program->IsUniformUsed(name))
   {
@@ -259,8 +254,7 @@ vtkStylizeUniforms& vtkStylizeUniforms::Float4(
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeUniforms& vtkStylizeUniforms::Texture(
-  const char* name, vtkTextureObject* tex)
+vtkStylizeUniforms& vtkStylizeUniforms::Texture(const char* name, vtkTextureObject* tex)
 {
   if (tex && this->Program->IsUniformUsed(name))
   {

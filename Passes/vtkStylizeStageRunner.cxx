@@ -99,8 +99,8 @@ void vtkStylizeStageRunner::FreeFramebuffer(vtkOpenGLFramebufferObject*& fbo, vt
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeStageRunner::Run(int stage, std::initializer_list<vtkTextureObject*> targets,
-  int w, int h, const StageUniforms& uniforms, vtkTextureObject* cullDepth)
+bool vtkStylizeStageRunner::Run(int stage, std::initializer_list<vtkTextureObject*> targets, int w,
+  int h, const StageUniforms& uniforms, vtkTextureObject* cullDepth)
 {
   vtkOpenGLState* ostate = this->Window->GetState();
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);

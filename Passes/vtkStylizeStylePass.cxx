@@ -48,7 +48,7 @@ public:
   vtkTextureObject* LayerTexture = nullptr;
   vtkOpenGLFramebufferObject* LayerFramebuffer = nullptr;
   vtkStylizeScreenQuad LayerQuad;
-  vtkStylizeScreenQuad BackgroundQuad; // the background around the scene's rectangle
+  vtkStylizeScreenQuad BackgroundQuad;     // the background around the scene's rectangle
   std::vector<vtkTextureObject*> Textures; // the style's slots
   bool Culling = true;                     // BackgroundCullingOn()
 
@@ -79,8 +79,8 @@ vtkStylizeStylePass::vtkStylizeStylePass(int lightingModel)
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizeStylePass::SetStages(
-  const std::string& source, const std::string& mainCall, const std::vector<vtkStylizeStage>& stages)
+void vtkStylizeStylePass::SetStages(const std::string& source, const std::string& mainCall,
+  const std::vector<vtkStylizeStage>& stages)
 {
   std::vector<std::string> defines, names;
   for (size_t i = 0; i < stages.size(); ++i)
@@ -291,8 +291,8 @@ bool vtkStylizeStylePass::BeginFrame(const vtkRenderState* s, Frame& frame)
   frame.PixelWorld =
     vtkStylizeShaderUtilities::PixelWorldSize(frame.Camera, frame.Size[0], frame.Size[1]);
   const double rate = frame.Window->GetDesiredUpdateRate();
-  frame.Interactive = this->InteractiveUpdateRate > 0.0 && std::isfinite(rate) &&
-    rate >= this->InteractiveUpdateRate;
+  frame.Interactive =
+    this->InteractiveUpdateRate > 0.0 && std::isfinite(rate) && rate >= this->InteractiveUpdateRate;
   this->PlanGuardBand(frame);
   return true;
 }
@@ -454,7 +454,8 @@ void vtkStylizeStylePass::RenderTranslucentLayers(const vtkRenderState* s, const
   vtkOpenGLState* ostate = win->GetState();
   vtkStylizeShaderUtilities::EnsureScreenTexture(
     in.LayerTexture, win, frame.Size[0], frame.Size[1], GL_RGBA16F, false);
-  vtkOpenGLFramebufferObject* fbo = vtkStylizeStageRunner::BindFramebuffer(in.LayerFramebuffer, win);
+  vtkOpenGLFramebufferObject* fbo =
+    vtkStylizeStageRunner::BindFramebuffer(in.LayerFramebuffer, win);
   fbo->AddColorAttachment(0, in.LayerTexture);
   fbo->ActivateDrawBuffers(1);
   {
@@ -502,7 +503,8 @@ void vtkStylizeStylePass::RenderTranslucentLayers(const vtkRenderState* s, const
   ostate->vtkglViewport(frame.Origin[0], frame.Origin[1], frame.Size[0], frame.Size[1]);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglScissor(frame.Origin[0] + frame.Guard[0], frame.Origin[1] + frame.Guard[1],
-    frame.Size[0] - frame.Guard[0] - frame.Guard[2], frame.Size[1] - frame.Guard[1] - frame.Guard[3]);
+    frame.Size[0] - frame.Guard[0] - frame.Guard[2],
+    frame.Size[1] - frame.Guard[1] - frame.Guard[3]);
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglEnable(GL_BLEND);
@@ -546,9 +548,8 @@ void vtkStylizeStylePass::AddDefine(std::string& defines, bool on, const std::st
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeStylePass::RenderStage(int stage,
-  std::initializer_list<vtkTextureObject*> targets, int w, int h, const StageUniforms& uniforms,
-  int coverage)
+bool vtkStylizeStylePass::RenderStage(int stage, std::initializer_list<vtkTextureObject*> targets,
+  int w, int h, const StageUniforms& uniforms, int coverage)
 {
   // Surface-only stages skip the background by an early depth test against the G-buffer's
   // depth, where it has the stage's size.
@@ -560,8 +561,8 @@ bool vtkStylizeStylePass::RenderStage(int stage,
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, bool writeDepth,
-  const StageUniforms& uniforms, int margin)
+bool vtkStylizeStylePass::RenderStageToOutput(
+  const Frame& frame, int stage, bool writeDepth, const StageUniforms& uniforms, int margin)
 {
   vtkInternals& in = *this->Internals;
   vtkOpenGLState* ostate = frame.Window->GetState();
@@ -583,13 +584,14 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
   // viewport's. `scissor` clips a box of the stages' pixels to the viewport.
   const int* g = frame.Guard;
   const int view[4] = { g[0], g[1], frame.Size[0] - g[2], frame.Size[1] - g[3] };
-  auto scissor = [&](int x0, int y0, int x1, int y1) {
+  auto scissor = [&](int x0, int y0, int x1, int y1)
+  {
     x0 = std::max(x0, view[0]);
     y0 = std::max(y0, view[1]);
     x1 = std::min(x1, view[2]);
     y1 = std::min(y1, view[3]);
-    ostate->vtkglScissor(frame.Origin[0] + x0, frame.Origin[1] + y0, std::max(0, x1 - x0),
-      std::max(0, y1 - y0));
+    ostate->vtkglScissor(
+      frame.Origin[0] + x0, frame.Origin[1] + y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
   };
   ostate->vtkglViewport(frame.Origin[0], frame.Origin[1], frame.Size[0], frame.Size[1]);
   scissor(view[0], view[1], view[2], view[3]);
@@ -623,8 +625,8 @@ bool vtkStylizeStylePass::RenderStageToOutput(const Frame& frame, int stage, boo
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeStylePass::RenderBackgroundStrips(const Frame& frame, const int rect[4],
-  bool layer, const std::function<void(int, int, int, int)>& scissor)
+bool vtkStylizeStylePass::RenderBackgroundStrips(const Frame& frame, const int rect[4], bool layer,
+  const std::function<void(int, int, int, int)>& scissor)
 {
   vtkInternals& in = *this->Internals;
   vtkOpenGLState* ostate = frame.Window->GetState();
@@ -710,8 +712,8 @@ bool vtkStylizeStylePass::SceneRectangle(const Frame& frame, int margin, int rec
           std::max(actor->GetProperty()->GetPointSize(), actor->GetProperty()->GetLineWidth())));
     }
   }
-  const double pad = margin + 2.0 +
-    std::ceil(extent * std::max(frame.TileScale[0], frame.TileScale[1]));
+  const double pad =
+    margin + 2.0 + std::ceil(extent * std::max(frame.TileScale[0], frame.TileScale[1]));
   vtkMatrix4x4* m = frame.Camera->GetCompositeProjectionTransformMatrix(
     frame.Renderer->GetTiledAspectRatio(), -1.0, 1.0);
   double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, hi[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
@@ -721,8 +723,7 @@ bool vtkStylizeStylePass::SceneRectangle(const Frame& frame, int margin, int rec
       1.0 };
     double c[4];
     m->MultiplyPoint(x, c);
-    if (!(c[3] > 1e-6 * (std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2]))) ||
-      !std::isfinite(c[3]))
+    if (!(c[3] > 1e-6 * (std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2]))) || !std::isfinite(c[3]))
     {
       return false; // a corner behind the eye: the projection does not bound the scene
     }
@@ -742,8 +743,7 @@ bool vtkStylizeStylePass::SceneRectangle(const Frame& frame, int margin, int rec
       return false;
     }
     rect[a] = static_cast<int>(std::max(0.0, std::min(l, static_cast<double>(frame.Size[a]))));
-    rect[a + 2] =
-      static_cast<int>(std::max(0.0, std::min(h, static_cast<double>(frame.Size[a]))));
+    rect[a + 2] = static_cast<int>(std::max(0.0, std::min(h, static_cast<double>(frame.Size[a]))));
   }
   // Worth it only when the rectangle leaves a part of the viewport out.
   return rect[0] > 0 || rect[1] > 0 || rect[2] < frame.Size[0] || rect[3] < frame.Size[1];
@@ -770,7 +770,8 @@ void vtkStylizeStylePass::SetSceneOutputUniforms(vtkStylizeUniforms& u, vtkRende
   u.Int("stylizeDiscardBackground", ren->Transparent() || layer ? 1 : 0)
     .Int("stylizeTranslucentLayer", layer ? 1 : 0)
     .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0)
-    .Float4("stylizeImageBackground", bg[0], bg[1], bg[2], gbuffer->GetImageBackgroundApplied() ? 1 : 0)
+    .Float4(
+      "stylizeImageBackground", bg[0], bg[1], bg[2], gbuffer->GetImageBackgroundApplied() ? 1 : 0)
     .Float3("stylizeRendererBackground", ren->GetBackground()[0], ren->GetBackground()[1],
       ren->GetBackground()[2]);
   this->SetDepthMappingUniforms(u);
@@ -828,7 +829,8 @@ vtkTextureObject* vtkStylizeStylePass::EnsureTexture(int slot, int w, int h, int
 //------------------------------------------------------------------------------
 void vtkStylizeStylePass::FreeTexture(int slot)
 {
-  vtkStylizeShaderUtilities::FreeTexture(this->TextureSlot(slot), this->Internals->Runner->GetWindow());
+  vtkStylizeShaderUtilities::FreeTexture(
+    this->TextureSlot(slot), this->Internals->Runner->GetWindow());
 }
 
 //------------------------------------------------------------------------------
@@ -875,9 +877,10 @@ void vtkStylizeStylePass::SetFieldUniforms(vtkStylizeUniforms& u, const Frame& f
   // The projection onto the stages' pixels: the guard band's screen transform after the
   // camera's (row a becomes s_a row a + t_a row 3). (Not GetProjectionTransformMatrix(ren),
   // which returns a new matrix, transposed: read as this one, a tile's off-centre terms are lost.)
-  vtkMatrix4x4* projection = frame.Camera->GetProjectionTransformMatrix(
-    frame.Renderer->GetTiledAspectRatio(), -1.0, 1.0);
-  auto element = [&](int row, int column) {
+  vtkMatrix4x4* projection =
+    frame.Camera->GetProjectionTransformMatrix(frame.Renderer->GetTiledAspectRatio(), -1.0, 1.0);
+  auto element = [&](int row, int column)
+  {
     return frame.GuardTransform[row] * projection->GetElement(row, column) +
       frame.GuardTransform[row + 2] * projection->GetElement(3, column);
   };
@@ -890,4 +893,3 @@ void vtkStylizeStylePass::SetFieldUniforms(vtkStylizeUniforms& u, const Frame& f
     .Float2("fieldProjOffset", element(0, 3), element(1, 3));
   this->SetDepthMappingUniforms(u);
 }
-

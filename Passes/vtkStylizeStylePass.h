@@ -231,8 +231,8 @@ protected:
    * (declarations and `mainCall`'s function), assembled after the shared GLSL; `mainCall`, the
    * statement main() runs, e.g. "  comicMain();\n"; `stages`, in index order.
    */
-  void SetStages(
-    const std::string& source, const std::string& mainCall, const std::vector<vtkStylizeStage>& stages);
+  void SetStages(const std::string& source, const std::string& mainCall,
+    const std::vector<vtkStylizeStage>& stages);
 #endif
 
   /** The frame being rendered, as the stages see it (filled by BeginFrame()). */
@@ -305,7 +305,10 @@ protected:
    * style's ReferenceHeight); 0, the default: one point is one window pixel, times the tile
    * scale of a magnified screenshot.
    */
-  virtual double GetPointReferenceHeight() { return 0.0; }
+  virtual double GetPointReferenceHeight()
+  {
+    return 0.0;
+  }
 
   /** Pixels per point in this frame's full (possibly tiled, magnified) image. */
   double PointSize(const Frame& frame);
@@ -326,14 +329,20 @@ protected:
    * its neighbours around it (Frame::Guard). 0 (the default): the style reads no neighbours, or
    * plans its own margin (the G-buffer render at a custom resolution, as pixel art's blocks).
    */
-  virtual double GetReach(const Frame&) { return 0.0; }
+  virtual double GetReach(const Frame&)
+  {
+    return 0.0;
+  }
 
   /**
    * The guard band's lower-left corner falls on a multiple of this many pixels of the full
    * image, so that a stage computed on a coarser grid (every k-th pixel) uses the grid of a
    * render at the full size. Default 1.
    */
-  virtual int GetGuardAlignment(const Frame&) { return 1; }
+  virtual int GetGuardAlignment(const Frame&)
+  {
+    return 1;
+  }
 
   /**
    * Renders the scene into the G-buffer (from the geometry, or from the delegate's image when a
@@ -388,8 +397,8 @@ protected:
    * there itself with that cheap program and runs the stage inside the rectangle only.
    * < 0: the stage runs over the whole viewport.
    */
-  bool RenderStageToOutput(const Frame& frame, int stage, bool writeDepth,
-    const StageUniforms& uniforms, int margin = -1);
+  bool RenderStageToOutput(
+    const Frame& frame, int stage, bool writeDepth, const StageUniforms& uniforms, int margin = -1);
 
   /**
    * The viewport's pixels where the scene can be: the screen rectangle of the visible props'
@@ -441,19 +450,19 @@ protected:
    */
   struct FieldSettings
   {
-    int Neighbors = 8;              ///< 2, 4 or 8
-    double NeighborSpacing = 16.0;  ///< points at the focal distance
-    double MaxStride = 32.0;        ///< points
-    double ObjectScale = 0.01;      ///< share of the scene's diagonal
+    int Neighbors = 8;                                           ///< 2, 4 or 8
+    double NeighborSpacing = 16.0;                               ///< points at the focal distance
+    double MaxStride = 32.0;                                     ///< points
+    double ObjectScale = 0.01;                                   ///< share of the scene's diagonal
     double SceneBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 }; ///< invalid: the props'
     double PlanarTolerance = 1.0e-3;
     double UmbilicTolerance = 0.05;
-    double SmoothingRadius = 16.0;  ///< points
+    double SmoothingRadius = 16.0; ///< points
     int SmoothingIterations = 2;
-    double FillRadius = 16.0;       ///< points; 0: no fill
-    double FallbackAngle = 45.0;    ///< degrees
-    int Direction = 1;              ///< 0 smaller, 1 larger |curvature|, 2 their bisector
-    bool Model = false;             ///< the G-buffer's DIRECTION channel where it is defined
+    double FillRadius = 16.0;    ///< points; 0: no fill
+    double FallbackAngle = 45.0; ///< degrees
+    int Direction = 1;           ///< 0 smaller, 1 larger |curvature|, 2 their bisector
+    bool Model = false;          ///< the G-buffer's DIRECTION channel where it is defined
   };
 
   /**
@@ -466,7 +475,10 @@ protected:
   virtual void ReleaseStyleResources(vtkWindow*) {}
 
   /** Bytes of the textures a style holds itself (its direction field), for GetTextureBytes(). */
-  virtual vtkIdType GetStyleTextureBytes() { return 0; }
+  virtual vtkIdType GetStyleTextureBytes()
+  {
+    return 0;
+  }
 
   /**
    * The style's pipeline for one scene (the opaque scene, or a translucent layer): RenderScene(),

@@ -167,7 +167,8 @@ CLI::Validator NumberIn(double lo, double hi, bool integer)
     ? "[" + FormatNumber(lo) + ", " + FormatNumber(hi) + "]"
     : std::string("finite");
   return CLI::Validator(
-    [=](std::string& text) -> std::string {
+    [=](std::string& text) -> std::string
+    {
       double v = 0.0;
       long i = 0;
       if (integer ? !ParseInt(text, i) : !ParseDouble(text, v))
@@ -192,7 +193,8 @@ CLI::Validator NumberIn(double lo, double hi, bool integer)
 CLI::Validator NumbersIn(int count, double lo, double hi, const std::string& metavar)
 {
   return CLI::Validator(
-    [=](std::string& text) -> std::string {
+    [=](std::string& text) -> std::string
+    {
       const auto parts = Split(text, ',');
       double v = 0.0;
       if (static_cast<int>(parts.size()) != count)
@@ -213,9 +215,11 @@ CLI::Validator NumbersIn(int count, double lo, double hi, const std::string& met
 }
 
 const CLI::Validator Color(
-  [](std::string& text) -> std::string {
-    return ParseColor(text) ? std::string()
-                            : "invalid colour " + Quote(text) + ": expected #rrggbb or R,G,B in [0, 1]";
+  [](std::string& text) -> std::string
+  {
+    return ParseColor(text)
+      ? std::string()
+      : "invalid colour " + Quote(text) + ": expected #rrggbb or R,G,B in [0, 1]";
   },
   "R,G,B in [0, 1] or #rrggbb");
 
@@ -228,7 +232,8 @@ CLI::Validator OneOf(const std::vector<std::string>& keywords)
     list += (list.empty() ? "" : ", ") + k;
   }
   return CLI::Validator(
-    [=](std::string& text) -> std::string {
+    [=](std::string& text) -> std::string
+    {
       const std::string l = Lower(text);
       if (std::find(keywords.begin(), keywords.end(), l) == keywords.end())
       {
@@ -305,8 +310,8 @@ public:
   }
 
   /** An option that takes a value. */
-  CLI::Option* Value(const std::string& name, const std::string& metavar,
-    const std::string& help, const std::string& group, Action action)
+  CLI::Option* Value(const std::string& name, const std::string& metavar, const std::string& help,
+    const std::string& group, Action action)
   {
     return this->Add(name, metavar, help, group, std::move(action));
   }
@@ -328,7 +333,8 @@ public:
     // An option two styles share checks its range once (the styles' ranges are the same).
     const bool shared = this->Entries.count(name) != 0;
     CLI::Option* o = this->PassOption<Pass>(name, metavar, help, FormatValue((d->*get)()),
-      [set](Pass* p, const std::string& v) {
+      [set](Pass* p, const std::string& v)
+      {
         double x = 0.0;
         long i = 0;
         if (std::is_integral<T>::value && ParseInt(v, i))
@@ -359,7 +365,8 @@ public:
   /** An enumerated setting of a pass: case-insensitive keywords and their values. */
   template <class Pass>
   void Keywords(const std::string& name, const std::string& metavar, const std::string& help,
-    int (Pass::*get)(), void (Pass::*set)(int), const std::vector<std::pair<std::string, int>>& words)
+    int (Pass::*get)(), void (Pass::*set)(int),
+    const std::vector<std::pair<std::string, int>>& words)
   {
     std::vector<std::string> keys;
     std::string current;
@@ -372,8 +379,9 @@ public:
         current = w.first;
       }
     }
-    CLI::Option* o = this->PassOption<Pass>(
-      name, metavar, help, current, [set, words](Pass* p, const std::string& v) {
+    CLI::Option* o = this->PassOption<Pass>(name, metavar, help, current,
+      [set, words](Pass* p, const std::string& v)
+      {
         for (const auto& w : words)
         {
           if (w.first == v)
@@ -401,9 +409,9 @@ public:
     const double* defaults, void (Pass::*set)(double, double, double))
   {
     CLI::Option* o = this->PassOption<Pass>(name, metavar, help,
-      FormatNumber(defaults[0]) + "," + FormatNumber(defaults[1]) + "," +
-        FormatNumber(defaults[2]),
-      [set](Pass* p, const std::string& v) {
+      FormatNumber(defaults[0]) + "," + FormatNumber(defaults[1]) + "," + FormatNumber(defaults[2]),
+      [set](Pass* p, const std::string& v)
+      {
         const auto c = *ParseColor(v);
         (p->*set)(c[0], c[1], c[2]);
       });
@@ -453,8 +461,8 @@ public:
       {
         styles += (styles.empty() ? "" : "|") + st;
       }
-      opt.Warnings.push_back(e.first + " applies to --style " + styles + ", not " + opt.Style +
-        " (ignored)");
+      opt.Warnings.push_back(
+        e.first + " applies to --style " + styles + ", not " + opt.Style + " (ignored)");
     }
   }
 
@@ -497,9 +505,8 @@ private:
     std::function<void(Pass*, const std::string&)> set)
   {
     const std::string text = help + (defaults.empty() ? "" : " (default: " + defaults + ")");
-    Action action = [set](Options& opt, const std::string& v) {
-      opt.Passes.Of<Pass>().push_back([set, v](Pass* p) { set(p, v); });
-    };
+    Action action = [set](Options& opt, const std::string& v)
+    { opt.Passes.Of<Pass>().push_back([set, v](Pass* p) { set(p, v); }); };
     auto found = this->Entries.find(name);
     if (found == this->Entries.end())
     {
@@ -543,18 +550,19 @@ void AddPassSettings(OptionTable& t)
 #define STYLIZE_FLAG(Class, Setting, Value, Option, Help)                                          \
   t.Flag<Class>(Option, Help, &Class::Set##Setting, &Class::Get##Setting, Value);
 #define STYLIZE_KEYWORDS(Class, Setting, Option, Metavar, Help, ...)                               \
-  t.Keywords<Class>(Option, Metavar, Help, &Class::Get##Setting, &Class::Set##Setting,            \
-    { __VA_ARGS__ });
+  t.Keywords<Class>(                                                                               \
+    Option, Metavar, Help, &Class::Get##Setting, &Class::Set##Setting, { __VA_ARGS__ });
 #define STYLIZE_VECTOR(Class, Setting, Type, Count, Min, Max, Option, Metavar, Help)               \
   {                                                                                                \
-    const Type* d = Defaults<Class>()->Get##Setting();                                            \
+    const Type* d = Defaults<Class>()->Get##Setting();                                             \
     std::string defaults;                                                                          \
     for (int i = 0; i < Count; ++i)                                                                \
     {                                                                                              \
-      defaults += (i ? "," : "") + FormatNumber(d[i]);                                            \
+      defaults += (i ? "," : "") + FormatNumber(d[i]);                                             \
     }                                                                                              \
     t.Vector<Class>(Option, Metavar, Help, Count, Min, Max, defaults,                              \
-      [](Class* p, const std::vector<double>& v) {                                                 \
+      [](Class* p, const std::vector<double>& v)                                                   \
+      {                                                                                            \
         CallWith([p](auto... x) { p->Set##Setting(static_cast<Type>(x)...); }, v,                  \
           std::make_index_sequence<Count>());                                                      \
       });                                                                                          \
@@ -590,35 +598,39 @@ void AddProgramOptions(OptionTable& t)
   {
     styles.push_back(s.Name);
   }
-  t.Value("--style", "NAME", "style: " + StyleNames("|") + " (default: " + o.Style + ")",
-     general, [](Options& opt, const std::string& v) { opt.Style = v; })
+  t.Value("--style", "NAME", "style: " + StyleNames("|") + " (default: " + o.Style + ")", general,
+     [](Options& opt, const std::string& v) { opt.Style = v; })
     ->check(OneOf(styles));
   t.Value("--output", "FILE",
      "output file: .png (image), .svg or .pdf (vector figure: outlines, dots, hatch lines, art "
      "pixels and text as vector shapes); with --orbit .png (numbered frames), .gif or .mp4 "
-     "(default: " + o.Output + ")",
+     "(default: " +
+       o.Output + ")",
      general, [](Options& opt, const std::string& v) { opt.Output = v; })
     ->check(CLI::Validator(
-      [](std::string& v) -> std::string {
+      [](std::string& v) -> std::string
+      {
         const std::string ext = v.size() >= 4 ? Lower(v.substr(v.size() - 4)) : std::string();
-        const bool known = ext == ".png" || ext == ".svg" || ext == ".pdf" || ext == ".gif" ||
-          ext == ".mp4";
+        const bool known =
+          ext == ".png" || ext == ".svg" || ext == ".pdf" || ext == ".gif" || ext == ".mp4";
         return known ? std::string()
                      : "invalid value " + Quote(v) +
             ": the file name must end with .png, .svg, .pdf, .gif or .mp4";
       },
       ""));
   t.Value("--size", "WxH",
-     "image size in pixels, W and H in [1, " + std::to_string(MaxImageSize) + "] (default: " +
-       std::to_string(o.Width) + "x" + std::to_string(o.Height) + ")",
+     "image size in pixels, W and H in [1, " + std::to_string(MaxImageSize) +
+       "] (default: " + std::to_string(o.Width) + "x" + std::to_string(o.Height) + ")",
      general,
-     [](Options& opt, const std::string& v) {
+     [](Options& opt, const std::string& v)
+     {
        const auto parts = Split(Lower(v), 'x');
        opt.Width = std::atoi(parts[0].c_str());
        opt.Height = std::atoi(parts[1].c_str());
      })
     ->check(CLI::Validator(
-      [](std::string& v) -> std::string {
+      [](std::string& v) -> std::string
+      {
         const auto parts = Split(Lower(v), 'x');
         long w = 0, h = 0;
         if (parts.size() != 2 || !ParseInt(parts[0], w) || !ParseInt(parts[1], h) ||
@@ -645,7 +657,8 @@ void AddProgramOptions(OptionTable& t)
   t.Value("--azimuth", "DEG",
      "camera azimuth in degrees, about the view-up axis (default: " + FormatNumber(SceneAzimuth) +
        ", a three-quarter view)",
-     general, [](Options& opt, const std::string& v) { opt.Azimuth = std::strtod(v.c_str(), nullptr); })
+     general,
+     [](Options& opt, const std::string& v) { opt.Azimuth = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(-MaxAngle, MaxAngle, false));
   t.Value("--elevation", "DEG",
      "camera elevation in degrees (default: " + FormatNumber(SceneElevation) +
@@ -662,22 +675,21 @@ void AddProgramOptions(OptionTable& t)
      general, [](Options& opt, const std::string& v) { opt.Orbit = std::atoi(v.c_str()); })
     ->check(NumberIn(1, MaxOrbitFrames, true));
   t.Value("--orbit-degrees", "DEG",
-     "the orbit's azimuth sweep in degrees, negative turns the other way (default: 360)",
-     general,
+     "the orbit's azimuth sweep in degrees, negative turns the other way (default: 360)", general,
      [](Options& opt, const std::string& v) { opt.OrbitDegrees = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(-3600, 3600, false));
   t.Value("--orbit-elevation", "DEG",
      "the orbit's elevation in degrees: the camera is raised by it before the orbit (default: 0)",
      general,
-     [](Options& opt, const std::string& v) { opt.OrbitElevation = std::strtod(v.c_str(), nullptr); })
+     [](Options& opt, const std::string& v)
+     { opt.OrbitElevation = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(-89, 89, false));
   t.Value("--fps", "N", "frames per second of the .gif or .mp4 animation (default: 25)", general,
      [](Options& opt, const std::string& v) { opt.FramesPerSecond = std::atoi(v.c_str()); })
     ->check(NumberIn(1, 100, true));
   t.Value("--zoom", "F",
-     "camera zoom factor, after the scene is fitted to fill " +
-       FormatNumber(100 * FrameFill) + "% of the image's width or height (default: " +
-       FormatNumber(o.Zoom) + ")",
+     "camera zoom factor, after the scene is fitted to fill " + FormatNumber(100 * FrameFill) +
+       "% of the image's width or height (default: " + FormatNumber(o.Zoom) + ")",
      general,
      [](Options& opt, const std::string& v) { opt.Zoom = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(MinZoom, MaxZoom, false));
@@ -685,7 +697,8 @@ void AddProgramOptions(OptionTable& t)
     [](Options& opt, const std::string&) { opt.Parallel = true; });
   t.Value("--background", "R,G,B", "background colour, each component in [0, 1] (default: 1,1,1)",
      general,
-     [](Options& opt, const std::string& v) {
+     [](Options& opt, const std::string& v)
+     {
        const auto c = ParseNumbers(v);
        std::copy(c.begin(), c.end(), opt.Background);
      })
@@ -699,7 +712,8 @@ void AddProgramOptions(OptionTable& t)
      "time step to draw, an index from 0 into the file's time steps (Exodus, EnSight, "
      "OpenFOAM, .pvd) (default: 0, the first)",
      general,
-     [](Options& opt, const std::string& v) {
+     [](Options& opt, const std::string& v)
+     {
        opt.TimeStep = std::atoi(v.c_str());
        opt.TimeStepGiven = true;
      })
@@ -708,15 +722,14 @@ void AddProgramOptions(OptionTable& t)
      "3D image data only: contour value, any finite number (default: Otsu's threshold of the "
      "point scalars, the value that best separates their two main populations: over a "
      "256-bin histogram, the split of largest between-class variance; printed as a note)",
-     general, [](Options& opt, const std::string& v) { opt.IsoValue = std::strtod(v.c_str(), nullptr); })
+     general,
+     [](Options& opt, const std::string& v) { opt.IsoValue = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(-HUGE_VAL, HUGE_VAL, false));
   t.Value("--color-by", "ARRAY",
      "colour by this point (or cell) array (default: the active point scalars, if any)", general,
      [](Options& opt, const std::string& v) { opt.ColorBy = v; })
-    ->check(CLI::Validator(
-      [](std::string& v) {
-        return v.empty() ? std::string("expected an array name") : std::string();
-      },
+    ->check(CLI::Validator([](std::string& v)
+      { return v.empty() ? std::string("expected an array name") : std::string(); },
       ""));
   t.Flag("--no-scalars", "ignore all arrays: one solid colour (default: off)", general,
     [](Options& opt, const std::string&) { opt.NoScalars = true; });
@@ -733,10 +746,12 @@ void AddProgramOptions(OptionTable& t)
      "the most memory reading and preparing the input may take, in MiB; an input that needs "
      "more is refused with one line (default: 3/4 of the machine's memory; 0: no limit; "
      "at least 64 otherwise)",
-     general, [](Options& opt, const std::string& v) { opt.MemoryLimit = std::strtod(v.c_str(), nullptr); })
+     general,
+     [](Options& opt, const std::string& v) { opt.MemoryLimit = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(0, 1e9, false))
     ->check(CLI::Validator(
-      [](std::string& v) {
+      [](std::string& v)
+      {
         const double mib = std::strtod(v.c_str(), nullptr);
         return mib > 0.0 && mib < 64.0 ? std::string("at least 64 MiB, or 0 for no limit")
                                        : std::string();
@@ -757,9 +772,8 @@ void AddProgramOptions(OptionTable& t)
      "lighting model: " + models[0] + "|" + models[1] + "|" + models[2] +
        " (default: the style's own: comic for comic, pixelart for pixel, standard otherwise)",
      "Lighting",
-     [](Options& opt, const std::string& v) {
-       opt.LightingModel = vtkStylizeLightingPass::GetModelFromName(v.c_str());
-     })
+     [](Options& opt, const std::string& v)
+     { opt.LightingModel = vtkStylizeLightingPass::GetModelFromName(v.c_str()); })
     ->check(OneOf(models));
 
   // --palette: the palettes, and two shortcuts that also set the levels.
@@ -782,7 +796,8 @@ void AddProgramOptions(OptionTable& t)
      "pixel: levels per channel, grays, black and white, 4 grays, the 16-colour DawnBringer "
      "palette, the --colors list, or the data's colormap (default: levels)",
      GroupOf(static_cast<P*>(nullptr)).Group,
-     [palettes](Options& opt, const std::string& v) {
+     [palettes](Options& opt, const std::string& v)
+     {
        for (const auto& p : palettes)
        {
          if (p.first == v)
@@ -796,26 +811,29 @@ void AddProgramOptions(OptionTable& t)
      "pixel: the custom palette: colours (R,G,B or #rrggbb) separated by spaces or ';', at most "
      "256; selects --palette custom",
      GroupOf(static_cast<P*>(nullptr)).Group,
-     [](Options& opt, const std::string& v) {
+     [](Options& opt, const std::string& v)
+     {
        std::string error;
        const auto colours = ParseColorList(v, error);
-       opt.Passes.Of<P>().push_back([colours](P* p) {
-         p->RemoveAllPaletteColors();
-         for (const auto& c : colours)
+       opt.Passes.Of<P>().push_back(
+         [colours](P* p)
          {
-           p->AddPaletteColor(c[0], c[1], c[2]);
-         }
-         p->SetPalette(P::CUSTOM);
-       });
+           p->RemoveAllPaletteColors();
+           for (const auto& c : colours)
+           {
+             p->AddPaletteColor(c[0], c[1], c[2]);
+           }
+           p->SetPalette(P::CUSTOM);
+         });
      })
     ->check(CLI::Validator(
-      [](std::string& v) {
+      [](std::string& v)
+      {
         std::string error;
         ParseColorList(v, error);
         return error;
       },
       ""));
-
 }
 
 /** What some generated options also do beyond setting their pass. */
@@ -830,10 +848,7 @@ void AddOptionEffects(OptionTable& t)
 class Formatter : public CLI::Formatter
 {
 public:
-  Formatter()
-  {
-    this->column_width(30);
-  }
+  Formatter() { this->column_width(30); }
   std::string make_option_desc(const CLI::Option* opt) const override
   {
     std::istringstream words(CLI::Formatter::make_option_desc(opt));
@@ -928,7 +943,8 @@ const std::vector<StyleSpec>& Styles()
   static const std::vector<StyleSpec> styles = {
     { "none", "no style pass: the lighting model only", -1,
       [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass* gbuffer,
-        const Options&) -> vtkSmartPointer<vtkRenderPass> {
+        const Options&) -> vtkSmartPointer<vtkRenderPass>
+      {
         if (gbuffer)
         {
           return gbuffer;
@@ -938,24 +954,21 @@ const std::vector<StyleSpec>& Styles()
     { "comic", "black-and-white comic: edges, halftone dots, hatching (vtkComicPass)",
       vtkStylizeLightingPass::COMIC,
       [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
-        const Options& opt) -> vtkSmartPointer<vtkRenderPass> {
-        return MakeStyle<vtkComicPass>(lighting, opt);
-      } },
+        const Options& opt) -> vtkSmartPointer<vtkRenderPass>
+      { return MakeStyle<vtkComicPass>(lighting, opt); } },
     { "pixel",
       "pixel art: pixelation, Canny outlines, 8x8 ordered dither to a palette (vtkPixelArtPass)",
       vtkStylizeLightingPass::PIXEL_ART,
       [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
-        const Options& opt) -> vtkSmartPointer<vtkRenderPass> {
-        return MakeStyle<vtkPixelArtPass>(lighting, opt);
-      } },
+        const Options& opt) -> vtkSmartPointer<vtkRenderPass>
+      { return MakeStyle<vtkPixelArtPass>(lighting, opt); } },
     { "sketch",
       "pencil sketch: principal-direction strokes (line integral convolution of solid noise), "
       "pencil tone (vtkSketchPass)",
       vtkStylizeLightingPass::STANDARD,
       [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
-        const Options& opt) -> vtkSmartPointer<vtkRenderPass> {
-        return MakeStyle<vtkSketchPass>(lighting, opt);
-      } },
+        const Options& opt) -> vtkSmartPointer<vtkRenderPass>
+      { return MakeStyle<vtkSketchPass>(lighting, opt); } },
   };
   return styles;
 }
@@ -1015,8 +1028,8 @@ Options ParseCommandLine(int argc, char* argv[])
     return opt;
   }
   cl.Table.Apply(opt);
-  opt.AnchorGiven = cl.App.count("--anchor") + cl.App.count("--dither-anchor") +
-      cl.App.count("--noise-space") > 0;
+  opt.AnchorGiven =
+    cl.App.count("--anchor") + cl.App.count("--dither-anchor") + cl.App.count("--noise-space") > 0;
   opt.NoiseGiven = cl.App.count("--noise") > 0;
   {
     const std::string ext = Lower(opt.Output.substr(opt.Output.size() - 4));

@@ -64,7 +64,6 @@ struct PassSettings
       apply(pass);
     }
   }
-
 };
 
 struct Options
@@ -83,12 +82,12 @@ struct Options
   PassSettings Passes;
   bool ModelDirections = false; // --direction-source model: compute the principal directions
   int Magnify = 1;
-  int Orbit = 0;                // --orbit N: frames of an orbit animation; 0: a still
-  double OrbitDegrees = 360.0;  // --orbit-degrees
-  double OrbitElevation = 0.0;  // --orbit-elevation
-  int FramesPerSecond = 25;     // --fps
-  bool AnchorGiven = false;     // --anchor, --dither-anchor or --noise-space was given
-  bool NoiseGiven = false;      // --noise was given
+  int Orbit = 0;               // --orbit N: frames of an orbit animation; 0: a still
+  double OrbitDegrees = 360.0; // --orbit-degrees
+  double OrbitElevation = 0.0; // --orbit-elevation
+  int FramesPerSecond = 25;    // --fps
+  bool AnchorGiven = false;    // --anchor, --dither-anchor or --noise-space was given
+  bool NoiseGiven = false;     // --noise was given
   int TimeStep = 0;
   bool TimeStepGiven = false; // --time-step was given (a warning when there is no INPUT)
   bool GBuffer = false;

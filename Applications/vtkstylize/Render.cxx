@@ -9,12 +9,11 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
-#include "vtkStylizeAtomicFile.h"
-#include "vtkStylizeFigureWriter.h"
-#include "vtkUnsignedCharArray.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
+#include "vtkStylizeAtomicFile.h"
+#include "vtkStylizeFigureWriter.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeStylePass.h"
 #include "vtkUnsignedCharArray.h"
@@ -138,7 +137,8 @@ bool DrewSomething(vtkRenderWindow* window)
       }
     }
     auto* style = vtkStylizeStylePass::SafeDownCast(ren->GetPass());
-    if (style && style->GetGBufferPass()->DownloadChannel(vtkStylizeGBufferPass::DEPTH_BUFFER, depth))
+    if (style &&
+      style->GetGBufferPass()->DownloadChannel(vtkStylizeGBufferPass::DEPTH_BUFFER, depth))
     {
       styled = true;
       const float* z = depth->GetPointer(0);
@@ -192,9 +192,8 @@ vtkSmartPointer<vtkWindowToImageFilter> GrabImage(vtkRenderWindow* window, const
  * The file's bytes: a vector figure drawn from the style's layers (.svg, .pdf), else the PNG of
  * the grabbed image. `what` starts the failure message.
  */
-vtkSmartPointer<vtkUnsignedCharArray> Encode(vtkRenderWindow* window,
-  vtkWindowToImageFilter* grab, const Options& opt, const std::string& output,
-  const std::string& what)
+vtkSmartPointer<vtkUnsignedCharArray> Encode(vtkRenderWindow* window, vtkWindowToImageFilter* grab,
+  const Options& opt, const std::string& output, const std::string& what)
 {
   const std::string ext = Lower(output.substr(output.size() - 4));
   if (ext == ".svg" || ext == ".pdf")
@@ -230,8 +229,8 @@ vtkSmartPointer<vtkUnsignedCharArray> Encode(vtkRenderWindow* window,
 }
 }
 
-bool RenderAndWrite(
-  vtkRenderWindow* window, const Options& opt, const std::string& output, const std::string& emptyFailure)
+bool RenderAndWrite(vtkRenderWindow* window, const Options& opt, const std::string& output,
+  const std::string& emptyFailure)
 {
   ClearVTKErrors();
   window->Render();

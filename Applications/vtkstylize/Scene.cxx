@@ -4,25 +4,25 @@
 #include "vtkstylizeCommon.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
-#include "vtkActorCollection.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkComicPass.h"
-#include "vtkSketchPass.h"
-#include "vtkMatrix4x4.h"
-#include "vtkPoints.h"
 #include "vtkCoordinate.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkScalarBarActor.h"
+#include "vtkSketchPass.h"
 #include "vtkSmartPointer.h"
 #include "vtkStylizeSceneLights.h"
 #include "vtkTextActor.h"
@@ -145,7 +145,6 @@ Coloring ChooseColoring(const Part& part, const Options& opt, bool builtIn)
   return c;
 }
 
-
 void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations& info,
   const std::map<std::string, vtkSmartPointer<vtkColorTransferFunction>>& maps)
 {
@@ -222,8 +221,7 @@ using Ranges = std::map<std::string, std::array<double, 2>>;
  * are reported, in info.Warnings. Returns whether any part is coloured by an array.
  */
 bool ChooseColorings(const std::vector<Part>& parts, const Options& opt, bool builtIn,
-  SceneAnnotations& info, const std::string& what, std::vector<Coloring>& colorings,
-  Ranges& ranges)
+  SceneAnnotations& info, const std::string& what, std::vector<Coloring>& colorings, Ranges& ranges)
 {
   bool anyColored = false;
   for (const Part& p : parts)

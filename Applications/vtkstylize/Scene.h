@@ -19,7 +19,7 @@ namespace vtkstylize
 struct SceneAnnotations
 {
   std::string Title;
-  std::string ScalarBarArray; // array shown by the scalar bar, empty for none
+  std::string ScalarBarArray;        // array shown by the scalar bar, empty for none
   std::vector<std::string> Warnings; // what the caller prints after the image is written
 };
 

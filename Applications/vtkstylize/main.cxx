@@ -25,9 +25,9 @@
 #include "vtkstylizeCommon.h"
 #include "vtkstylizeInput.h"
 
+#include "vtkCamera.h"
 #include "vtkLogger.h"
 #include "vtkMath.h"
-#include "vtkCamera.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
@@ -130,14 +130,16 @@ constexpr int MinimumAnnotatedSide = 16;
 void ReportSanitizersTo(int fd)
 {
   dl_iterate_phdr(
-    [](dl_phdr_info* info, size_t, void* data) -> int {
+    [](dl_phdr_info* info, size_t, void* data) -> int
+    {
       const std::string name = info->dlpi_name ? info->dlpi_name : "";
       if (name.find("libasan") != std::string::npos || name.find("libubsan") != std::string::npos)
       {
         if (void* library = ::dlopen(name.c_str(), RTLD_LAZY | RTLD_NOLOAD))
         {
           using SetReportFd = void (*)(void*);
-          if (auto set = reinterpret_cast<SetReportFd>(::dlsym(library, "__sanitizer_set_report_fd")))
+          if (auto set =
+                reinterpret_cast<SetReportFd>(::dlsym(library, "__sanitizer_set_report_fd")))
           {
             set(reinterpret_cast<void*>(static_cast<std::intptr_t>(*static_cast<int*>(data))));
           }
@@ -174,7 +176,8 @@ bool RenderOrbit(vtkRenderWindow* window, vtkRenderer* ren, const Options& opt,
   const std::string ext = Lower(opt.Output.substr(opt.Output.size() - 4));
   const std::string stem = opt.Output.substr(0, opt.Output.size() - 4);
   const int digits = std::max(4, static_cast<int>(std::to_string(opt.Orbit - 1).size()));
-  auto frameName = [&](int f) {
+  auto frameName = [&](int f)
+  {
     std::string number = std::to_string(f);
     return stem + "-" + std::string(digits - number.size(), '0') + number + ".png";
   };
@@ -198,8 +201,8 @@ bool RenderOrbit(vtkRenderWindow* window, vtkRenderer* ren, const Options& opt,
     {
       pattern += ch == '%' ? std::string("%%") : std::string(1, ch);
     }
-    EncodeAnimation(pattern + "-%0" + std::to_string(digits) + "d.png", opt.FramesPerSecond,
-      opt.Output);
+    EncodeAnimation(
+      pattern + "-%0" + std::to_string(digits) + "d.png", opt.FramesPerSecond, opt.Output);
     written.push_back(opt.Output);
   }
   if (style && !opt.AnchorGiven)
@@ -265,13 +268,13 @@ void WarnIgnoredOptions(
   if (opt.IsoValue && !contoured)
   {
     opt.Warnings.push_back("--iso applies to 3D image data with point scalars (.vti, .pvti, "
-      "legacy structured points), which the " + std::string(builtIn ? "built-in scene" : "input " + what) +
-      " does not contain (ignored)");
+                           "legacy structured points), which the " +
+      std::string(builtIn ? "built-in scene" : "input " + what) + " does not contain (ignored)");
   }
   if (opt.TimeStepGiven && builtIn)
   {
     opt.Warnings.push_back("--time-step applies to an INPUT file with time steps, not to the "
-      "built-in scene (ignored)");
+                           "built-in scene (ignored)");
   }
   if (!opt.ColorBy.empty() && opt.NoScalars)
   {
@@ -299,7 +302,8 @@ std::string NothingDrawnWarning(const Options& opt, const double bounds[6], cons
   }
   return "the picture shows nothing but the background: nothing of " + what +
     " covers a pixel of the " + std::to_string(opt.Width) + "x" + std::to_string(opt.Height) +
-    " window (its bounds: " + box + "; a stray far point, a zero spacing or cells without "
+    " window (its bounds: " + box +
+    "; a stray far point, a zero spacing or cells without "
     "area can leave the rest below a pixel)";
 }
 
@@ -354,8 +358,8 @@ int Run(int argc, char* argv[])
   const bool builtIn = opt.Input.empty();
   if (!builtIn && !IsSupportedInput(opt.Input))
   {
-    UsageError("unsupported file type " + Quote(opt.Input) + " (supported: " +
-      SupportedExtensions() + ")");
+    UsageError(
+      "unsupported file type " + Quote(opt.Input) + " (supported: " + SupportedExtensions() + ")");
   }
   CheckOutputPath(opt.Output);
 
@@ -413,7 +417,8 @@ int Run(int argc, char* argv[])
   // A picture of the background alone: an error when the data has no extent (no framing can
   // show it), else a warning (a stray far point, a zero spacing, cells without area or an image
   // one pixel high can leave everything below a pixel).
-  const bool extentless = bounds[0] == bounds[1] && bounds[2] == bounds[3] && bounds[4] == bounds[5];
+  const bool extentless =
+    bounds[0] == bounds[1] && bounds[2] == bounds[3] && bounds[4] == bounds[5];
   const std::string empty = "the picture would show nothing but the background: " + what +
     " has no extent (all its points lie at " + FormatNumber(bounds[0]) + ", " +
     FormatNumber(bounds[2]) + ", " + FormatNumber(bounds[4]) + ")";

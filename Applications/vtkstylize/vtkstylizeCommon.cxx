@@ -70,8 +70,8 @@ void SetMemoryLimit(double mib)
   return;
 #endif
   const double bytes = mib * 1024.0 * 1024.0;
-  rlim_t wanted = bytes >= static_cast<double>(RLIM_INFINITY) ? RLIM_INFINITY
-                                                              : static_cast<rlim_t>(bytes);
+  rlim_t wanted =
+    bytes >= static_cast<double>(RLIM_INFINITY) ? RLIM_INFINITY : static_cast<rlim_t>(bytes);
   if (limit.rlim_max != RLIM_INFINITY && wanted > limit.rlim_max)
   {
     wanted = limit.rlim_max;

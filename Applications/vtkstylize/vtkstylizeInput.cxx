@@ -163,8 +163,8 @@ vtkSmartPointer<vtkPolyData> ToSurface(vtkDataSet* input, const std::optional<do
     const std::string name = scalars->GetName() ? scalars->GetName() : "scalars";
     if (!(range[0] <= range[1]))
     {
-      Fail(what + ": " + Quote(name) + " holds no finite value (NaN or infinity everywhere): " +
-        "there is nothing to contour");
+      Fail(what + ": " + Quote(name) +
+        " holds no finite value (NaN or infinity everywhere): " + "there is nothing to contour");
     }
     double iso = 0.5 * (range[0] + range[1]);
     if (isoValue)
@@ -221,8 +221,9 @@ void CollectParts(vtkDataObject* data, const std::optional<double>& isoValue,
 {
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
   {
-    vtkStylizeReader::ForEachBlock(
-      composite, [&](vtkCompositeDataIterator* it, const std::string& name) {
+    vtkStylizeReader::ForEachBlock(composite,
+      [&](vtkCompositeDataIterator* it, const std::string& name)
+      {
         vtkDataObject* leaf = it->GetCurrentDataObject();
         if (vtkCompositeDataSet::SafeDownCast(leaf))
         {
@@ -244,8 +245,8 @@ void CollectParts(vtkDataObject* data, const std::optional<double>& isoValue,
   auto* ds = vtkDataSet::SafeDownCast(data);
   if (!ds)
   {
-    Fail(what + ": the data is a " + std::string(data->GetClassName()) +
-      ", which cannot be rendered");
+    Fail(
+      what + ": the data is a " + std::string(data->GetClassName()) + ", which cannot be rendered");
   }
   Part part{ std::string(), nullptr, std::nullopt };
   part.Surface = ToSurface(ds, isoValue, what, part.Contour);

@@ -199,8 +199,7 @@ void vtkPVStylizeView::SetSketchPass(vtkSketchPass* pass)
 
 void vtkPVStylizeView::SetLightingPass(vtkStylizeLightingPass* pass)
 {
-  this->LightingPass =
-    pass ? pass : vtkSmartPointer<vtkStylizeLightingPass>::New().GetPointer();
+  this->LightingPass = pass ? pass : vtkSmartPointer<vtkStylizeLightingPass>::New().GetPointer();
   this->LightingPass->SetDelegatePass(this->LightingDelegate);
   if (this->RankGBuffer)
   {
@@ -256,7 +255,8 @@ void vtkPVStylizeView::SetUseFXAA(bool use)
 void vtkPVStylizeView::SetBackgroundColorMode(int mode)
 {
   this->Superclass::SetBackgroundColorMode(mode);
-  this->ColorMode = std::min(std::max(mode, static_cast<int>(DEFAULT)), static_cast<int>(STEREO_SKYBOX));
+  this->ColorMode =
+    std::min(std::max(mode, static_cast<int>(DEFAULT)), static_cast<int>(STEREO_SKYBOX));
 }
 
 //------------------------------------------------------------------------------
@@ -328,10 +328,9 @@ void vtkPVStylizeView::ConfigurePasses()
   int model = this->LightingModel;
   if (this->LightingModel == STYLE_DEFAULT)
   {
-    model = this->Style == COMIC
-      ? vtkStylizeLightingPass::COMIC
-      : (this->Style == PIXEL_ART ? vtkStylizeLightingPass::PIXEL_ART
-                                  : vtkStylizeLightingPass::STANDARD);
+    model = this->Style == COMIC ? vtkStylizeLightingPass::COMIC
+                                 : (this->Style == PIXEL_ART ? vtkStylizeLightingPass::PIXEL_ART
+                                                             : vtkStylizeLightingPass::STANDARD);
   }
   this->LightingPass->SetModel(model);
   const bool lighting = style || this->LightingModel != STYLE_DEFAULT;
@@ -370,7 +369,8 @@ void vtkPVStylizeView::ConfigurePasses()
     // leaves the image's own colour).
     // While a transparent-background screenshot renders, the background frozen before it.
     double background[3];
-    const bool flat = this->BackgroundFrozen ? this->FrozenFlat : this->GetFlatBackground(background);
+    const bool flat =
+      this->BackgroundFrozen ? this->FrozenFlat : this->GetFlatBackground(background);
     style->GetGBufferPass()->SetUseImageBackground(flat);
     if (flat)
     {

@@ -164,7 +164,6 @@ public:
    */
   void EncodeAnimation(const char* pattern, int fps, const char* output);
 
-
 protected:
   friend class vtkPVStylizeViewFigureSource;
 

@@ -63,9 +63,8 @@ vtkImageData* vtkSMStylizeViewProxy::CaptureWindowInternal(int magX, int magY)
     static_cast<double>(size[1]) * magY };
   // (ParaView 5.11 renders every view, the GUI's included, into its own offscreen buffers,
   // which may be larger than the screen.)
-  if (!styled || (magX <= 1 && magY <= 1) || !window ||
-    !this->GetProperty("PPI") || !this->GetProperty("WindowScale") ||
-    full[0] > MaxOnePieceSide || full[1] > MaxOnePieceSide ||
+  if (!styled || (magX <= 1 && magY <= 1) || !window || !this->GetProperty("PPI") ||
+    !this->GetProperty("WindowScale") || full[0] > MaxOnePieceSide || full[1] > MaxOnePieceSide ||
     full[0] * full[1] > MaxOnePiecePixels)
   {
     return this->Superclass::CaptureWindowInternal(magX, magY);

@@ -21,19 +21,19 @@ vtkStylizeSurfaceRepresentation::~vtkStylizeSurfaceRepresentation()
 
 // Each setting is the lighting pass's: it clamps, and the representation is modified when the
 // value changes.
-#define STYLIZE_FORWARD_SETTING(name)                                                          \
-  void vtkStylizeSurfaceRepresentation::Set##name(double value)                               \
-  {                                                                                            \
-    const vtkMTimeType before = this->Settings->GetMTime();                                    \
-    this->Settings->Set##name(value);                                                          \
-    if (this->Settings->GetMTime() != before)                                                  \
-    {                                                                                          \
-      this->Modified();                                                                        \
-    }                                                                                          \
-  }                                                                                            \
-  double vtkStylizeSurfaceRepresentation::Get##name()                                         \
-  {                                                                                            \
-    return this->Settings->Get##name();                                                        \
+#define STYLIZE_FORWARD_SETTING(name)                                                              \
+  void vtkStylizeSurfaceRepresentation::Set##name(double value)                                    \
+  {                                                                                                \
+    const vtkMTimeType before = this->Settings->GetMTime();                                        \
+    this->Settings->Set##name(value);                                                              \
+    if (this->Settings->GetMTime() != before)                                                      \
+    {                                                                                              \
+      this->Modified();                                                                            \
+    }                                                                                              \
+  }                                                                                                \
+  double vtkStylizeSurfaceRepresentation::Get##name()                                              \
+  {                                                                                                \
+    return this->Settings->Get##name();                                                            \
   }
 STYLIZE_FORWARD_SETTING(SubjectFactor)
 STYLIZE_FORWARD_SETTING(GrayLevelsNear)
@@ -44,8 +44,8 @@ STYLIZE_FORWARD_SETTING(SpecularGain)
 //------------------------------------------------------------------------------
 void vtkStylizeSurfaceRepresentation::ApplyLightingSettings()
 {
-  for (vtkProp* actor : { static_cast<vtkProp*>(this->Actor),
-         static_cast<vtkProp*>(this->BackfaceActor) })
+  for (vtkProp* actor :
+    { static_cast<vtkProp*>(this->Actor), static_cast<vtkProp*>(this->BackfaceActor) })
   {
     if (!actor)
     {

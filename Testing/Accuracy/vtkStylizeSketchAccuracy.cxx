@@ -223,7 +223,8 @@ struct Study
           continue;
         }
         double error;
-        auto lineAngle = [&](const std::array<double, 3>& a) {
+        auto lineAngle = [&](const std::array<double, 3>& a)
+        {
           const double c = std::abs(vtkMath::Dot(dw, a.data())) /
             std::max(1e-300, vtkMath::Norm(dw) * vtkMath::Norm(a.data()));
           return vtkMath::DegreesFromRadians(std::acos(std::min(1.0, c)));
@@ -310,8 +311,8 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::fprintf(stderr,
-        "usage: %s [--size W H] [--quick] [--check] [--markdown FILE]\n", argv[0]);
+      std::fprintf(
+        stderr, "usage: %s [--size W H] [--quick] [--check] [--markdown FILE]\n", argv[0]);
       return 2;
     }
   }
@@ -390,8 +391,8 @@ int main(int argc, char* argv[])
           camera.c_str(), c.Source == vtkSketchPass::MODEL ? "model" : "screen",
           c.Source == vtkSketchPass::MODEL ? "-" : (c.DefaultScale ? "defaults" : "2 pt"),
           c.Source == vtkSketchPass::MODEL ? "-" : std::to_string(c.Neighbors).c_str(),
-          c.Source == vtkSketchPass::MODEL ? "-" : (c.Smoothing ? "defaults" : "off"),
-          r.Median, r.P95, r.Undefined, r.Surface);
+          c.Source == vtkSketchPass::MODEL ? "-" : (c.Smoothing ? "defaults" : "off"), r.Median,
+          r.P95, r.Undefined, r.Surface);
         out << line;
         std::printf("%s", line);
         std::fflush(stdout);
@@ -430,7 +431,8 @@ int main(int argc, char* argv[])
   study.Renderer->ResetCameraClippingRange();
   pass->SetLayer(vtkSketchPass::STROKES);
   const double strokeLength = 15.0; // points: the default 10 steps of 1.5
-  auto licAt = [&](int mode, int steps) {
+  auto licAt = [&](int mode, int steps)
+  {
     pass->SetLicMode(mode);
     pass->SetSteps(steps);
     pass->SetStepLength(strokeLength / steps);
@@ -464,7 +466,8 @@ int main(int argc, char* argv[])
   pass->SetLayer(vtkSketchPass::TONE);
   pass->SetContrast(1.0);
   study.PlaceCamera(false, false);
-  auto blurAt = [&](int stride) {
+  auto blurAt = [&](int stride)
+  {
     pass->SetBlurStride(stride);
     const double ms = study.Time(frames);
     return std::make_pair(study.Grab(), ms);

@@ -67,8 +67,7 @@ int main(int argc, char* argv[])
     }
     meshes.push_back(mesh);
     std::cout << "Scene " << scene.Name << ": " << FormatCount(mesh->GetNumberOfPolys())
-              << " triangles, " << FormatCount(mesh->GetNumberOfPoints()) << " points"
-              << std::endl;
+              << " triangles, " << FormatCount(mesh->GetNumberOfPoints()) << " points" << std::endl;
   }
   info.CoveredPixels = FrameMesh(meshes[0], opt).CoveredPixels;
   std::cout << "The unit sphere covers about " << Fixed(info.CoveredPixels / 1000.0, 0)
@@ -90,7 +89,7 @@ int main(int argc, char* argv[])
   WriteStageTable(md, stageResults);
   const bool ok = WriteReportFiles(opt, report, md.str());
   probe->Finalize();
-  std::cout << "\n" << md.str() << "\nCSV: " << opt.Csv << "\nMarkdown: " << opt.Markdown
-            << std::endl;
+  std::cout << "\n"
+            << md.str() << "\nCSV: " << opt.Csv << "\nMarkdown: " << opt.Markdown << std::endl;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -24,12 +24,12 @@ const std::vector<std::string>& AllConfigs()
 {
   static const std::vector<std::string> configs = { "plain", "sobel", "ssao", "edl",
     "light-standard", "light-comic", "light-pixelart", "gbuf-standard", "gbuf-comic",
-    "gbuf-pixelart", "gbuf-standard-color", "gbuf-comic-lin", "comic", "comic-geometric", "pixel-fast-2",
-    "pixel-fast-4", "pixel-fast-8", "pixel-faithful-2", "pixel-faithful-4", "pixel-faithful-8", "sketch-2", "sketch-4", "sketch-8",
-    "sketch-8-stage", "comic-image", "pixel-image", "sketch-image", "comic-nocull",
-    "sketch-8-nocull", "comic-interactive", "sketch-8-interactive", "pixel-faithful-4-interactive",
-    "plain-translucent", "comic-translucent", "pixel-faithful-4-translucent",
-    "sketch-8-translucent" };
+    "gbuf-pixelart", "gbuf-standard-color", "gbuf-comic-lin", "comic", "comic-geometric",
+    "pixel-fast-2", "pixel-fast-4", "pixel-fast-8", "pixel-faithful-2", "pixel-faithful-4",
+    "pixel-faithful-8", "sketch-2", "sketch-4", "sketch-8", "sketch-8-stage", "comic-image",
+    "pixel-image", "sketch-image", "comic-nocull", "sketch-8-nocull", "comic-interactive",
+    "sketch-8-interactive", "pixel-faithful-4-interactive", "plain-translucent",
+    "comic-translucent", "pixel-faithful-4-translucent", "sketch-8-translucent" };
   return configs;
 }
 
@@ -70,7 +70,8 @@ void PrintHelp(const char* argv0)
     << "                    styles also report per-stage costs and memory per pixel\n"
     << "  --csv FILE        CSV output (default benchmark.csv)\n"
     << "  --markdown FILE   Markdown output (default benchmark.md), also printed to stdout\n"
-    << "  --images DIR      also write the last frame of every case as DIR/<scene>-<lights>-<config>.png\n"
+    << "  --images DIR      also write the last frame of every case as "
+       "DIR/<scene>-<lights>-<config>.png\n"
     << "  --flat-tolerance P  percent change of the added cost over plain between the smallest\n"
     << "                    and the largest scene still called flat (default 25)\n"
     << "  --quick           smoke mode: 640x360, scene 10k, lights 1,8, 3 frames\n"
@@ -140,8 +141,8 @@ bool ParseScenes(const std::string& value, Options& opt)
   opt.Scenes.clear();
   for (const auto& name : SplitList(value))
   {
-    auto it = std::find_if(AllScenes().begin(), AllScenes().end(),
-      [&](const SceneSpec& s) { return s.Name == name; });
+    auto it = std::find_if(
+      AllScenes().begin(), AllScenes().end(), [&](const SceneSpec& s) { return s.Name == name; });
     if (it == AllScenes().end())
     {
       std::cerr << "Unknown scene '" << name << "' (10k, 500k, 2M, bunny, iso970k)\n";

@@ -35,8 +35,8 @@ struct Options
   std::string Markdown = "benchmark.md";
   std::string Images; // folder for one PNG per case (after the timed frames), empty: none
   std::string Bunny = VTKSTYLIZE_REALDATA_DIR "/bunny.ply"; // the scanned mesh
-  double FlatTolerance = 25.0; // percent
-  double FlatFloor = 2.0;      // ms
+  double FlatTolerance = 25.0;                              // percent
+  double FlatFloor = 2.0;                                   // ms
 };
 
 /** Returns 0 to continue, 1 for an error (reported on stderr), 2 for --help (printed). */

@@ -53,7 +53,8 @@ std::string SceneLabel(const std::string& name)
 
 void SortResults(const Options& opt, std::vector<Result>& results)
 {
-  auto rank = [&opt](const Result& r) {
+  auto rank = [&opt](const Result& r)
+  {
     size_t s = 0, l = 0, c = 0;
     while (s < opt.Scenes.size() && opt.Scenes[s].Name != r.Scene)
     {
@@ -90,9 +91,9 @@ std::string ReportHeader(const Options& opt, const RunInfo& info)
   header << "## VTK Stylize benchmark\n\n";
   header << "- Renderer: " << info.Renderer << " (OpenGL " << info.GLVersion << "), VTK "
          << vtkVersion::GetVTKVersion() << "\n";
-  header << "- " << opt.Width << "x" << opt.Height
-         << ", offscreen, multisampling off; per case " << opt.Warmup
-         << " warm-up frames (shader compilation excluded), then the median of " << opt.Frames
+  header << "- " << opt.Width << "x" << opt.Height << ", offscreen, multisampling off; per case "
+         << opt.Warmup << " warm-up frames (shader compilation excluded), then the median of "
+         << opt.Frames
          << " timed frames, each a 0.5° camera azimuth step, Render() + glFinish, wall clock; "
             "one window per configuration, timed frames interleaved across configurations\n";
   header << "- Scenes: spheres (vtkSphereSource with point normals), a scanned mesh (bunny: "
@@ -101,8 +102,7 @@ std::string ReportHeader(const Options& opt, const RunInfo& info)
             "moved into the unit sphere's box; one actor (Phong, specular 0.3), framed by "
             "ResetCamera() as the unit sphere, which covers about "
          << Fixed(info.CoveredPixels / 1000.0, 0) << "k pixels ("
-         << Fixed(100.0 * info.CoveredPixels / opt.Width / opt.Height, 1)
-         << "% of the image)\n";
+         << Fixed(100.0 * info.CoveredPixels / opt.Width / opt.Height, 1) << "% of the image)\n";
   header << "- Lights: 1 = VTK's default headlight; more = scene lights on a golden-angle "
             "spiral around the object (1/3 directional, 1/3 point, 1/3 spot), white, "
             "intensity 1.5 / count; the same for every configuration\n";
@@ -359,8 +359,8 @@ void Report::WriteCsv(std::ostream& os) const
   for (const auto& r : this->Results)
   {
     os << "sphere-" << r.Scene << "," << r.Triangles << "," << r.Lights << "," << r.Config << ","
-       << Fixed(r.Median, 3) << "," << Fixed(r.Min, 3) << "," << Fixed(r.Max, 3) << ","
-       << r.Frames << "\n";
+       << Fixed(r.Median, 3) << "," << Fixed(r.Min, 3) << "," << Fixed(r.Max, 3) << "," << r.Frames
+       << "\n";
   }
 }
 

@@ -33,10 +33,10 @@ void SortResults(const Options& opt, std::vector<Result>& results);
 /** What the report's header says about the run beside the options. */
 struct RunInfo
 {
-  std::string Renderer;  // GL_RENDERER
-  std::string GLVersion; // GL_VERSION
-  double CoveredPixels = 0.0; // pixels the unit sphere covers (Framing)
-  double Seconds = 0.0;       // the run's wall-clock time
+  std::string Renderer;                            // GL_RENDERER
+  std::string GLVersion;                           // GL_VERSION
+  double CoveredPixels = 0.0;                      // pixels the unit sphere covers (Framing)
+  double Seconds = 0.0;                            // the run's wall-clock time
   std::map<std::string, std::string> Descriptions; // configuration -> its passes in words
 };
 
@@ -62,8 +62,8 @@ private:
   double MedianOf(const std::string& scene, int lights, const std::string& config) const;
   vtkIdType Triangles(const std::string& scene) const;
   bool Has(const std::string& config) const;
-  void Fit(const std::string& scene, const std::string& config, double& slope,
-    double& intercept) const;
+  void Fit(
+    const std::string& scene, const std::string& config, double& slope, double& intercept) const;
   std::string TargetRatio(
     const std::string& scene, int n, const char* a, const char* b, bool added) const;
 

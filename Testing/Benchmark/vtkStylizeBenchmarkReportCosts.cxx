@@ -73,13 +73,11 @@ void Report::WriteComic(std::ostream& os) const
       const double sobel = this->MedianOf(sc.Name, n, "sobel") - plain;
       const double ssao = this->Has("ssao") ? this->MedianOf(sc.Name, n, "ssao") - plain : NAN;
       const double comic = this->MedianOf(sc.Name, n, "comic");
-      const double geo = this->Has("comic-geometric")
-        ? this->MedianOf(sc.Name, n, "comic-geometric") - base
-        : NAN;
+      const double geo =
+        this->Has("comic-geometric") ? this->MedianOf(sc.Name, n, "comic-geometric") - base : NAN;
       os << "| " << SceneLabel(sc.Name) << " | " << n << " | " << Fixed(sobel, 1) << " | "
-         << Fixed(ssao, 1) << " | " << Fixed(comic - plain, 1) << " | "
-         << Fixed(comic - base, 1) << " | " << Fixed(geo, 1) << " | "
-         << Fixed((comic - base) / sobel, 2) << " |\n";
+         << Fixed(ssao, 1) << " | " << Fixed(comic - plain, 1) << " | " << Fixed(comic - base, 1)
+         << " | " << Fixed(geo, 1) << " | " << Fixed((comic - base) / sobel, 2) << " |\n";
     }
   }
 }
@@ -94,8 +92,7 @@ void Report::WritePixelTarget(std::ostream& os) const
   {
     const int n = this->Opt.Lights.front();
     os << "- " << SceneLabel(sc.Name) << ", " << n << " light(s): pixel-fast-4 / plain = "
-       << Fixed(
-            this->MedianOf(sc.Name, n, "pixel-fast-4") / this->MedianOf(sc.Name, n, "plain"), 2)
+       << Fixed(this->MedianOf(sc.Name, n, "pixel-fast-4") / this->MedianOf(sc.Name, n, "plain"), 2)
        << "\n";
   }
 }
@@ -116,9 +113,8 @@ void Report::WriteSketch(std::ostream& os) const
     {
       const double plain = this->MedianOf(sc.Name, n, "plain");
       const double ssao = this->MedianOf(sc.Name, n, "ssao") - plain;
-      auto added = [&](const char* config) {
-        return this->Has(config) ? this->MedianOf(sc.Name, n, config) - plain : NAN;
-      };
+      auto added = [&](const char* config)
+      { return this->Has(config) ? this->MedianOf(sc.Name, n, config) - plain : NAN; };
       const double stage = this->Has("sketch-8-stage")
         ? this->MedianOf(sc.Name, n, "sketch-8") - this->MedianOf(sc.Name, n, "sketch-8-stage")
         : NAN;
@@ -133,15 +129,14 @@ void Report::WriteSketch(std::ostream& os) const
 // Flatness in triangle count: the added cost at the smallest and the largest scene.
 void Report::WriteFlatness(std::ostream& os) const
 {
-  auto fewer = [this](const SceneSpec& a, const SceneSpec& b) {
-    return this->Triangles(a.Name) < this->Triangles(b.Name);
-  };
+  auto fewer = [this](const SceneSpec& a, const SceneSpec& b)
+  { return this->Triangles(a.Name) < this->Triangles(b.Name); };
   const auto& scenes = this->Opt.Scenes;
   const SceneSpec& small = *std::min_element(scenes.begin(), scenes.end(), fewer);
   const SceneSpec& large = *std::max_element(scenes.begin(), scenes.end(), fewer);
   os << "\n### Is the added cost flat in triangle count?\n\n";
-  os << "Added cost = configuration − plain (median ms, same lights), at "
-     << SceneLabel(small.Name) << " (" << FormatCount(this->Triangles(small.Name)) << " triangles) and "
+  os << "Added cost = configuration − plain (median ms, same lights), at " << SceneLabel(small.Name)
+     << " (" << FormatCount(this->Triangles(small.Name)) << " triangles) and "
      << SceneLabel(large.Name) << " (" << FormatCount(this->Triangles(large.Name))
      << " triangles). Verdict \"flat\" when the added cost changes by less than "
      << Fixed(this->Opt.FlatTolerance, 0) << "% of the larger of the two, or by less than "
@@ -182,8 +177,8 @@ void Report::WriteFlatness(std::ostream& os) const
         verdict = flat ? "flat" : (change > 0 ? "grows" : "shrinks");
       }
       os << "| " << c << " | " << n << " | " << Fixed(a, 1) << " | " << Fixed(b, 1) << " | "
-         << (std::isfinite(change) ? (change >= 0 ? "+" : "") + Fixed(change, 1) : "n/a")
-         << " ms (" << pct << ") | " << verdict << " |\n";
+         << (std::isfinite(change) ? (change >= 0 ? "+" : "") + Fixed(change, 1) : "n/a") << " ms ("
+         << pct << ") | " << verdict << " |\n";
     }
   }
 }

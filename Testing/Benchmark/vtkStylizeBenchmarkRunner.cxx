@@ -189,8 +189,8 @@ void WriteImage(Bench& b, const std::string& scene, int lights, const Options& o
 }
 
 /** A configuration's timed frames of one case as a Result, printed as one line. */
-Result Summarize(const Bench& b, const std::string& scene, vtkPolyData* mesh, int lights,
-  const Options& opt)
+Result Summarize(
+  const Bench& b, const std::string& scene, vtkPolyData* mesh, int lights, const Options& opt)
 {
   Result r;
   r.Scene = scene;

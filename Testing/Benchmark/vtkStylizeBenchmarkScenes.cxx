@@ -101,8 +101,8 @@ Framing FrameMesh(vtkPolyData* mesh, const Options& opt)
   {
     f.Center[i] = 0.5 * (b[2 * i] + b[2 * i + 1]);
   }
-  f.Diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-    (b[5] - b[4]) * (b[5] - b[4]));
+  f.Diagonal = std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
   vtkNew<vtkRenderer> ren;
   ren->ResetCamera(b);
   vtkCamera* cam = ren->GetActiveCamera();
@@ -119,8 +119,8 @@ Framing FrameMesh(vtkPolyData* mesh, const Options& opt)
 
 void SetLights(vtkRenderer* ren, int count, const double center[3], double radius)
 {
-  vtkStylizeSceneLights::AddLights(ren, count, center, 4.0 * radius, 1.5,
-    vtkStylizeSceneLights::DIRECTIONAL_POINT_SPOT, 180.0);
+  vtkStylizeSceneLights::AddLights(
+    ren, count, center, 4.0 * radius, 1.5, vtkStylizeSceneLights::DIRECTIONAL_POINT_SPOT, 180.0);
 }
 
 //------------------------------------------------------------------------------------------------

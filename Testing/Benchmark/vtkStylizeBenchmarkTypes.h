@@ -41,7 +41,7 @@ struct StageResult
   int Lights = 0;
   std::string Config;
   std::vector<std::pair<std::string, double>> Stages; // name (with runs), median ms
-  double Frame = 0.0; // median of the timed frames' totals (waits between stages included)
+  double Frame = 0.0;         // median of the timed frames' totals (waits between stages included)
   double BytesPerPixel = 0.0; // the style's textures (GetTextureBytes()) per viewport pixel
 };
 }

@@ -86,7 +86,8 @@ int Gray(const char* path, const char* background)
     bool isBackground = true;
     for (int c = 0; c < 3; ++c)
     {
-      isBackground = isBackground && std::abs(p[c] - static_cast<int>(std::lround(255 * bg[c]))) <= 1;
+      isBackground =
+        isBackground && std::abs(p[c] - static_cast<int>(std::lround(255 * bg[c]))) <= 1;
     }
     if (isBackground)
     {

@@ -13,12 +13,11 @@
 #include "vtkDoubleArray.h"
 #include "vtkElevationFilter.h"
 #include "vtkExodusIIWriter.h"
-#include "vtkIntArray.h"
-#include "vtkXMLPUnstructuredGridWriter.h"
 #include "vtkFloatArray.h"
 #include "vtkGenericDataObjectWriter.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkIntArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkOBJWriter.h"
@@ -36,6 +35,7 @@
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLImageDataWriter.h"
 #include "vtkXMLMultiBlockDataWriter.h"
+#include "vtkXMLPUnstructuredGridWriter.h"
 #include "vtkXMLPolyDataWriter.h"
 #include "vtkXMLRectilinearGridWriter.h"
 #include "vtkXMLStructuredGridWriter.h"
@@ -151,8 +151,8 @@ int main(int argc, char* argv[])
   }
   Dir = argv[1];
   ::mkdir(Dir.c_str(), 0777);
-  ::mkdir(P("dir.vtp").c_str(), 0777); // a directory given as INPUT
-  ::mkdir(P("out").c_str(), 0777);     // output directory of the tests
+  ::mkdir(P("dir.vtp").c_str(), 0777);       // a directory given as INPUT
+  ::mkdir(P("out").c_str(), 0777);           // output directory of the tests
   ::mkdir(P("out/isdir.png").c_str(), 0777); // a directory given as --output
   ::unlink(P("devnull.vtp").c_str());
   if (::symlink("/dev/null", P("devnull.vtp").c_str()) != 0) // not a regular file
@@ -558,7 +558,8 @@ int main(int argc, char* argv[])
   // one patch) with a cell field T at time 1; the .foam file is empty, as OpenFOAM's are. A
   // second case whose polyMesh has no faces file.
   {
-    const auto header = [](const char* cls, const char* object) {
+    const auto header = [](const char* cls, const char* object)
+    {
       return std::string("FoamFile\n{\n    version 2.0;\n    format ascii;\n    class ") + cls +
         ";\n    object " + object + ";\n}\n";
     };
@@ -580,8 +581,8 @@ int main(int argc, char* argv[])
         {
           for (int i = 0; i < 3; ++i)
           {
-            points += "(" + std::to_string(i) + " " + std::to_string(j) + " " + std::to_string(k) +
-              ")\n";
+            points +=
+              "(" + std::to_string(i) + " " + std::to_string(j) + " " + std::to_string(k) + ")\n";
           }
         }
       }
@@ -597,15 +598,16 @@ int main(int argc, char* argv[])
       }
       WriteText(dir + "/constant/polyMesh/owner",
         header("labelList", "owner") + "11\n(\n0\n0\n0\n0\n0\n0\n1\n1\n1\n1\n1\n)\n");
-      WriteText(dir + "/constant/polyMesh/neighbour",
-        header("labelList", "neighbour") + "1\n(\n1\n)\n");
+      WriteText(
+        dir + "/constant/polyMesh/neighbour", header("labelList", "neighbour") + "1\n(\n1\n)\n");
       WriteText(dir + "/constant/polyMesh/boundary",
         header("polyBoundaryMesh", "boundary") +
           "1\n(\n    walls\n    {\n        type wall;\n        nFaces 10;\n        startFace 1;\n"
           "    }\n)\n");
       WriteText(dir + "/1/T",
         header("volScalarField", "T") +
-          "dimensions [0 0 0 1 0 0 0];\ninternalField nonuniform List<scalar> 2\n(\n300\n400\n)\n;\n"
+          "dimensions [0 0 0 1 0 0 0];\ninternalField nonuniform List<scalar> "
+          "2\n(\n300\n400\n)\n;\n"
           "boundaryField\n{\n    walls\n    {\n        type zeroGradient;\n    }\n}\n");
     }
   }
@@ -640,7 +642,8 @@ int main(int argc, char* argv[])
 
   // Hostile input (issue 17). Multiblock references: a block that is a FIFO (a reader would block
   // on it forever), a file that names itself, two files that name each other.
-  const auto vtm = [](const std::string& file) {
+  const auto vtm = [](const std::string& file)
+  {
     return "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\">\n"
            "  <vtkMultiBlockDataSet>\n    <DataSet index=\"0\" file=\"" +
       file + "\"/>\n  </vtkMultiBlockDataSet>\n</VTKFile>\n";
@@ -658,7 +661,8 @@ int main(int argc, char* argv[])
   WriteText("outer_loop.vtm", vtm("loop/inner.vtm"));
   // Polyhedra whose face streams lie (VTK 9.1's reader or surface filter crashed on them): a
   // face naming point 999999 or -7, a polyhedron claiming 100,000 faces.
-  const auto polyhedron = [](const std::string& faces) {
+  const auto polyhedron = [](const std::string& faces)
+  {
     return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
            "<UnstructuredGrid><Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">\n"
            "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">"
@@ -678,16 +682,25 @@ int main(int argc, char* argv[])
   // reader allocated 11-19 GB before failing), and a CELL_TYPES section shorter than CELLS (the
   // reader left the other types unset).
   const std::string legacyHead = "# vtk DataFile Version 3.0\nclaims\nASCII\n";
-  WriteText("claims_points.vtk", legacyHead + "DATASET POLYDATA\nPOINTS 1000000000 float\n0 0 0 1 0 0 0 1 0\n");
-  WriteText("claims_polygons.vtk", legacyHead + "DATASET POLYDATA\nPOINTS 3 float\n"
-    "0 0 0 1 0 0 0 1 0\nPOLYGONS 1000000000 4000000000\n3 0 1 2\n");
-  WriteText("claims_cells.vtk", legacyHead + "DATASET UNSTRUCTURED_GRID\nPOINTS 3 float\n"
-    "0 0 0 1 0 0 0 1 0\nCELLS 1000000000 4000000000\n3 0 1 2\nCELL_TYPES 1\n5\n");
-  WriteText("short_cell_types.vtk", legacyHead + "DATASET UNSTRUCTURED_GRID\nPOINTS 4 float\n"
-    "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 2 8\n3 0 1 2\n3 1 2 3\nCELL_TYPES 1\n5\n");
-  WriteText("nan_scalars.vtk", legacyHead + "DATASET POLYDATA\nPOINTS 3 float\n"
-    "0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nSCALARS s float 1\n"
-    "LOOKUP_TABLE default\n0 nan inf\n");
+  WriteText("claims_points.vtk",
+    legacyHead + "DATASET POLYDATA\nPOINTS 1000000000 float\n0 0 0 1 0 0 0 1 0\n");
+  WriteText("claims_polygons.vtk",
+    legacyHead +
+      "DATASET POLYDATA\nPOINTS 3 float\n"
+      "0 0 0 1 0 0 0 1 0\nPOLYGONS 1000000000 4000000000\n3 0 1 2\n");
+  WriteText("claims_cells.vtk",
+    legacyHead +
+      "DATASET UNSTRUCTURED_GRID\nPOINTS 3 float\n"
+      "0 0 0 1 0 0 0 1 0\nCELLS 1000000000 4000000000\n3 0 1 2\nCELL_TYPES 1\n5\n");
+  WriteText("short_cell_types.vtk",
+    legacyHead +
+      "DATASET UNSTRUCTURED_GRID\nPOINTS 4 float\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 2 8\n3 0 1 2\n3 1 2 3\nCELL_TYPES 1\n5\n");
+  WriteText("nan_scalars.vtk",
+    legacyHead +
+      "DATASET POLYDATA\nPOINTS 3 float\n"
+      "0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nSCALARS s float 1\n"
+      "LOOKUP_TABLE default\n0 nan inf\n");
   // OBJ numbers VTK's reader misreads (nan, inf and 1e400 became other numbers), a word, and a
   // 2 MiB line (a 1 GB one took 2 GB before the binary-data refusal).
   const std::string objTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
@@ -710,8 +723,8 @@ int main(int argc, char* argv[])
       "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n"
       "<ImageData WholeExtent=\"0 2 0 2 0 2\" Origin=\"0 0 0\" Spacing=\"0 0 0\">\n"
       "<Piece Extent=\"0 2 0 2 0 2\"><PointData Scalars=\"s\">\n"
-      "<DataArray type=\"Float32\" Name=\"s\" format=\"ascii\">" + values +
-      "</DataArray>\n</PointData></Piece></ImageData></VTKFile>\n");
+      "<DataArray type=\"Float32\" Name=\"s\" format=\"ascii\">" +
+        values + "</DataArray>\n</PointData></Piece></ImageData></VTKFile>\n");
   }
   // Non-finite values: point scalars with NaN and infinities, an image whose values are all NaN,
   // an image with a NaN spacing or an infinite origin.
@@ -747,7 +760,8 @@ int main(int argc, char* argv[])
     {
       values += std::to_string(i % 3) + " ";
     }
-    const auto vti = [&values](const std::string& origin, const std::string& spacing) {
+    const auto vti = [&values](const std::string& origin, const std::string& spacing)
+    {
       return "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n"
              "<ImageData WholeExtent=\"0 2 0 2 0 2\" Origin=\"" +
         origin + "\" Spacing=\"" + spacing +

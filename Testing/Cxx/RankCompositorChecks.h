@@ -61,7 +61,8 @@ inline std::pair<float, float> At(const Part& p, int x, int y)
 inline int Run(vtkMultiProcessController* controller)
 {
   int failures = 0;
-  auto check = [&](bool ok, const char* what, int x = -1, int y = -1) {
+  auto check = [&](bool ok, const char* what, int x = -1, int y = -1)
+  {
     if (!ok)
     {
       std::fprintf(stderr, "FAIL (process %d): %s at (%d, %d)\n",

@@ -86,24 +86,26 @@ int TestComicRegression(int argc, char* argv[])
     { "no-dots", [](vtkRenderer*, vtkComicPass* c) { c->DotsOff(); } },
     { "no-hatching", [](vtkRenderer*, vtkComicPass* c) { c->HatchingOff(); } },
     { "standard-lighting",
-      [](vtkRenderer*, vtkComicPass* c) {
-        c->GetLightingPass()->SetModel(vtkStylizeLightingPass::STANDARD);
-      } },
+      [](vtkRenderer*, vtkComicPass* c)
+      { c->GetLightingPass()->SetModel(vtkStylizeLightingPass::STANDARD); } },
     { "tinted", [](vtkRenderer*, vtkComicPass* c) { c->TintedOn(); } },
     { "object-anchor", [](vtkRenderer*, vtkComicPass* c) { c->SetAnchorToObject(); } },
     { "edges", [](vtkRenderer*, vtkComicPass* c) { c->SetLayer(vtkComicPass::EDGES); } },
     { "three-phase-edges", // the paper's depth, normal and colour phases (eq. 9)
-      [](vtkRenderer*, vtkComicPass* c) {
+      [](vtkRenderer*, vtkComicPass* c)
+      {
         c->SetEdgeWeights(1.0, 1.0, 1.0);
         c->SetLayer(vtkComicPass::EDGES);
       } },
     { "principal-hatch", // hatching around the form, in the Standard lighting's shadows
-      [](vtkRenderer*, vtkComicPass* c) {
+      [](vtkRenderer*, vtkComicPass* c)
+      {
         c->GetLightingPass()->SetModel(vtkStylizeLightingPass::STANDARD);
         c->SetHatchOrientation(vtkComicPass::PRINCIPAL);
       } },
     { "one-direction",
-      [](vtkRenderer*, vtkComicPass* c) {
+      [](vtkRenderer*, vtkComicPass* c)
+      {
         c->SetHatchDirections(0);
         c->SetHatchAngle(90);
         c->CrossHatchingOff();
@@ -132,7 +134,8 @@ int TestComicScale(int, char*[])
     for (double scale : { 1e-6, 1.0, 1e6 })
     {
       auto img = RenderComic(
-        [scale](vtkRenderer* r, vtkComicPass*) {
+        [scale](vtkRenderer* r, vtkComicPass*)
+        {
           double range[2];
           r->GetActiveCamera()->GetClippingRange(range);
           const double farPlane = range[1] * 1.5;
@@ -159,7 +162,8 @@ int TestComicMagnify(int, char*[])
   for (int anchor : { vtkComicPass::SCREEN, vtkComicPass::OBJECT })
   {
     const std::string a = anchor == vtkComicPass::OBJECT ? "object" : "screen";
-    Configure cfg = [anchor](vtkRenderer*, vtkComicPass* c) {
+    Configure cfg = [anchor](vtkRenderer*, vtkComicPass* c)
+    {
       c->SetAnchor(anchor);
       c->SetReferenceHeight(H);
     };
@@ -189,13 +193,15 @@ int TestComicExtremes(int, char*[])
   };
   const std::vector<Case> cases = {
     { "pd = 0",
-      [](vtkRenderer*, vtkComicPass* c) {
+      [](vtkRenderer*, vtkComicPass* c)
+      {
         c->GetLightingPass()->SetGrayLevelsNear(0);
         c->GetLightingPass()->SetGrayLevelsFar(0);
       },
       true },
     { "one gray level",
-      [](vtkRenderer*, vtkComicPass* c) {
+      [](vtkRenderer*, vtkComicPass* c)
+      {
         c->GetLightingPass()->SetGrayLevelsNear(1);
         c->GetLightingPass()->SetGrayLevelsFar(1);
       },
@@ -203,7 +209,8 @@ int TestComicExtremes(int, char*[])
     { "no lights", [](vtkRenderer* r, vtkComicPass*) { SetupLights(r, "none"); }, true },
     { "500 lights", [](vtkRenderer* r, vtkComicPass*) { SetupLights(r, "many:500"); }, true },
     { "thresholds at their limits",
-      [](vtkRenderer*, vtkComicPass* c) {
+      [](vtkRenderer*, vtkComicPass* c)
+      {
         c->SetDepthThreshold(0);
         c->SetNormalThreshold(1e9);
         c->SetColorThreshold(-1);
@@ -216,7 +223,8 @@ int TestComicExtremes(int, char*[])
       },
       true },
     { "object anchor, tinted",
-      [](vtkRenderer*, vtkComicPass* c) {
+      [](vtkRenderer*, vtkComicPass* c)
+      {
         c->SetAnchorToObject();
         c->TintedOn();
       },
@@ -334,16 +342,18 @@ int TestComicMotion(int argc, char* argv[])
   double swim[2] = { 0, 0 };
   for (int anchor : { vtkComicPass::SCREEN, vtkComicPass::OBJECT })
   {
-    auto scene = MakeStyledScene<vtkComicPass>(W, H, false, [anchor](vtkComicPass* comic) {
-      comic->SetReferenceHeight(H);
-      comic->SetAnchor(anchor);
-      // Pattern everywhere (the paper's darker lighting, normal-dependent hatching), so that the
-      // measure is about the pattern and not the outlines, which are anchored in both modes.
-      comic->GetLightingPass()->SetSubjectFactor(0.0);
-      comic->GetLightingPass()->SetGrayLevelsFar(2.0);
-      comic->GetLightingPass()->SetGrayLevelsNear(4.0);
-      comic->SetHatchDirections(4);
-    });
+    auto scene = MakeStyledScene<vtkComicPass>(W, H, false,
+      [anchor](vtkComicPass* comic)
+      {
+        comic->SetReferenceHeight(H);
+        comic->SetAnchor(anchor);
+        // Pattern everywhere (the paper's darker lighting, normal-dependent hatching), so that the
+        // measure is about the pattern and not the outlines, which are anchored in both modes.
+        comic->GetLightingPass()->SetSubjectFactor(0.0);
+        comic->GetLightingPass()->SetGrayLevelsFar(2.0);
+        comic->GetLightingPass()->SetGrayLevelsNear(4.0);
+        comic->SetHatchDirections(4);
+      });
     vtkRenderWindow* win = scene.Window;
     vtkRenderer* ren = scene.Renderer;
     vtkCamera* cam = ren->GetActiveCamera();
@@ -559,7 +569,8 @@ int TestComicEdgeAccuracy(int, char*[])
           }
           else
           {
-            // tube circle at rho = R, z = 0 seen from (0, D): tangent rays at atan(R/D) +- asin(r/L)
+            // tube circle at rho = R, z = 0 seen from (0, D): tangent rays at atan(R/D) +-
+            // asin(r/L)
             const double a0 = std::atan(R / distance);
             const double b = std::asin(r / std::hypot(R, distance));
             circles.push_back({ 0.5 * w, 0.5 * h, f * std::tan(a0 + b) });
@@ -654,7 +665,8 @@ int TestComicTone(int, char*[])
     ren->SetPass(comic);
     window->Render();
     vtkNew<vtkFloatArray> lit;
-    STYLIZE_CHECK(comic->GetGBufferPass()->DownloadChannel(vtkStylizeGBufferPass::COLOR_BUFFER, lit),
+    STYLIZE_CHECK(
+      comic->GetGBufferPass()->DownloadChannel(vtkStylizeGBufferPass::COLOR_BUFFER, lit),
       "no colour channel");
     auto img = Capture(window);
     // Mean tone and mean print per 8 x 8 block, binned by tone.
@@ -702,16 +714,16 @@ int TestComicTone(int, char*[])
         continue;
       }
       const double tone = sumTone[i] / count[i], print = sumPrint[i] / count[i];
-      std::printf("  [%.1f, %.1f)  %.3f  %.3f  (%g blocks)\n", 0.1 * i, 0.1 * (i + 1), tone, print,
-        count[i]);
+      std::printf(
+        "  [%.1f, %.1f)  %.3f  %.3f  (%g blocks)\n", 0.1 * i, 0.1 * (i + 1), tone, print, count[i]);
       worst[constant] = std::max(worst[constant], std::abs(print - tone));
       monotonic[constant] = monotonic[constant] && print >= previous - 0.02;
       previous = print;
     }
     window->Finalize();
   }
-  std::printf("largest |print - tone|: %.3f following the tone, %.3f constant width\n", worst[0],
-    worst[1]);
+  std::printf(
+    "largest |print - tone|: %.3f following the tone, %.3f constant width\n", worst[0], worst[1]);
   STYLIZE_CHECK(worst[0] <= 0.12 && monotonic[0],
     "the print does not follow the tone (largest difference %.3f, monotonic %d)", worst[0],
     monotonic[0] ? 1 : 0);
@@ -775,9 +787,9 @@ int TestComicHatchOrientation(int, char*[])
     STYLIZE_CHECK(gx + gy > 1000.0, "%s: no hatching drawn", i ? "PRINCIPAL" : "FIXED");
     window->Finalize();
   }
-  STYLIZE_CHECK(ratio[1] > 3.0, "PRINCIPAL: the lines do not run around the cylinder (%.2f)",
-    ratio[1]);
-  STYLIZE_CHECK(ratio[0] < 2.0, "FIXED: the measure does not tell the angles apart (%.2f)",
-    ratio[0]);
+  STYLIZE_CHECK(
+    ratio[1] > 3.0, "PRINCIPAL: the lines do not run around the cylinder (%.2f)", ratio[1]);
+  STYLIZE_CHECK(
+    ratio[0] < 2.0, "FIXED: the measure does not tell the angles apart (%.2f)", ratio[0]);
   return Failures == 0 ? 0 : 1;
 }

@@ -73,8 +73,8 @@ vtkSmartPointer<vtkImageData> TranslucentScene(Mode mode)
   return img;
 }
 
-vtkSmartPointer<vtkImageData> TwoViewports(Mode mode, bool layered, int resizeTo[2] = nullptr,
-  int magnification = 1)
+vtkSmartPointer<vtkImageData> TwoViewports(
+  Mode mode, bool layered, int resizeTo[2] = nullptr, int magnification = 1)
 {
   auto win = MakeWindow(320, 200);
   vtkNew<vtkRenderer> left, right;
@@ -123,8 +123,8 @@ vtkSmartPointer<vtkImageData> TwoViewports(Mode mode, bool layered, int resizeTo
 int TestGBuffer(int, char*[])
 {
   // Translucent geometry over the composited depth, and 2D text, equal to VTK's rendering.
-  StrictCompare(TranslucentScene(GBUFFER), TranslucentScene(PLAIN), 2, 0.0, 2,
-    "translucent plane and 2D text");
+  StrictCompare(
+    TranslucentScene(GBUFFER), TranslucentScene(PLAIN), 2, 0.0, 2, "translucent plane and 2D text");
   // Renderers off the window origin, several renderers.
   {
     auto g = TwoViewports(GBUFFER, false);
@@ -136,15 +136,15 @@ int TestGBuffer(int, char*[])
     }
   }
   // Layered renderers: the upper layer's background stays transparent.
-  StrictCompare(TwoViewports(GBUFFER, true), TwoViewports(PLAIN, true), 2, 0.0, 2,
-    "layered renderers");
+  StrictCompare(
+    TwoViewports(GBUFFER, true), TwoViewports(PLAIN, true), 2, 0.0, 2, "layered renderers");
   // Resizing between frames.
   int size[2] = { 210, 260 };
   StrictCompare(TwoViewports(GBUFFER, false, size), TwoViewports(PLAIN, false, size), 2, 0.0, 2,
     "resized window");
   // Tiled rendering (vtkWindowToImageFilter magnification 3): no seams.
-  StrictCompare(TwoViewports(GBUFFER, false, nullptr, 3), TwoViewports(PLAIN, false, nullptr, 3),
-    2, 0.0, 2, "magnified x3 (tiled)");
+  StrictCompare(TwoViewports(GBUFFER, false, nullptr, 3), TwoViewports(PLAIN, false, nullptr, 3), 2,
+    0.0, 2, "magnified x3 (tiled)");
 
   // Only the requested channels are allocated; ReleaseGraphicsResources frees everything;
   // destroying the window prints no error.
@@ -167,20 +167,20 @@ int TestGBuffer(int, char*[])
       "channels allocated that nobody asked for");
     gbuffer->SetChannels(vtkStylizeGBufferPass::NORMAL);
     win->Render();
-    STYLIZE_CHECK(gbuffer->GetNormalTexture() && !gbuffer->GetPositionTexture(),
-      "NORMAL only: wrong channels");
+    STYLIZE_CHECK(
+      gbuffer->GetNormalTexture() && !gbuffer->GetPositionTexture(), "NORMAL only: wrong channels");
     gbuffer->SetChannels(vtkStylizeGBufferPass::POSITION);
     win->Render();
     STYLIZE_CHECK(!gbuffer->GetNormalTexture() && gbuffer->GetPositionTexture(),
       "POSITION only: wrong channels");
     vtkNew<vtkFloatArray> pos;
-    STYLIZE_CHECK(gbuffer->DownloadChannel(vtkStylizeGBufferPass::POSITION_BUFFER, pos),
-      "position download");
+    STYLIZE_CHECK(
+      gbuffer->DownloadChannel(vtkStylizeGBufferPass::POSITION_BUFFER, pos), "position download");
     STYLIZE_CHECK(!gbuffer->DownloadChannel(vtkStylizeGBufferPass::NORMAL_BUFFER, pos),
       "a normal download succeeded without a normal channel");
     gbuffer->ReleaseGraphicsResources(win);
-    STYLIZE_CHECK(!gbuffer->GetColorTexture() && !gbuffer->GetDepthTexture() &&
-        !gbuffer->GetPositionTexture(),
+    STYLIZE_CHECK(
+      !gbuffer->GetColorTexture() && !gbuffer->GetDepthTexture() && !gbuffer->GetPositionTexture(),
       "ReleaseGraphicsResources left textures");
     win->Render(); // works again after a release
     STYLIZE_CHECK(gbuffer->GetColorTexture() != nullptr, "no render after release");
@@ -206,8 +206,8 @@ int TestGBuffer(int, char*[])
     }
   }
   vtkOutputWindow::SetInstance(previous);
-  std::printf("messages printed while releasing and destroying: \"%s\"\n",
-    messages->GetOutput().c_str());
+  std::printf(
+    "messages printed while releasing and destroying: \"%s\"\n", messages->GetOutput().c_str());
   STYLIZE_CHECK(messages->GetOutput().empty(), "messages: %s", messages->GetOutput().c_str());
   return stylizetest::Failures == 0 ? 0 : 1;
 }

@@ -3,12 +3,12 @@
 // 1e6, near/far ratio 1e7, parallel and perspective projection: no NaN or Inf anywhere.
 #include "vtkCellArray.h"
 #include "vtkInformation.h"
-#include <limits>
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeTestUtilities.h"
+#include <limits>
 
 using namespace stylizetest;
 
@@ -64,8 +64,8 @@ void Render(int model, bool parallel, const SceneBuilder& build, Buffers& out,
       badNormals += std::abs(len - 1.0) > 1e-3 ? 1 : 0;
     }
   }
-  STYLIZE_CHECK(badNormals == 0, "%s: %lld non-unit normals", tag.c_str(),
-    static_cast<long long>(badNormals));
+  STYLIZE_CHECK(
+    badNormals == 0, "%s: %lld non-unit normals", tag.c_str(), static_cast<long long>(badNormals));
   std::printf("%-44s surface pixels %6lld, non-finite: none%s\n", tag.c_str(),
     static_cast<long long>(surface), ok ? "" : " (FAILED)");
 }
@@ -129,49 +129,76 @@ int TestLightingExtremes(int, char*[])
     {
       Buffers b;
       // beta = 0: pow(0, 0) must not produce NaN.
-      Render(model, parallel, [](vtkRenderer* r, vtkStylizeLightingPass*) { AddSphere(r, 0.0, 1.0); },
-        b, "specular power 0");
+      Render(
+        model, parallel, [](vtkRenderer* r, vtkStylizeLightingPass*) { AddSphere(r, 0.0, 1.0); }, b,
+        "specular power 0");
       // Zero-length and NaN normals fall back to the facet normal.
-      Render(model, parallel, [](vtkRenderer* r, vtkStylizeLightingPass*) { AddBadNormalsSurface(r, 0.0); },
-        b, "zero-length normals");
+      Render(
+        model, parallel,
+        [](vtkRenderer* r, vtkStylizeLightingPass*) { AddBadNormalsSurface(r, 0.0); }, b,
+        "zero-length normals");
       STYLIZE_CHECK(SurfacePixels(b) > 1000, "zero-length normals: surface not rendered");
-      Render(model, parallel, [&](vtkRenderer* r, vtkStylizeLightingPass*) { AddBadNormalsSurface(r, nan); },
-        b, "NaN normals");
+      Render(
+        model, parallel,
+        [&](vtkRenderer* r, vtkStylizeLightingPass*) { AddBadNormalsSurface(r, nan); }, b,
+        "NaN normals");
       STYLIZE_CHECK(SurfacePixels(b) > 1000, "NaN normals: surface not rendered");
       // 0 and 1000 lights.
-      Render(model, parallel, [](vtkRenderer* r, vtkStylizeLightingPass*) {
-        AddSphere(r);
-        SetupLights(r, "none");
-      }, b, "no lights");
-      Render(model, parallel, [](vtkRenderer* r, vtkStylizeLightingPass*) {
-        AddSphere(r);
-        SetupLights(r, "many:1000");
-      }, b, "1000 lights");
+      Render(
+        model, parallel,
+        [](vtkRenderer* r, vtkStylizeLightingPass*)
+        {
+          AddSphere(r);
+          SetupLights(r, "none");
+        },
+        b, "no lights");
+      Render(
+        model, parallel,
+        [](vtkRenderer* r, vtkStylizeLightingPass*)
+        {
+          AddSphere(r);
+          SetupLights(r, "many:1000");
+        },
+        b, "1000 lights");
       // Scene scaled by 1e-6 and 1e6 with lights scaled alike: finite, and the same picture.
       Buffers ref;
-      Render(model, parallel, [](vtkRenderer* r, vtkStylizeLightingPass*) {
-        AddTestActors(r, 1.0);
-        SetupLights(r, "kit", 1.0);
-        PlaceCamera(r, 1.0, 20, 15, 16.0, 0.37, r->GetActiveCamera()->GetParallelProjection());
-      }, ref, "scale 1");
+      Render(
+        model, parallel,
+        [](vtkRenderer* r, vtkStylizeLightingPass*)
+        {
+          AddTestActors(r, 1.0);
+          SetupLights(r, "kit", 1.0);
+          PlaceCamera(r, 1.0, 20, 15, 16.0, 0.37, r->GetActiveCamera()->GetParallelProjection());
+        },
+        ref, "scale 1");
       for (double scale : { 1e-6, 1e6 })
       {
-        Render(model, parallel, [scale](vtkRenderer* r, vtkStylizeLightingPass*) {
-          AddTestActors(r, scale);
-          SetupLights(r, "kit", scale);
-          PlaceCamera(r, scale, 20, 15, 16.0, 0.37, r->GetActiveCamera()->GetParallelProjection());
-        }, b, scale < 1 ? "scale 1e-6" : "scale 1e6");
+        Render(
+          model, parallel,
+          [scale](vtkRenderer* r, vtkStylizeLightingPass*)
+          {
+            AddTestActors(r, scale);
+            SetupLights(r, "kit", scale);
+            PlaceCamera(
+              r, scale, 20, 15, 16.0, 0.37, r->GetActiveCamera()->GetParallelProjection());
+          },
+          b, scale < 1 ? "scale 1e-6" : "scale 1e6");
         StrictCompare(b.Image, ref.Image, 2, 0.0, 2,
           std::string("scale ") + (scale < 1 ? "1e-6" : "1e6") + " vs 1, " +
-            vtkStylizeLightingPass::GetModelName(model) + (parallel ? " parallel" : " perspective"));
+            vtkStylizeLightingPass::GetModelName(model) +
+            (parallel ? " parallel" : " perspective"));
       }
       // Near/far ratio 1e7.
-      Render(model, parallel, [](vtkRenderer* r, vtkStylizeLightingPass*) {
-        AddTestActors(r, 1.0);
-        SetupLights(r, "kit", 1.0);
-        PlaceCamera(r, 1.0, 20, 15, 16.0, 0.37, r->GetActiveCamera()->GetParallelProjection());
-        SetNearFarRatio(r, 1e-7);
-      }, b, "near/far 1e-7");
+      Render(
+        model, parallel,
+        [](vtkRenderer* r, vtkStylizeLightingPass*)
+        {
+          AddTestActors(r, 1.0);
+          SetupLights(r, "kit", 1.0);
+          PlaceCamera(r, 1.0, 20, 15, 16.0, 0.37, r->GetActiveCamera()->GetParallelProjection());
+          SetNearFarRatio(r, 1e-7);
+        },
+        b, "near/far 1e-7");
       STYLIZE_CHECK(SurfacePixels(b) > 1000, "near/far 1e7: surface not rendered");
     }
   }
@@ -179,12 +206,16 @@ int TestLightingExtremes(int, char*[])
   // pd = 0 gives black: Comic with zero gray levels, no ambient and no specular.
   {
     Buffers b;
-    Render(vtkStylizeLightingPass::COMIC, false, [](vtkRenderer* r, vtkStylizeLightingPass* l) {
-      AddSphere(r, 20, 0.0, 0.0);
-      l->SetSubjectFactor(0.0);
-      l->SetGrayLevelsNear(0);
-      l->SetGrayLevelsFar(0);
-    }, b, "comic pd = 0");
+    Render(
+      vtkStylizeLightingPass::COMIC, false,
+      [](vtkRenderer* r, vtkStylizeLightingPass* l)
+      {
+        AddSphere(r, 20, 0.0, 0.0);
+        l->SetSubjectFactor(0.0);
+        l->SetGrayLevelsNear(0);
+        l->SetGrayLevelsFar(0);
+      },
+      b, "comic pd = 0");
     double brightest = 0;
     for (vtkIdType i = 0; i < b.Color->GetNumberOfTuples(); ++i)
     {
@@ -229,7 +260,8 @@ int TestLightingExtremes(int, char*[])
 int TestLightingModelSwitch(int, char*[])
 {
   const int w = 240, h = 180;
-  auto render = [&](vtkStylizeLightingPass* pass, vtkRenderWindow* win) {
+  auto render = [&](vtkStylizeLightingPass* pass, vtkRenderWindow* win)
+  {
     win->Render();
     return Capture(win);
   };

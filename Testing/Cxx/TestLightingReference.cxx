@@ -121,7 +121,8 @@ dvec3 Shade(const RefParams& p, const RefMaterial& m, const std::vector<RefLight
     Ambiguous = Ambiguous || std::abs(ndl) < 1e-4;
     D += l.Color * (att * std::max(0.0, ndl));
     dvec3 H = glm::normalize(L + V);
-    S += l.Color * (att * (ndl >= 0 ? 1.0 : 0.0) * SafePow(std::max(0.0, glm::dot(N, H)), m.SpecPow));
+    S +=
+      l.Color * (att * (ndl >= 0 ? 1.0 : 0.0) * SafePow(std::max(0.0, glm::dot(N, H)), m.SpecPow));
   }
   if (p.Model == 2)
   {
@@ -224,7 +225,8 @@ int RunCase(int model, const std::string& setup, bool parallel, bool perActor)
     ren->AutomaticLightCreationOff();
     world.push_back({ { 3, 4, 5 }, { 0, 0, 0 }, { 0.9, 0.8, 0.7 }, false, 30, 1, { 1, 0, 0 } });
     world.push_back({ { -4, 1, 2 }, { 0, 0, 0 }, { 0.3, 0.4, 0.6 }, false, 30, 1, { 1, 0, 0 } });
-    world.push_back({ { 0, 2.5, 3 }, { 0, 0, 0 }, { 0.8, 0.7, 0.5 }, true, 180, 1, { 0.3, 0.1, 0.05 } });
+    world.push_back(
+      { { 0, 2.5, 3 }, { 0, 0, 0 }, { 0.8, 0.7, 0.5 }, true, 180, 1, { 0.3, 0.1, 0.05 } });
     world.push_back({ { 0.5, 3, 1.5 }, { 0.3, 0, 0 }, { 1, 1, 0.6 }, true, 20, 3, { 1, 0, 0 } });
     for (const auto& w : world)
     {
@@ -321,7 +323,8 @@ int RunCase(int model, const std::string& setup, bool parallel, bool perActor)
       continue;
     }
     Ambiguous = false;
-    dvec3 ref = Shade(params, m, lights, dvec3(nv[0], nv[1], nv[2]), dvec3(pv[0], pv[1], pv[2]), parallel);
+    dvec3 ref =
+      Shade(params, m, lights, dvec3(nv[0], nv[1], nv[2]), dvec3(pv[0], pv[1], pv[2]), parallel);
     ref = glm::clamp(ref, 0.0, 1.0);
     if (Ambiguous)
     {
@@ -343,13 +346,16 @@ int RunCase(int model, const std::string& setup, bool parallel, bool perActor)
       }
     }
   }
-  std::printf("model %s, lights %s, %s%s: %d probes (%d on discontinuities skipped), max |GPU-CPU| = "
-              "%.2e (%.3f levels of 255)\n",
-    vtkStylizeLightingPass::GetModelName(model), setup.c_str(), parallel ? "parallel" : "perspective",
-    perActor ? ", per-actor settings" : "", probes, skipped, worst, worst * 255);
+  std::printf(
+    "model %s, lights %s, %s%s: %d probes (%d on discontinuities skipped), max |GPU-CPU| = "
+    "%.2e (%.3f levels of 255)\n",
+    vtkStylizeLightingPass::GetModelName(model), setup.c_str(),
+    parallel ? "parallel" : "perspective", perActor ? ", per-actor settings" : "", probes, skipped,
+    worst, worst * 255);
   STYLIZE_CHECK(probes > 300, "too few probes: %d", probes);
   STYLIZE_CHECK(lighting->GetNumberOfLights() == static_cast<int>(lights.size()),
-    "packed %d lights, expected %d", lighting->GetNumberOfLights(), static_cast<int>(lights.size()));
+    "packed %d lights, expected %d", lighting->GetNumberOfLights(),
+    static_cast<int>(lights.size()));
   win->Finalize();
   return 0;
 }

@@ -61,8 +61,8 @@ vtkSmartPointer<vtkImageData> ArtPixels(vtkImageData* img, int block)
   {
     for (int i = 0; i < nx; ++i)
     {
-      const auto p = Pixel(img, std::min(i * block + block / 2, d[0] - 1),
-        std::min(j * block + block / 2, d[1] - 1));
+      const auto p = Pixel(
+        img, std::min(i * block + block / 2, d[0] - 1), std::min(j * block + block / 2, d[1] - 1));
       for (int c = 0; c < 3; ++c)
       {
         o->SetComponent(static_cast<vtkIdType>(j) * nx + i, c, p[c]);
@@ -166,7 +166,8 @@ int TestPixelArtRegression(int argc, char* argv[])
     { "four-grays", [](vtkRenderer*, P* p) { p->SetPaletteToFourGrays(); } },
     { "palette16", [](vtkRenderer*, P* p) { p->SetPalette(P::PALETTE16); } },
     { "custom",
-      [](vtkRenderer*, P* p) {
+      [](vtkRenderer*, P* p)
+      {
         for (const auto& c : std::vector<std::array<double, 3>>{ { 0.1, 0.1, 0.2 },
                { 0.9, 0.9, 0.8 }, { 0.8, 0.3, 0.2 }, { 0.3, 0.5, 0.8 }, { 0.5, 0.5, 0.5 } })
         {
@@ -176,31 +177,36 @@ int TestPixelArtRegression(int argc, char* argv[])
       } },
     { "colormap", [](vtkRenderer*, P* p) { p->SetPalette(P::COLORMAP); } },
     { "sobel",
-      [](vtkRenderer*, P* p) {
+      [](vtkRenderer*, P* p)
+      {
         p->SetEdgeDetector(P::SOBEL);
         p->DepthEdgesOff();
       } },
     { "canny-only", [](vtkRenderer*, P* p) { p->DepthEdgesOff(); } },
     { "geometric-edges",
-      [](vtkRenderer*, P* p) {
+      [](vtkRenderer*, P* p)
+      {
         p->SetEdgeDetector(P::NO_EDGES);
         p->NormalEdgesOn();
         p->SetOutlineColor(0.2, 0.1, 0.4);
       } },
     { "no-edges",
-      [](vtkRenderer*, P* p) {
+      [](vtkRenderer*, P* p)
+      {
         p->SetEdgeDetector(P::NO_EDGES);
         p->DepthEdgesOff();
       } },
     { "edge-layer", [](vtkRenderer*, P* p) { p->SetLayer(P::EDGES); } },
     { "pixelated", [](vtkRenderer*, P* p) { p->SetLayer(P::PIXELATED); } },
     { "surface-anchor",
-      [](vtkRenderer*, P* p) {
+      [](vtkRenderer*, P* p)
+      {
         p->SetDitherAnchor(P::SURFACE);
         p->SetPaletteToFourGrays();
       } },
     { "dither-size-2",
-      [](vtkRenderer*, P* p) {
+      [](vtkRenderer*, P* p)
+      {
         p->SetDitherSize(2);
         p->SetLevels(2);
       } },
@@ -218,7 +224,8 @@ int TestPixelArtDither(int, char*[])
   using P = vtkPixelArtPass;
   const int nx = 64, ny = 16, block = 4;
   const int world[2] = { 5, 3 }; // the world origin, in cells from the lower-left corner
-  auto rampColour = [](int i, int j, bool colour) -> std::array<unsigned char, 3> {
+  auto rampColour = [](int i, int j, bool colour) -> std::array<unsigned char, 3>
+  {
     const int k = (j * 64 + i) / 4; // 0..255, each value on 4 art pixels
     if (!colour)
     {
@@ -247,8 +254,8 @@ int TestPixelArtDither(int, char*[])
     { "3 levels, half strength", P::LEVELS, 3, 1, 0.5, P::SCREEN, true },
     { "custom palette", P::CUSTOM, 0, 1, 1.0, P::SCREEN, true },
   };
-  const std::vector<std::array<double, 3>> custom = { { 0, 0, 0 }, { 1, 1, 1 },
-    { 0.8, 0.2, 0.1 }, { 0.1, 0.3, 0.9 } };
+  const std::vector<std::array<double, 3>> custom = { { 0, 0, 0 }, { 1, 1, 1 }, { 0.8, 0.2, 0.1 },
+    { 0.1, 0.3, 0.9 } };
   // The pass's spread for a list palette: the median distance to the nearest other colour.
   std::vector<double> nearest;
   for (size_t i = 0; i < custom.size(); ++i)
@@ -307,9 +314,8 @@ int TestPixelArtDither(int, char*[])
           const auto in = rampColour(i, j, k.Colour);
           const int qx = k.Anchor == P::GRID ? i - world[0] : i;
           const int qy = k.Anchor == P::GRID ? j - world[1] : j;
-          const double t =
-            0.5 + (Threshold(FloorDiv(qx, k.DitherSize), FloorDiv(qy, k.DitherSize)) - 0.5) *
-              k.Strength;
+          const double t = 0.5 +
+            (Threshold(FloorDiv(qx, k.DitherSize), FloorDiv(qy, k.DitherSize)) - 0.5) * k.Strength;
           double expected[3];
           const double c[3] = { in[0] / 255.0, in[1] / 255.0, in[2] / 255.0 };
           if (k.Palette == P::LEVELS)
@@ -379,7 +385,8 @@ namespace
 std::vector<int> ReferenceEdges(const std::vector<double>& gray, int nx, int ny, bool canny,
   double low, double high, int iterations)
 {
-  auto at = [&](const std::vector<double>& a, int i, int j) {
+  auto at = [&](const std::vector<double>& a, int i, int j)
+  {
     i = std::min(std::max(i, 0), nx - 1);
     j = std::min(std::max(j, 0), ny - 1);
     return a[static_cast<size_t>(j) * nx + i];
@@ -523,9 +530,8 @@ struct EdgeStats
 EdgeStats Stats(const std::vector<int>& e, int nx, int ny)
 {
   EdgeStats s;
-  auto at = [&](int i, int j) {
-    return i >= 0 && j >= 0 && i < nx && j < ny && e[static_cast<size_t>(j) * nx + i] != 0;
-  };
+  auto at = [&](int i, int j)
+  { return i >= 0 && j >= 0 && i < nx && j < ny && e[static_cast<size_t>(j) * nx + i] != 0; };
   for (int j = 0; j < ny; ++j)
   {
     for (int i = 0; i < nx; ++i)
@@ -635,7 +641,8 @@ int TestPixelArtCanny(int, char*[])
   {
     const auto strong = ReferenceEdges(gray, nx, ny, true, 0.25, 0.5, 0);
     const auto full = ReferenceEdges(gray, nx, ny, true, 0.25, 0.5, 64);
-    auto count = [&](const std::vector<int>& e, int i0, int i1, int j0, int j1) {
+    auto count = [&](const std::vector<int>& e, int i0, int i1, int j0, int j1)
+    {
       long long n = 0;
       for (int j = j0; j < j1; ++j)
       {
@@ -662,7 +669,8 @@ int TestPixelArtCanny(int, char*[])
   for (int detector : { P::SOBEL, P::CANNY })
   {
     auto img = RenderThroughPass<P>(
-      [detector](vtkRenderer*, P* p) {
+      [detector](vtkRenderer*, P* p)
+      {
         p->SetPixelSize(block);
         p->SetEdgeDetector(detector);
         p->DepthEdgesOff();
@@ -686,8 +694,8 @@ int TestPixelArtCanny(int, char*[])
 namespace
 {
 /** The art pixels (one sample each) of a window rendered with the pass's last grid. */
-std::vector<std::array<double, 3>> ArtColours(vtkRenderWindow* win, vtkPixelArtPass* pass,
-  int& nx, int& ny)
+std::vector<std::array<double, 3>> ArtColours(
+  vtkRenderWindow* win, vtkPixelArtPass* pass, int& nx, int& ny)
 {
   int block[2], grid[2];
   pass->GetLastGrid(block, grid);
@@ -727,12 +735,14 @@ int TestPixelArtStability(int argc, char* argv[])
   {
     for (bool stable : { false, true })
     {
-      auto scene = MakeStyledScene<P>(W, H, true, [&](P* pass) {
-        pass->SetMode(mode);
-        pass->SetPixelSize(block);
-        pass->SetSnapToGrid(stable);
-        pass->SetDitherAnchor(stable ? P::GRID : P::SCREEN);
-      });
+      auto scene = MakeStyledScene<P>(W, H, true,
+        [&](P* pass)
+        {
+          pass->SetMode(mode);
+          pass->SetPixelSize(block);
+          pass->SetSnapToGrid(stable);
+          pass->SetDitherAnchor(stable ? P::GRID : P::SCREEN);
+        });
       vtkRenderWindow* win = scene.Window;
       vtkRenderer* ren = scene.Renderer;
       P* pass = scene.Pass;
@@ -816,11 +826,13 @@ int TestPixelArtStability(int argc, char* argv[])
   {
     for (int anchor : { P::SCREEN, P::GRID, P::SURFACE })
     {
-      auto scene = MakeStyledScene<P>(W, H, false, [&](P* pass) {
-        pass->SetMode(mode);
-        pass->SetPixelSize(block);
-        pass->SetDitherAnchor(anchor);
-      });
+      auto scene = MakeStyledScene<P>(W, H, false,
+        [&](P* pass)
+        {
+          pass->SetMode(mode);
+          pass->SetPixelSize(block);
+          pass->SetDitherAnchor(anchor);
+        });
       vtkRenderWindow* win = scene.Window;
       vtkRenderer* ren = scene.Renderer;
       P* pass = scene.Pass;
@@ -867,8 +879,10 @@ int TestPixelArtFidelity(int, char*[])
   {
     for (int layer : { P::PIXELATED, P::PIXEL_ART })
     {
-      auto configure = [&](int mode, int size) {
-        return [=](vtkRenderer*, P* p) {
+      auto configure = [&](int mode, int size)
+      {
+        return [=](vtkRenderer*, P* p)
+        {
           p->SetMode(mode);
           p->SetPixelSize(size);
           p->SetLayer(layer);
@@ -907,8 +921,8 @@ int TestPixelArtFidelity(int, char*[])
       // at 2 px its centre sample decides silhouettes about as well as a 2x2 majority.
       STYLIZE_CHECK(block < 8 || ssim[P::FAITHFUL] > ssim[P::FAST],
         "faithful is not closer to the supersampled reference than fast at %d px", block);
-      STYLIZE_CHECK(ssim[P::FAITHFUL] > 0.95, "faithful SSIM %.3f at %d px", ssim[P::FAITHFUL],
-        block);
+      STYLIZE_CHECK(
+        ssim[P::FAITHFUL] > 0.95, "faithful SSIM %.3f at %d px", ssim[P::FAITHFUL], block);
     }
   }
   return Failures == 0 ? 0 : 1;
@@ -924,13 +938,15 @@ int TestPixelArtMagnify(int, char*[])
     for (bool parallel : { false, true })
     {
       auto tiled = RenderThroughPass<P>(
-        [mode](vtkRenderer*, P* p) {
+        [mode](vtkRenderer*, P* p)
+        {
           p->SetMode(mode);
           p->SetPixelSize(5); // 300 / 10 and 400 / 10: blocks straddle the tile borders
         },
         W, H, parallel, 2);
       auto direct = RenderThroughPass<P>(
-        [mode](vtkRenderer*, P* p) {
+        [mode](vtkRenderer*, P* p)
+        {
           p->SetMode(mode);
           p->SetPixelSize(10);
         },
@@ -962,17 +978,16 @@ int TestPixelArtExtremes(int argc, char* argv[])
     { "pixel size 1", 240, 180, 1.0, [](vtkRenderer*, P* p) { p->SetPixelSize(1); }, true },
     { "pixel size = window", 240, 180, 1.0, [](vtkRenderer*, P* p) { p->SetPixelSize(240); },
       true },
-    { "pixel size 8192", 240, 180, 1.0, [](vtkRenderer*, P* p) { p->SetPixelSize(100000); },
-      true },
+    { "pixel size 8192", 240, 180, 1.0, [](vtkRenderer*, P* p) { p->SetPixelSize(100000); }, true },
     { "1x1 window", 1, 1, 1.0, nullptr, false },
     { "0 lights", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetupLights(r, "none"); }, true },
     { "500 lights", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetupLights(r, "many:500"); }, true },
     { "scale 1e-6", 240, 180, 1e-6, nullptr, true },
     { "scale 1e6", 240, 180, 1e6, nullptr, true },
-    { "near/far 1e7", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetNearFarRatio(r, 1e-7); },
-      true },
+    { "near/far 1e7", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetNearFarRatio(r, 1e-7); }, true },
     { "every option at its limits", 240, 180, 1.0,
-      [](vtkRenderer*, P* p) {
+      [](vtkRenderer*, P* p)
+      {
         const double nan = std::numeric_limits<double>::quiet_NaN();
         p->SetLowThreshold(nan);
         p->SetHighThreshold(-1);
@@ -991,19 +1006,17 @@ int TestPixelArtExtremes(int argc, char* argv[])
       },
       true },
     { "colormap palette without scalars", 240, 180, 1.0,
-      [](vtkRenderer* r, P* p) {
+      [](vtkRenderer* r, P* p)
+      {
         p->SetPalette(P::COLORMAP);
         ForEachActor(r, [](vtkActor* a) { a->GetMapper()->ScalarVisibilityOff(); });
       },
       true },
     { "lines and points only", 240, 180, 1.0,
-      [](vtkRenderer* r, P*) {
-        ForEachActor(r, [](vtkActor* a) { a->GetProperty()->SetRepresentationToWireframe(); });
-      },
+      [](vtkRenderer* r, P*)
+      { ForEachActor(r, [](vtkActor* a) { a->GetProperty()->SetRepresentationToWireframe(); }); },
       true },
-    { "empty data", 240, 180, 1.0,
-      [](vtkRenderer* r, P*) { SetEmptyScene(r); },
-      false },
+    { "empty data", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetEmptyScene(r); }, false },
   };
   std::vector<Case> all = cases;
   if (huge)
@@ -1041,8 +1054,8 @@ int TestPixelArtExtremes(int argc, char* argv[])
         const double fraction = static_cast<double>(ink) / (double(k.Width) * k.Height);
         int block[2], grid[2];
         pass->GetLastGrid(block, grid);
-        std::printf("%-48s grid %dx%d of %d px: %.2f%% non-white\n", tag.c_str(), grid[0],
-          grid[1], block[0], 100.0 * fraction);
+        std::printf("%-48s grid %dx%d of %d px: %.2f%% non-white\n", tag.c_str(), grid[0], grid[1],
+          block[0], 100.0 * fraction);
         // (A faithful SURFACE anchor draws the surface in texels fixed to it, each the world size
         // of an art pixel at the focal point: one art pixel may then cover several.)
         const bool texels = mode == P::FAITHFUL && pass->GetDitherAnchor() == P::SURFACE;
@@ -1066,8 +1079,8 @@ int TestPixelArtExtremes(int argc, char* argv[])
         {
           STYLIZE_CHECK(!k.ExpectInk || fraction > 0.01, "%s: nothing drawn", tag.c_str());
         }
-        STYLIZE_CHECK(k.ExpectInk || k.Width == 1 || ink == 0, "%s: ink on an empty scene",
-          tag.c_str());
+        STYLIZE_CHECK(
+          k.ExpectInk || k.Width == 1 || ink == 0, "%s: ink on an empty scene", tag.c_str());
         STYLIZE_CHECK(grid[0] >= 1 && grid[1] >= 1 && block[0] >= 1, "%s: bad grid", tag.c_str());
         win->Finalize();
       }

@@ -10,9 +10,9 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkSphereSource.h"
+#include "vtkStylizeAnalyticSurfaces.h"
 #include "vtkStylizeImageMetrics.h"
 #include "vtkStylizePrincipalCurvatures.h"
-#include "vtkStylizeAnalyticSurfaces.h"
 #include "vtkStylizeTestUtilities.h"
 
 #include <algorithm>
@@ -65,10 +65,10 @@ Errors Compare(vtkPolyData* mesh, const std::function<Truth(const double*)>& tru
   {
     return e;
   }
-  for (const char* name : { "PrincipalCurvatureMax", "PrincipalCurvatureMin",
-         "PrincipalDirectionMax", "PrincipalDirectionMin", "PrincipalDirectionBisector",
-         "PrincipalDirectionMinAbs", "PrincipalDirectionMaxAbs", "MeanCurvature",
-         "GaussianCurvature" })
+  for (const char* name :
+    { "PrincipalCurvatureMax", "PrincipalCurvatureMin", "PrincipalDirectionMax",
+      "PrincipalDirectionMin", "PrincipalDirectionBisector", "PrincipalDirectionMinAbs",
+      "PrincipalDirectionMaxAbs", "MeanCurvature", "GaussianCurvature" })
   {
     vtkDataArray* a = out->GetPointData()->GetArray(name);
     STYLIZE_CHECK(a && vtkStylizeImageMetrics::CountNonFinite(a) == 0, "%s: NaN or Inf", name);
@@ -101,8 +101,8 @@ void Report(const std::string& name, const Errors& e, double maxMedianK, double 
 {
   const double mk = Percentile(e.Curvature, 0.5), pk = Percentile(e.Curvature, 0.95);
   const double xk = Percentile(e.Curvature, 1.0);
-  std::printf("%-34s curvature error / scale: median %.4f, 95%% %.4f, max %.4f", name.c_str(), mk,
-    pk, xk);
+  std::printf(
+    "%-34s curvature error / scale: median %.4f, 95%% %.4f, max %.4f", name.c_str(), mk, pk, xk);
   if (!e.Angle.empty())
   {
     std::printf("; direction error: median %.2f deg, 95%% %.2f deg, max %.2f deg",
@@ -110,12 +110,12 @@ void Report(const std::string& name, const Errors& e, double maxMedianK, double 
   }
   std::printf(" (%zu points)\n", e.Curvature.size() / 2);
   STYLIZE_CHECK(e.Curvature.size() > 100, "%s: too few points compared", name.c_str());
-  STYLIZE_CHECK(mk <= maxMedianK && pk <= maxP95K, "%s: curvature error %.4f / %.4f", name.c_str(),
-    mk, pk);
+  STYLIZE_CHECK(
+    mk <= maxMedianK && pk <= maxP95K, "%s: curvature error %.4f / %.4f", name.c_str(), mk, pk);
   if (!e.Angle.empty())
   {
-    STYLIZE_CHECK(Percentile(e.Angle, 0.5) <= maxMedianAngle &&
-        Percentile(e.Angle, 0.95) <= maxP95Angle,
+    STYLIZE_CHECK(
+      Percentile(e.Angle, 0.5) <= maxMedianAngle && Percentile(e.Angle, 0.95) <= maxP95Angle,
       "%s: direction error %.2f / %.2f deg", name.c_str(), Percentile(e.Angle, 0.5),
       Percentile(e.Angle, 0.95));
   }
@@ -137,7 +137,10 @@ int TestPrincipalCurvatures(int, char*[])
       s->SetPhiResolution(32 * level);
       auto mesh = CleanMesh(s->GetOutputPort());
       auto e = Compare(
-        mesh, [](const double*) { return Truth{ 0.5, 0.5, { 0, 0, 0 }, { 0, 0, 0 }, true }; },
+        mesh,
+        [](const double*) {
+          return Truth{ 0.5, 0.5, { 0, 0, 0 }, { 0, 0, 0 }, true };
+        },
         0.5);
       Report("sphere r=2" + tag, e, 0.005, 0.03, 0, 0);
     }
@@ -147,7 +150,8 @@ int TestPrincipalCurvatures(int, char*[])
       auto mesh = CylinderMesh(r, h, 64 * level, 32 * level);
       auto e = Compare(
         mesh,
-        [&](const double* x) {
+        [&](const double* x)
+        {
           Truth t = CylinderTruth(r, x);
           t.Use = t.Use && std::abs(x[2]) < 0.5 * h - 1e-6; // not the boundary rows
           return t;
@@ -160,9 +164,7 @@ int TestPrincipalCurvatures(int, char*[])
       const double R = 2.0, a = 0.6;
       auto mesh = TorusMesh(R, a, 96 * level, 48 * level);
       auto e = Compare(
-        mesh,
-        [&](const double* x) { return TorusTruth(R, a, x); },
-        1.0 / a);
+        mesh, [&](const double* x) { return TorusTruth(R, a, x); }, 1.0 / a);
       Report("torus R=2 a=0.6" + tag, e, 0.005, 0.01, 0.5, 1.0);
       torusMedian[level - 1] = Percentile(e.Curvature, 0.5);
     }
@@ -172,9 +174,7 @@ int TestPrincipalCurvatures(int, char*[])
       const double ax[3] = { 3.0, 2.0, 1.0 };
       auto mesh = EllipsoidMesh(ax, 128 * level, 64 * level);
       auto e = Compare(
-        mesh,
-        [&](const double* x) { return EllipsoidTruth(ax, x); },
-        1.0);
+        mesh, [&](const double* x) { return EllipsoidTruth(ax, x); }, 1.0);
       Report("ellipsoid 3x2x1" + tag, e, 0.005, 0.03, 0.5, 2.0);
     }
   }
@@ -204,7 +204,8 @@ int TestPrincipalCurvatures(int, char*[])
       filter->SetInputData(mesh);
       filter->SetSmoothingRadius(smoothed ? 0.05 : 0.0);
       filter->Update();
-      vtkDataArray* along = filter->GetOutput()->GetPointData()->GetArray("PrincipalDirectionMinAbs");
+      vtkDataArray* along =
+        filter->GetOutput()->GetPointData()->GetArray("PrincipalDirectionMinAbs");
       std::vector<double> angles;
       vtkIdType undefined = 0;
       for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
@@ -231,12 +232,13 @@ int TestPrincipalCurvatures(int, char*[])
         static_cast<long long>(undefined));
     }
     STYLIZE_CHECK(p95[1] < 5.0 && p95[1] < 0.5 * p95[0],
-      "noisy cylinder: smoothing does not recover the axis (95%% %.2f -> %.2f deg)", p95[0], p95[1]);
+      "noisy cylinder: smoothing does not recover the axis (95%% %.2f -> %.2f deg)", p95[0],
+      p95[1]);
   }
 
   // Second-order convergence: halving the edge length divides the error by about 4.
-  STYLIZE_CHECK(torusMedian[1] < 0.4 * torusMedian[0], "torus: error does not converge (%.5f -> %.5f)",
-    torusMedian[0], torusMedian[1]);
+  STYLIZE_CHECK(torusMedian[1] < 0.4 * torusMedian[0],
+    "torus: error does not converge (%.5f -> %.5f)", torusMedian[0], torusMedian[1]);
 
   // Degenerate input: empty data, a single triangle, duplicate points, lines only.
   {

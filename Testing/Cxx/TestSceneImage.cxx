@@ -12,8 +12,8 @@
 #include "vtkStylizeTestUtilities.h"
 
 #include <algorithm>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 using namespace stylizetest;
@@ -105,8 +105,7 @@ void CompareChannels(bool parallel)
   const double depthMax = Percentile(depthErrors, 1.0);
   std::printf("%s: %zu surface pixels, %lld on one side only; normal error median %.3f deg, "
               "90th percentile %.3f deg; linear depth relative error median %.2e, max %.2e\n",
-    projection, angles.size(), static_cast<long long>(onlyOne), median, p90, depthMedian,
-    depthMax);
+    projection, angles.size(), static_cast<long long>(onlyOne), median, p90, depthMedian, depthMax);
   STYLIZE_CHECK(angles.size() > 30000, "%s: too few surface pixels", projection);
   STYLIZE_CHECK(onlyOne == 0, "%s: coverage differs", projection);
   // Tolerances: the test objects are tessellated and shaded with interpolated normals, while the
@@ -211,14 +210,17 @@ void Extremes()
         STYLIZE_CHECK(std::abs(len - 1.0) < 1e-3, "%s: normal length %g", c.Name, len);
       }
     }
-    std::printf("%s: %lld surface pixels from the image\n", c.Name, static_cast<long long>(surface));
+    std::printf(
+      "%s: %lld surface pixels from the image\n", c.Name, static_cast<long long>(surface));
     STYLIZE_CHECK(c.Empty ? surface == 0 : surface > 0, "%s: surface pixels %lld", c.Name,
       static_cast<long long>(surface));
     scene.Renderer->SetPass(nullptr);
 
     // Each style over the image: ink where there is a surface.
-    std::vector<vtkSmartPointer<vtkStylizeStylePass>> styles = { vtkSmartPointer<vtkComicPass>::New(),
-      vtkSmartPointer<vtkPixelArtPass>::New(), vtkSmartPointer<vtkSketchPass>::New() };
+    std::vector<vtkSmartPointer<vtkStylizeStylePass>> styles = {
+      vtkSmartPointer<vtkComicPass>::New(), vtkSmartPointer<vtkPixelArtPass>::New(),
+      vtkSmartPointer<vtkSketchPass>::New()
+    };
     for (vtkStylizeStylePass* style : styles)
     {
       vtkNew<vtkCameraPass> camera;

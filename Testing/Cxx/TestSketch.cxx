@@ -26,12 +26,14 @@ using Configure = std::function<void(vtkRenderer*, vtkSketchPass*)>;
 /** Puts vtkStylizePrincipalCurvatures behind every actor's mapper (model-space directions). */
 void AddCurvatureArrays(vtkRenderer* ren)
 {
-  ForEachActor(ren, [](vtkActor* a) {
-    vtkMapper* m = a->GetMapper();
-    vtkNew<vtkStylizePrincipalCurvatures> filter;
-    filter->SetInputConnection(m->GetInputConnection(0, 0));
-    m->SetInputConnection(filter->GetOutputPort());
-  });
+  ForEachActor(ren,
+    [](vtkActor* a)
+    {
+      vtkMapper* m = a->GetMapper();
+      vtkNew<vtkStylizePrincipalCurvatures> filter;
+      filter->SetInputConnection(m->GetInputConnection(0, 0));
+      m->SetInputConnection(filter->GetOutputPort());
+    });
 }
 
 /** Surface pixels whose resolved direction is missing or not unit length; all non-finite. */
@@ -72,17 +74,21 @@ int TestSketchRegression(int argc, char* argv[])
     { "sparse", [](vtkRenderer*, P* p) { p->SetNoise(P::SPARSE); } },
     { "bisector", [](vtkRenderer*, P* p) { p->SetDirection(P::BISECTOR); } },
     { "minimum", [](vtkRenderer*, P* p) { p->SetDirection(P::MINIMUM); } },
-    { "neighbors-2", [](vtkRenderer*, P* p) {
+    { "neighbors-2",
+      [](vtkRenderer*, P* p)
+      {
         p->SetNeighbors(2);
         p->SetLayer(P::DIRECTIONS);
       } },
     { "model",
-      [](vtkRenderer* r, P* p) {
+      [](vtkRenderer* r, P* p)
+      {
         AddCurvatureArrays(r);
         p->SetDirectionSource(P::MODEL);
       } },
     { "model-directions",
-      [](vtkRenderer* r, P* p) {
+      [](vtkRenderer* r, P* p)
+      {
         AddCurvatureArrays(r);
         p->SetDirectionSource(P::MODEL);
         p->SetLayer(P::DIRECTIONS);
@@ -90,19 +96,22 @@ int TestSketchRegression(int argc, char* argv[])
     { "screen-lic", [](vtkRenderer*, P* p) { p->SetLicMode(P::SCREEN_2D); } },
     { "screen-noise", [](vtkRenderer*, P* p) { p->SetNoiseSpace(P::SCREEN_SPACE); } },
     { "long-strokes",
-      [](vtkRenderer*, P* p) {
+      [](vtkRenderer*, P* p)
+      {
         p->SetStepLength(4);
         p->SetSteps(16);
       } },
     { "high-contrast",
-      [](vtkRenderer*, P* p) {
+      [](vtkRenderer*, P* p)
+      {
         p->SetContrast(2.0);
         p->SetBlurStride(6);
         p->SetBrightThresholds(0.6, 0.8);
       } },
     { "no-cross", [](vtkRenderer*, P* p) { p->CrossHatchingOff(); } },
     { "tinted",
-      [](vtkRenderer*, P* p) {
+      [](vtkRenderer*, P* p)
+      {
         p->TintedOn();
         p->SetPencilColor(0.2, 0.1, 0.3);
       } },
@@ -182,7 +191,8 @@ int TestSketchNoise(int, char*[])
 int TestSketchExtremes(int, char*[])
 {
   using P = vtkSketchPass;
-  auto only = [](vtkRenderer* r, vtkPolyDataAlgorithm* source) {
+  auto only = [](vtkRenderer* r, vtkPolyDataAlgorithm* source)
+  {
     r->RemoveAllViewProps();
     vtkNew<vtkPolyDataMapper> m;
     m->SetInputConnection(source->GetOutputPort());
@@ -200,7 +210,8 @@ int TestSketchExtremes(int, char*[])
   };
   const std::vector<Case> cases = {
     { "sphere only (umbilic)", 240, 180, 1.0,
-      [&](vtkRenderer* r, P*) {
+      [&](vtkRenderer* r, P*)
+      {
         vtkNew<vtkSphereSource> s;
         s->SetRadius(3.0);
         s->SetThetaResolution(64);
@@ -209,7 +220,8 @@ int TestSketchExtremes(int, char*[])
       },
       true },
     { "plane only (planar)", 240, 180, 1.0,
-      [&](vtkRenderer* r, P*) {
+      [&](vtkRenderer* r, P*)
+      {
         vtkNew<vtkPlaneSource> s;
         s->SetOrigin(-4, -3, 0);
         s->SetPoint1(4, -3, 0);
@@ -219,7 +231,8 @@ int TestSketchExtremes(int, char*[])
       },
       true },
     { "cylinder through the near plane", 240, 180, 1.0,
-      [&](vtkRenderer* r, P*) {
+      [&](vtkRenderer* r, P*)
+      {
         vtkNew<vtkCylinderSource> c;
         c->SetRadius(1.0);
         c->SetHeight(40.0);
@@ -240,11 +253,11 @@ int TestSketchExtremes(int, char*[])
     { "200 lights", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetupLights(r, "many:200"); }, true },
     { "scale 1e-6", 240, 180, 1e-6, nullptr, true },
     { "scale 1e6", 240, 180, 1e6, nullptr, true },
-    { "near/far 1e7", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetNearFarRatio(r, 1e-7); },
-      true },
+    { "near/far 1e7", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetNearFarRatio(r, 1e-7); }, true },
     { "1x1 window", 1, 1, 1.0, nullptr, false },
     { "every option at its limits", 240, 180, 1.0,
-      [](vtkRenderer*, P* p) {
+      [](vtkRenderer*, P* p)
+      {
         const double nan = std::numeric_limits<double>::quiet_NaN();
         p->SetNeighbors(-5);
         p->SetNeighborSpacing(nan);
@@ -269,24 +282,25 @@ int TestSketchExtremes(int, char*[])
     { "model mode without arrays", 240, 180, 1.0,
       [](vtkRenderer*, P* p) { p->SetDirectionSource(P::MODEL); }, true },
     { "lines and points only", 240, 180, 1.0,
-      [](vtkRenderer* r, P*) {
+      [](vtkRenderer* r, P*)
+      {
         int i = 0;
-        ForEachActor(r, [&i](vtkActor* a) {
-          if (i++ % 2)
+        ForEachActor(r,
+          [&i](vtkActor* a)
           {
-            a->GetProperty()->SetRepresentationToWireframe();
-          }
-          else
-          {
-            a->GetProperty()->SetRepresentationToPoints();
-            a->GetProperty()->SetPointSize(3);
-          }
-        });
+            if (i++ % 2)
+            {
+              a->GetProperty()->SetRepresentationToWireframe();
+            }
+            else
+            {
+              a->GetProperty()->SetRepresentationToPoints();
+              a->GetProperty()->SetPointSize(3);
+            }
+          });
       },
       false },
-    { "empty data", 240, 180, 1.0,
-      [](vtkRenderer* r, P*) { SetEmptyScene(r); },
-      false },
+    { "empty data", 240, 180, 1.0, [](vtkRenderer* r, P*) { SetEmptyScene(r); }, false },
   };
   for (const Case& k : cases)
   {
@@ -309,8 +323,7 @@ int TestSketchExtremes(int, char*[])
       auto img = Capture(win);
       const double white[3] = { 1, 1, 1 };
       const vtkIdType ink = CountForeground(img, white);
-      STYLIZE_CHECK(!k.ExpectSurface || k.Width == 1 || ink > 0, "%s: nothing drawn",
-        tag.c_str());
+      STYLIZE_CHECK(!k.ExpectSurface || k.Width == 1 || ink > 0, "%s: nothing drawn", tag.c_str());
       win->Finalize();
     }
   }
@@ -387,10 +400,12 @@ int TestSketchCylinders(int, char*[])
             continue;
           }
           ++surfacePixels;
-          const double along = std::abs(v[1]) / std::max(1e-12,
-            std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]));
-          const bool ok = direction == P::MINIMUM ? along > cos20 : along < std::sin(
-            vtkMath::RadiansFromDegrees(20.0));
+          const double along = std::abs(v[1]) /
+            std::max(
+              1e-12, std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]));
+          const bool ok = direction == P::MINIMUM
+            ? along > cos20
+            : along < std::sin(vtkMath::RadiansFromDegrees(20.0));
           expected += ok ? 1 : 0;
         }
         const double share = surfacePixels ? double(expected) / surfacePixels : 0.0;

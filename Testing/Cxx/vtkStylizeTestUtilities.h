@@ -7,6 +7,7 @@
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkCylinderSource.h"
+#include "vtkElevationFilter.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
@@ -14,27 +15,26 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkParametricFunctionSource.h"
-#include "vtkParametricTorus.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
-#include "vtkRegressionTestImage.h"
-#include "vtkTesting.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricTorus.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
+#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeImageMetrics.h"
-#include "vtkPolyData.h"
+#include "vtkTesting.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkWindowToImageFilter.h"
-#include "vtkElevationFilter.h"
 
 #include <cmath>
 #include <cstdio>
@@ -507,8 +507,8 @@ inline int RegressionVerdict(vtkRenderWindow* win, int argc, char* argv[], const
   if (baseline)
   {
     auto img = Capture(win);
-    StrictCompare(img, baseline, tol, maxFraction, maxDiff,
-      "strict comparison with " + args.Baseline);
+    StrictCompare(
+      img, baseline, tol, maxFraction, maxDiff, "strict comparison with " + args.Baseline);
   }
   return (ret == vtkTesting::PASSED && Failures == 0) ? 0 : 1;
 }

@@ -56,7 +56,8 @@ double vtkStylizeImageMetrics::MaximumDifference(vtkImageData* a, vtkImageData* 
   return worst;
 }
 
-vtkIdType vtkStylizeImageMetrics::CountDifferences(vtkImageData* a, vtkImageData* b, double tolerance)
+vtkIdType vtkStylizeImageMetrics::CountDifferences(
+  vtkImageData* a, vtkImageData* b, double tolerance)
 {
   vtkDataArray *sa, *sb;
   if (!Compatible(a, b, sa, sb))
@@ -140,7 +141,8 @@ double vtkStylizeImageMetrics::SSIM(vtkImageData* a, vtkImageData* b, double pea
     return -2.0;
   }
   const int w = da[0], h = da[1];
-  auto luminance = [](vtkDataArray* s, vtkIdType i) {
+  auto luminance = [](vtkDataArray* s, vtkIdType i)
+  {
     const int n = s->GetNumberOfComponents();
     if (n < 3)
     {
@@ -417,9 +419,8 @@ double vtkStylizeImageMetrics::DirectionAgreement(
       sm[j] = (m[i] ? 1.0 : 0.0) + sm[j - 1] + sm[j - W1] - sm[j - W1 - 1];
     }
   }
-  auto box = [&](const std::vector<double>& t, int x0, int y0, int x1, int y1) {
-    return t[y1 * W1 + x1] - t[y0 * W1 + x1] - t[y1 * W1 + x0] + t[y0 * W1 + x0];
-  };
+  auto box = [&](const std::vector<double>& t, int x0, int y0, int x1, int y1)
+  { return t[y1 * W1 + x1] - t[y0 * W1 + x1] - t[y1 * W1 + x0] + t[y0 * W1 + x0]; };
   const int r = window / 2;
   const double area = static_cast<double>(2 * r + 1) * (2 * r + 1);
   double sum = 0.0, n = 0.0;

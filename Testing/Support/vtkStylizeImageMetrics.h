@@ -63,12 +63,12 @@ public:
    * over the surface pixels, of the stylized luminance blurred by a Gaussian of sigma pixels
    * (a halftone seen from afar) with the reference luminance. 1 = the tones agree.
    */
-  static double ToneCorrelation(vtkImageData* styled, vtkImageData* reference,
-    vtkImageData* mask, const double key[3], double sigma);
+  static double ToneCorrelation(vtkImageData* styled, vtkImageData* reference, vtkImageData* mask,
+    const double key[3], double sigma);
 
   /** Share of the surface pixels whose luminance is at least threshold (in [0, 1]): paper. */
-  static double PaperShare(vtkImageData* styled, vtkImageData* mask, const double key[3],
-    double threshold);
+  static double PaperShare(
+    vtkImageData* styled, vtkImageData* mask, const double key[3], double threshold);
 
   /**
    * Local agreement of a direction field drawn as the sketch pass's directions layer (the
@@ -77,8 +77,8 @@ public:
    * surface, of |mean of exp(2 i theta)| over that window. 1 = parallel strokes, about 0 =
    * random directions.
    */
-  static double DirectionAgreement(vtkImageData* directions, vtkImageData* mask,
-    const double key[3], int window);
+  static double DirectionAgreement(
+    vtkImageData* directions, vtkImageData* mask, const double key[3], int window);
 
   /**
    * Framing: the larger of the surface's bounding box width over the image width and its
