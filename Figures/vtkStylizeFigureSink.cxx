@@ -1,13 +1,11 @@
 #include "vtkStylizeFigureSink.h"
 
+#include "vtkStylizeAtomicFile.h"
+
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
 
-#include <cerrno>
-#include <cstdio>
 #include <cstring>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace vtkStylizeFigure
 {
@@ -67,45 +65,7 @@ cairo_status_t Sink::Finish()
 std::string Sink::WriteFile(const std::string& name, const std::vector<unsigned char>& bytes)
 {
   // Written whole under a hidden name beside the file, then renamed over it.
-  const size_t slash = name.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? "." : name.substr(0, slash + 1);
-  const std::string base = slash == std::string::npos ? name : name.substr(slash + 1);
-  std::string temp = dir + (slash == std::string::npos ? "/." : ".") + base + ".XXXXXX";
-  std::vector<char> templ(temp.begin(), temp.end());
-  templ.push_back(0);
-  const int fd = ::mkstemp(templ.data());
-  const int opened = errno;
-  const std::string what = "cannot write '" + name + "': ";
-  if (fd < 0)
-  {
-    return what + std::strerror(opened);
-  }
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  size_t written = 0;
-  while (written < bytes.size())
-  {
-    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
-    if (n < 0 && errno == EINTR)
-    {
-      continue;
-    }
-    if (n <= 0)
-    {
-      const int error = errno;
-      ::close(fd);
-      ::unlink(templ.data());
-      return what + std::strerror(error ? error : EIO);
-    }
-    written += static_cast<size_t>(n);
-  }
-  if (::close(fd) != 0 || std::rename(templ.data(), name.c_str()) != 0)
-  {
-    const int error = errno;
-    ::unlink(templ.data());
-    return what + std::strerror(error);
-  }
-  return std::string();
+  const int error = vtkStylizeAtomicFile::Write(name.c_str(), bytes.data(), bytes.size());
+  return error ? "cannot write '" + name + "': " + std::strerror(error) : std::string();
 }
 }

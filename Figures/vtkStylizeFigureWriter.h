@@ -173,16 +173,6 @@ public:
    */
   static std::string WriteFigure(vtkRenderWindow* window, const char* fileName);
 
-  /**
-   * Encodes numbered PNG frames into an animation with ffmpeg (Debian: apt-get install ffmpeg):
-   * `pattern` is ffmpeg's printf-style frame name (frame-%04d.png), `fps` frames per second
-   * (clamped to [1, 120]), `output` ends in .gif (one palette from all the frames' colours, no
-   * dithering of ffmpeg's own, looping) or .mp4 (H.264, yuv420p, CRF 18, sides padded to even).
-   * The file is encoded under a hidden name beside it and renamed: a failure leaves no partial
-   * file. Returns "" on success, the failure's line otherwise (the frames are left as they are).
-   */
-  static std::string EncodeAnimation(const char* pattern, int fps, const char* output);
-
 protected:
   vtkStylizeFigureWriter();
   ~vtkStylizeFigureWriter() override;

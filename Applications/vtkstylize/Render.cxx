@@ -12,6 +12,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
+#include "vtkStylizeAnimationEncoder.h"
 #include "vtkStylizeAtomicFile.h"
 #include "vtkStylizeFigureWriter.h"
 #include "vtkStylizeGBufferPass.h"
@@ -259,7 +260,7 @@ bool RenderAndWrite(vtkRenderWindow* window, const Options& opt, const std::stri
 void EncodeAnimation(const std::string& pattern, int fps, const std::string& output)
 {
   const std::string error =
-    vtkStylizeFigureWriter::EncodeAnimation(pattern.c_str(), fps, output.c_str());
+    vtkStylizeAnimationEncoder::Encode(pattern.c_str(), fps, output.c_str());
   if (!error.empty())
   {
     Fail(error);

@@ -12,6 +12,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSketchPass.h"
+#include "vtkStylizeAnimationEncoder.h"
 #include "vtkStylizeFigureLayerSource.h"
 #include "vtkStylizeFigureWriter.h"
 #include "vtkStylizeGBufferPass.h"
@@ -125,7 +126,7 @@ void vtkPVStylizeView::EncodeAnimation(const char* pattern, int fps, const char*
   {
     return;
   }
-  this->FigureResult = vtkStylizeFigureWriter::EncodeAnimation(pattern, fps, output);
+  this->FigureResult = vtkStylizeAnimationEncoder::Encode(pattern, fps, output);
 }
 
 //------------------------------------------------------------------------------

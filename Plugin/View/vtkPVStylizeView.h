@@ -157,7 +157,7 @@ public:
 
   /**
    * Encodes numbered PNG frames into a .gif or .mp4 animation with ffmpeg, on the first rank
-   * (vtkStylizeFigureWriter::EncodeAnimation(): `pattern` is ffmpeg's printf-style frame name,
+   * (vtkStylizeAnimationEncoder::Encode(): `pattern` is ffmpeg's printf-style frame name,
    * `fps` frames per second). An empty output does nothing. The view's AnimationEncoding
    * property calls it (the stylize Python module's SaveStylizedOrbit() sets it);
    * GetFigureResult() is "" after a success, the failure's line otherwise.

@@ -27,7 +27,7 @@ Filters (module ``vtkstylize.vtkStylizeFilters``):
   a multiblock dataset.
 - ``vtkStylizePrincipalCurvatures``: per-point principal curvatures and directions of a surface.
 
-Checked reading (module ``vtkstylize.vtkStylizeIO``):
+Checked reading and the animation encoder (module ``vtkstylize.vtkStylizeIO``):
 
 - ``vtkStylizeReader``: reads any dataset file the project renders (VTK XML and legacy, .pvd,
   Exodus, EnSight, OpenFOAM, STL, OBJ, PLY), checked before VTK's reader opens it and validated
@@ -35,6 +35,7 @@ Checked reading (module ``vtkstylize.vtkStylizeIO``):
   of a crash, a hang or a huge allocation.
 - ``vtkStylizeOutputWindow``: an output window that records VTK's messages, for a program that
   reports the first failure in one line.
+- ``vtkStylizeAnimationEncoder``: numbered PNG frames into a GIF or MP4 with ffmpeg (``encode()``).
 
 Figures (module ``vtkstylize.vtkStylizeFigures``):
 
@@ -285,8 +286,8 @@ def orbit(window, frames, path_pattern, degrees=360.0, elevation=0.0, surface_an
 def encode(path_pattern, output, fps=25):
     """Encodes the numbered PNGs `path_pattern` (ffmpeg's printf-style name, e.g.
     "orbit-%04d.png") into `output` (.gif or .mp4) with ffmpeg, as vtkstylize --orbit does
-    (vtkStylizeFigureWriter.EncodeAnimation). Raises RuntimeError with the failure's line."""
-    error = vtkStylizeFigureWriter.EncodeAnimation(str(path_pattern), int(fps), str(output))
+    (vtkStylizeAnimationEncoder.Encode). Raises RuntimeError with the failure's line."""
+    error = vtkStylizeAnimationEncoder.Encode(str(path_pattern), int(fps), str(output))
     if error:
         raise RuntimeError(error)
     return str(output)
