@@ -97,6 +97,14 @@ void AddSphere(vtkRenderer* ren, double specPow = 20, double specular = 0.4, dou
 }
 
 // A triangulated grid whose normals are all zero, or all NaN.
+// The test actors, the light kit and the camera, all at `scale` (the picture does not change).
+void KitScene(vtkRenderer* ren, double scale)
+{
+  AddTestActors(ren, scale);
+  SetupLights(ren, "kit", scale);
+  PlaceCamera(ren, scale, 20, 15, 16.0, 0.37, ren->GetActiveCamera()->GetParallelProjection());
+}
+
 void AddBadNormalsSurface(vtkRenderer* ren, double value)
 {
   vtkNew<vtkSphereSource> s;
@@ -163,25 +171,12 @@ int TestLightingExtremes(int, char*[])
       // Scene scaled by 1e-6 and 1e6 with lights scaled alike: finite, and the same picture.
       Buffers ref;
       Render(
-        model, parallel,
-        [](vtkRenderer* r, vtkStylizeLightingPass*)
-        {
-          AddTestActors(r, 1.0);
-          SetupLights(r, "kit", 1.0);
-          PlaceCamera(r, 1.0, 20, 15, 16.0, 0.37, r->GetActiveCamera()->GetParallelProjection());
-        },
-        ref, "scale 1");
+        model, parallel, [](vtkRenderer* r, vtkStylizeLightingPass*) { KitScene(r, 1.0); }, ref,
+        "scale 1");
       for (double scale : { 1e-6, 1e6 })
       {
         Render(
-          model, parallel,
-          [scale](vtkRenderer* r, vtkStylizeLightingPass*)
-          {
-            AddTestActors(r, scale);
-            SetupLights(r, "kit", scale);
-            PlaceCamera(
-              r, scale, 20, 15, 16.0, 0.37, r->GetActiveCamera()->GetParallelProjection());
-          },
+          model, parallel, [scale](vtkRenderer* r, vtkStylizeLightingPass*) { KitScene(r, scale); },
           b, scale < 1 ? "scale 1e-6" : "scale 1e6");
         StrictCompare(b.Image, ref.Image, 2, 0.0, 2,
           std::string("scale ") + (scale < 1 ? "1e-6" : "1e6") + " vs 1, " +
@@ -193,9 +188,7 @@ int TestLightingExtremes(int, char*[])
         model, parallel,
         [](vtkRenderer* r, vtkStylizeLightingPass*)
         {
-          AddTestActors(r, 1.0);
-          SetupLights(r, "kit", 1.0);
-          PlaceCamera(r, 1.0, 20, 15, 16.0, 0.37, r->GetActiveCamera()->GetParallelProjection());
+          KitScene(r, 1.0);
           SetNearFarRatio(r, 1e-7);
         },
         b, "near/far 1e-7");
