@@ -39,7 +39,10 @@ Part MakePart(int x0, int y0, int w, int h, float value, F depth)
   return p;
 }
 
-/** The value of `p` at image pixel (x, y): depth and channel 0, or (2, -1) outside its rect. */
+/**
+ * The value of `p` at image pixel (x, y): depth and channel 0 (-1 for a part without channels,
+ * as a broadcast depth), or (2, -1) outside its rect.
+ */
 inline std::pair<float, float> At(const Part& p, int x, int y)
 {
   const int lx = x - p.Rect[0], ly = y - p.Rect[1];
@@ -48,7 +51,7 @@ inline std::pair<float, float> At(const Part& p, int x, int y)
     return { 2.0f, -1.0f };
   }
   const size_t i = static_cast<size_t>(ly) * p.Rect[2] + lx;
-  return { p.Depth[i], p.Channels[0][i] };
+  return { p.Depth[i], p.Channels.empty() ? -1.0f : p.Channels[0][i] };
 }
 
 /**
