@@ -1,5 +1,5 @@
 /**
- * The input stage of vtkstylize: reads a file with vtkStylizeReader (the Filters module's
+ * The input stage of vtkstylize: reads a file with vtkStylizeReader (the IO module's
  * checked reader, which the Python package offers too) and turns it into renderable surfaces
  * ("parts").
  *
