@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The C++ sources in VTK's style (.clang-format): `scripts/format.sh` reformats them in place,
 # `scripts/format.sh --check` lists the files that differ and exits 1 (the test source.format).
+# The files git tracks: a build folder inside the tree holds generated C++ of its own.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -9,7 +10,7 @@ if ! command -v "$format" >/dev/null 2>&1; then
   echo "clang-format not found (Debian: apt-get install clang-format)" >&2
   exit 2
 fi
-mapfile -t files < <(git ls-files -co --exclude-standard -- '*.cxx' '*.h' '*.txx' | \
+mapfile -t files < <(git ls-files -- '*.cxx' '*.h' '*.txx' | \
   while read -r f; do [ -f "$f" ] && echo "$f"; done)
 if [ "${1:-}" = "--check" ]; then
   bad=0
