@@ -786,24 +786,7 @@ void vtkStylizeStylePass::SetDepthMappingUniforms(vtkStylizeUniforms& u)
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkStylizeStylePass::GetSceneTexture(int buffer)
 {
-  vtkStylizeGBufferPass* g = this->Internals->Scene;
-  switch (buffer)
-  {
-    case vtkStylizeGBufferPass::COLOR_BUFFER:
-      return g->GetColorTexture();
-    case vtkStylizeGBufferPass::NORMAL_BUFFER:
-      return g->GetNormalTexture();
-    case vtkStylizeGBufferPass::POSITION_BUFFER:
-      return g->GetPositionTexture();
-    case vtkStylizeGBufferPass::DEPTH_BUFFER:
-      return g->GetDepthTexture();
-    case vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER:
-      return g->GetLinearDepthTexture();
-    case vtkStylizeGBufferPass::DIRECTION_BUFFER:
-      return g->GetDirectionTexture();
-    default:
-      return nullptr;
-  }
+  return this->Internals->Scene->GetBufferTexture(buffer);
 }
 
 //------------------------------------------------------------------------------
