@@ -76,3 +76,13 @@ for entry in "${images[@]}"; do
   "$program" "${options[@]}" --output "$out/$name.png" > /dev/null
   echo "$out/$name.png"
 done
+
+# The ParaView GUI (when the plugin was built): paraview.gui's own run, whose window capture is
+# the manual's picture of the GUI.
+paraview="$build/paraview/bin/paraview-stylize"
+if [ -x "$paraview" ]; then
+  gui="$build/Testing/Temporary/paraview/gui"
+  sh "$STYLIZE_ROOT/Testing/ParaView/run_gui.sh" "$paraview" "$gui" > /dev/null
+  cp "$gui/gui-window.png" "$out/paraview-gui.png"
+  echo "$out/paraview-gui.png"
+fi

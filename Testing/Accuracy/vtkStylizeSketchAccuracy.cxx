@@ -33,7 +33,7 @@
 #include "vtkTimerLog.h"
 #include "vtkWindowToImageFilter.h"
 
-#include "../Cxx/vtkStylizeAnalyticSurfaces.h"
+#include "vtkStylizeAnalyticSurfaces.h"
 
 #include <algorithm>
 #include <cstdio>

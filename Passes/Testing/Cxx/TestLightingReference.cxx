@@ -162,6 +162,115 @@ struct WorldLight
   dvec3 Att;
 };
 
+/** The set-up's lights added to the renderer ("scene": four scene lights, "none": none). */
+std::vector<WorldLight> AddWorldLights(vtkRenderer* ren, const std::string& setup)
+{
+  std::vector<WorldLight> world;
+  if (setup == "scene")
+  {
+    ren->AutomaticLightCreationOff();
+    world.push_back({ { 3, 4, 5 }, { 0, 0, 0 }, { 0.9, 0.8, 0.7 }, false, 30, 1, { 1, 0, 0 } });
+    world.push_back({ { -4, 1, 2 }, { 0, 0, 0 }, { 0.3, 0.4, 0.6 }, false, 30, 1, { 1, 0, 0 } });
+    world.push_back(
+      { { 0, 2.5, 3 }, { 0, 0, 0 }, { 0.8, 0.7, 0.5 }, true, 180, 1, { 0.3, 0.1, 0.05 } });
+    world.push_back({ { 0.5, 3, 1.5 }, { 0.3, 0, 0 }, { 1, 1, 0.6 }, true, 20, 3, { 1, 0, 0 } });
+    for (const auto& w : world)
+    {
+      vtkNew<vtkLight> l;
+      l->SetLightTypeToSceneLight();
+      l->SetPosition(w.Pos.x, w.Pos.y, w.Pos.z);
+      l->SetFocalPoint(w.Focal.x, w.Focal.y, w.Focal.z);
+      l->SetDiffuseColor(w.Color.x, w.Color.y, w.Color.z);
+      l->SetIntensity(1.0);
+      l->SetPositional(w.Positional);
+      l->SetConeAngle(w.Cone);
+      l->SetExponent(w.Exponent);
+      l->SetAttenuationValues(w.Att.x, w.Att.y, w.Att.z);
+      ren->AddLight(l);
+    }
+  }
+  else if (setup == "none")
+  {
+    ren->AutomaticLightCreationOff();
+  }
+  return world;
+}
+
+/** The reference's lights in view space (the headlight, or the scene lights through `view`). */
+std::vector<RefLight> ReferenceLights(const std::string& setup,
+  const std::vector<WorldLight>& world, const glm::dmat4& view, RefParams& params)
+{
+  std::vector<RefLight> lights;
+  if (setup == "headlight")
+  {
+    RefLight l;
+    l.Color = dvec3(1);
+    l.Dir = dvec3(0, 0, -1);
+    lights.push_back(l);
+    params.HeadlightOnly = true;
+  }
+  for (const auto& w : world)
+  {
+    RefLight l;
+    l.Color = w.Color;
+    l.Positional = w.Positional;
+    l.Dir = glm::normalize(glm::dmat3(view) * glm::normalize(w.Focal - w.Pos));
+    l.Pos = dvec3(view * glm::dvec4(w.Pos, 1.0));
+    l.Cone = w.Cone;
+    l.Exponent = w.Exponent;
+    l.Att = w.Att;
+    lights.push_back(l);
+  }
+  return lights;
+}
+
+/**
+ * Every 7th surface pixel against the CPU reference (within 1/255 per channel); probes on a
+ * discontinuity are skipped. Returns the largest difference.
+ */
+double CompareWithReference(vtkFloatArray* color, vtkFloatArray* normal, vtkFloatArray* position,
+  const RefParams& params, const RefMaterial& m, const std::vector<RefLight>& lights, bool parallel,
+  int& probes, int& skipped)
+{
+  double worst = 0;
+  const vtkIdType n = color->GetNumberOfTuples();
+  for (vtkIdType i = 0; i < n; i += 7)
+  {
+    double nv[4], pv[4], cv[4];
+    normal->GetTuple(i, nv);
+    position->GetTuple(i, pv);
+    color->GetTuple(i, cv);
+    if (nv[3] != 1.0)
+    {
+      continue;
+    }
+    Ambiguous = false;
+    dvec3 ref =
+      Shade(params, m, lights, dvec3(nv[0], nv[1], nv[2]), dvec3(pv[0], pv[1], pv[2]), parallel);
+    ref = glm::clamp(ref, 0.0, 1.0);
+    if (Ambiguous)
+    {
+      ++skipped;
+      continue;
+    }
+    ++probes;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = std::abs(ref[c] - cv[c]);
+      if (d > worst)
+      {
+        worst = d;
+      }
+      if (d > 1.0 / 255.0 && stylizetest::Failures < 20)
+      {
+        STYLIZE_CHECK(d <= 1.0 / 255.0, "pixel %lld channel %d: GPU %.5f CPU %.5f",
+          static_cast<long long>(i), c, cv[c], ref[c]);
+      }
+    }
+  }
+  return worst;
+}
+
 int RunCase(int model, const std::string& setup, bool parallel, bool perActor)
 {
   auto win = MakeWindow(240, 200);
@@ -219,34 +328,7 @@ int RunCase(int model, const std::string& setup, bool parallel, bool perActor)
   gbuffer->SetPrecision(vtkStylizeGBufferPass::FULL);
   ren->SetPass(gbuffer);
 
-  std::vector<WorldLight> world;
-  if (setup == "scene")
-  {
-    ren->AutomaticLightCreationOff();
-    world.push_back({ { 3, 4, 5 }, { 0, 0, 0 }, { 0.9, 0.8, 0.7 }, false, 30, 1, { 1, 0, 0 } });
-    world.push_back({ { -4, 1, 2 }, { 0, 0, 0 }, { 0.3, 0.4, 0.6 }, false, 30, 1, { 1, 0, 0 } });
-    world.push_back(
-      { { 0, 2.5, 3 }, { 0, 0, 0 }, { 0.8, 0.7, 0.5 }, true, 180, 1, { 0.3, 0.1, 0.05 } });
-    world.push_back({ { 0.5, 3, 1.5 }, { 0.3, 0, 0 }, { 1, 1, 0.6 }, true, 20, 3, { 1, 0, 0 } });
-    for (const auto& w : world)
-    {
-      vtkNew<vtkLight> l;
-      l->SetLightTypeToSceneLight();
-      l->SetPosition(w.Pos.x, w.Pos.y, w.Pos.z);
-      l->SetFocalPoint(w.Focal.x, w.Focal.y, w.Focal.z);
-      l->SetDiffuseColor(w.Color.x, w.Color.y, w.Color.z);
-      l->SetIntensity(1.0);
-      l->SetPositional(w.Positional);
-      l->SetConeAngle(w.Cone);
-      l->SetExponent(w.Exponent);
-      l->SetAttenuationValues(w.Att.x, w.Att.y, w.Att.z);
-      ren->AddLight(l);
-    }
-  }
-  else if (setup == "none")
-  {
-    ren->AutomaticLightCreationOff();
-  }
+  const std::vector<WorldLight> world = AddWorldLights(ren, setup);
 
   vtkCamera* cam = ren->GetActiveCamera();
   cam->SetPosition(1.0, 1.5, 5.0);
@@ -274,27 +356,7 @@ int RunCase(int model, const std::string& setup, bool parallel, bool perActor)
   m.Specular = 0.5 * dvec3(1.0, 0.9, 0.8);
   m.SpecPow = 20;
   glm::dmat4 view = ViewMatrix(cam);
-  std::vector<RefLight> lights;
-  if (setup == "headlight")
-  {
-    RefLight l;
-    l.Color = dvec3(1);
-    l.Dir = dvec3(0, 0, -1);
-    lights.push_back(l);
-    params.HeadlightOnly = true;
-  }
-  for (const auto& w : world)
-  {
-    RefLight l;
-    l.Color = w.Color;
-    l.Positional = w.Positional;
-    l.Dir = glm::normalize(glm::dmat3(view) * glm::normalize(w.Focal - w.Pos));
-    l.Pos = dvec3(view * glm::dvec4(w.Pos, 1.0));
-    l.Cone = w.Cone;
-    l.Exponent = w.Exponent;
-    l.Att = w.Att;
-    lights.push_back(l);
-  }
+  const std::vector<RefLight> lights = ReferenceLights(setup, world, view, params);
   // Visible depth range: the actor's bounds in view space, within the clipping range.
   double b[6], clip[2];
   actor->GetBounds(b);
@@ -310,42 +372,8 @@ int RunCase(int model, const std::string& setup, bool parallel, bool perActor)
   params.DepthFar = std::min(hi, clip[1]);
 
   int probes = 0, skipped = 0;
-  double worst = 0;
-  const vtkIdType n = color->GetNumberOfTuples();
-  for (vtkIdType i = 0; i < n; i += 7)
-  {
-    double nv[4], pv[4], cv[4];
-    normal->GetTuple(i, nv);
-    position->GetTuple(i, pv);
-    color->GetTuple(i, cv);
-    if (nv[3] != 1.0)
-    {
-      continue;
-    }
-    Ambiguous = false;
-    dvec3 ref =
-      Shade(params, m, lights, dvec3(nv[0], nv[1], nv[2]), dvec3(pv[0], pv[1], pv[2]), parallel);
-    ref = glm::clamp(ref, 0.0, 1.0);
-    if (Ambiguous)
-    {
-      ++skipped;
-      continue;
-    }
-    ++probes;
-    for (int c = 0; c < 3; ++c)
-    {
-      const double d = std::abs(ref[c] - cv[c]);
-      if (d > worst)
-      {
-        worst = d;
-      }
-      if (d > 1.0 / 255.0 && stylizetest::Failures < 20)
-      {
-        STYLIZE_CHECK(d <= 1.0 / 255.0, "pixel %lld channel %d: GPU %.5f CPU %.5f",
-          static_cast<long long>(i), c, cv[c], ref[c]);
-      }
-    }
-  }
+  const double worst =
+    CompareWithReference(color, normal, position, params, m, lights, parallel, probes, skipped);
   std::printf(
     "model %s, lights %s, %s%s: %d probes (%d on discontinuities skipped), max |GPU-CPU| = "
     "%.2e (%.3f levels of 255)\n",

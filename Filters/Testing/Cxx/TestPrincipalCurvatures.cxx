@@ -13,7 +13,7 @@
 #include "vtkStylizeAnalyticSurfaces.h"
 #include "vtkStylizeImageMetrics.h"
 #include "vtkStylizePrincipalCurvatures.h"
-#include "vtkStylizeTestUtilities.h"
+#include "vtkStylizeTestChecks.h"
 
 #include <algorithm>
 #include <array>

@@ -1,75 +1,13 @@
-// Extremes, checked in the float G-buffer (full precision) and not only in the 8-bit image:
-// pd = 0, beta = 0, zero-length and NaN normals, 0 and 1000 lights, scene scaled by 1e-6 and
-// 1e6, near/far ratio 1e7, parallel and perspective projection: no NaN or Inf anywhere.
-#include "vtkCellArray.h"
+#include "LightingExtremesTestHelpers.h"
 #include "vtkInformation.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
-#include "vtkStylizeTestUtilities.h"
 #include <limits>
 
 using namespace stylizetest;
 
 namespace
 {
-struct Buffers
-{
-  vtkNew<vtkFloatArray> Color, Normal, Position, Depth;
-  vtkSmartPointer<vtkImageData> Image;
-};
-
-using SceneBuilder = std::function<void(vtkRenderer*, vtkStylizeLightingPass*)>;
-
-void Render(int model, bool parallel, const SceneBuilder& build, Buffers& out,
-  const std::string& what, int w = 200, int h = 160)
-{
-  auto win = MakeWindow(w, h);
-  vtkNew<vtkRenderer> ren;
-  win->AddRenderer(ren);
-  ren->SetBackground(0.3, 0.3, 0.3);
-  vtkNew<vtkStylizeLightingPass> lighting;
-  lighting->SetModel(model);
-  vtkNew<vtkStylizeGBufferPass> gbuffer;
-  gbuffer->SetLightingPass(lighting);
-  gbuffer->SetChannels(vtkStylizeGBufferPass::NORMAL | vtkStylizeGBufferPass::POSITION);
-  gbuffer->SetPrecision(vtkStylizeGBufferPass::FULL);
-  ren->SetPass(gbuffer);
-  ren->GetActiveCamera()->SetParallelProjection(parallel);
-  build(ren, lighting);
-  win->Render();
-  gbuffer->DownloadChannel(vtkStylizeGBufferPass::COLOR_BUFFER, out.Color);
-  gbuffer->DownloadChannel(vtkStylizeGBufferPass::NORMAL_BUFFER, out.Normal);
-  gbuffer->DownloadChannel(vtkStylizeGBufferPass::POSITION_BUFFER, out.Position);
-  gbuffer->DownloadChannel(vtkStylizeGBufferPass::DEPTH_BUFFER, out.Depth);
-  out.Image = Capture(win);
-  win->Finalize();
-  const std::string tag = what + " [" + vtkStylizeLightingPass::GetModelName(model) +
-    (parallel ? ", parallel]" : ", perspective]");
-  bool ok = CheckFinite(out.Color, tag + " colour");
-  ok = CheckFinite(out.Normal, tag + " normal") && ok;
-  ok = CheckFinite(out.Position, tag + " position") && ok;
-  ok = CheckFinite(out.Depth, tag + " depth") && ok;
-  // Every surface sample carries a unit normal.
-  vtkIdType surface = 0, badNormals = 0;
-  for (vtkIdType i = 0; i < out.Normal->GetNumberOfTuples(); ++i)
-  {
-    double n[4];
-    out.Normal->GetTuple(i, n);
-    if (n[3] == 1.0)
-    {
-      ++surface;
-      const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      badNormals += std::abs(len - 1.0) > 1e-3 ? 1 : 0;
-    }
-  }
-  STYLIZE_CHECK(
-    badNormals == 0, "%s: %lld non-unit normals", tag.c_str(), static_cast<long long>(badNormals));
-  std::printf("%-44s surface pixels %6lld, non-finite: none%s\n", tag.c_str(),
-    static_cast<long long>(surface), ok ? "" : " (FAILED)");
-}
-
 vtkIdType SurfacePixels(Buffers& b)
 {
   vtkIdType n = 0;
@@ -137,22 +75,22 @@ int TestLightingExtremes(int, char*[])
     {
       Buffers b;
       // beta = 0: pow(0, 0) must not produce NaN.
-      Render(
+      RenderBuffers(
         model, parallel, [](vtkRenderer* r, vtkStylizeLightingPass*) { AddSphere(r, 0.0, 1.0); }, b,
         "specular power 0");
       // Zero-length and NaN normals fall back to the facet normal.
-      Render(
+      RenderBuffers(
         model, parallel,
         [](vtkRenderer* r, vtkStylizeLightingPass*) { AddBadNormalsSurface(r, 0.0); }, b,
         "zero-length normals");
       STYLIZE_CHECK(SurfacePixels(b) > 1000, "zero-length normals: surface not rendered");
-      Render(
+      RenderBuffers(
         model, parallel,
         [&](vtkRenderer* r, vtkStylizeLightingPass*) { AddBadNormalsSurface(r, nan); }, b,
         "NaN normals");
       STYLIZE_CHECK(SurfacePixels(b) > 1000, "NaN normals: surface not rendered");
       // 0 and 1000 lights.
-      Render(
+      RenderBuffers(
         model, parallel,
         [](vtkRenderer* r, vtkStylizeLightingPass*)
         {
@@ -160,7 +98,7 @@ int TestLightingExtremes(int, char*[])
           SetupLights(r, "none");
         },
         b, "no lights");
-      Render(
+      RenderBuffers(
         model, parallel,
         [](vtkRenderer* r, vtkStylizeLightingPass*)
         {
@@ -170,12 +108,12 @@ int TestLightingExtremes(int, char*[])
         b, "1000 lights");
       // Scene scaled by 1e-6 and 1e6 with lights scaled alike: finite, and the same picture.
       Buffers ref;
-      Render(
+      RenderBuffers(
         model, parallel, [](vtkRenderer* r, vtkStylizeLightingPass*) { KitScene(r, 1.0); }, ref,
         "scale 1");
       for (double scale : { 1e-6, 1e6 })
       {
-        Render(
+        RenderBuffers(
           model, parallel, [scale](vtkRenderer* r, vtkStylizeLightingPass*) { KitScene(r, scale); },
           b, scale < 1 ? "scale 1e-6" : "scale 1e6");
         StrictCompare(b.Image, ref.Image, 2, 0.0, 2,
@@ -184,7 +122,7 @@ int TestLightingExtremes(int, char*[])
             (parallel ? " parallel" : " perspective"));
       }
       // Near/far ratio 1e7.
-      Render(
+      RenderBuffers(
         model, parallel,
         [](vtkRenderer* r, vtkStylizeLightingPass*)
         {
@@ -199,7 +137,7 @@ int TestLightingExtremes(int, char*[])
   // pd = 0 gives black: Comic with zero gray levels, no ambient and no specular.
   {
     Buffers b;
-    Render(
+    RenderBuffers(
       vtkStylizeLightingPass::COMIC, false,
       [](vtkRenderer* r, vtkStylizeLightingPass* l)
       {
@@ -245,45 +183,4 @@ int TestLightingExtremes(int, char*[])
       "NaN per-actor value not clamped");
   }
   return stylizetest::Failures == 0 ? 0 : 1;
-}
-
-// Each lighting model is its own shader program: switching the model of a pass that has already
-// rendered rebuilds the mappers' shaders, so every model renders exactly as a fresh pass does
-// (and differs from the model before it).
-int TestLightingModelSwitch(int, char*[])
-{
-  const int w = 240, h = 180;
-  auto render = [&](vtkStylizeLightingPass* pass, vtkRenderWindow* win)
-  {
-    win->Render();
-    return Capture(win);
-  };
-  auto live = MakeTestScene(w, h);
-  vtkNew<vtkStylizeLightingPass> switched;
-  live.Renderer->SetPass(switched);
-  vtkSmartPointer<vtkImageData> previous = render(switched, live.Window);
-  for (int model : { vtkStylizeLightingPass::COMIC, vtkStylizeLightingPass::PIXEL_ART,
-         vtkStylizeLightingPass::STANDARD, vtkStylizeLightingPass::COMIC })
-  {
-    switched->SetModel(model);
-    auto image = render(switched, live.Window);
-    auto fresh = MakeTestScene(w, h);
-    vtkNew<vtkStylizeLightingPass> pass;
-    pass->SetModel(model);
-    fresh.Renderer->SetPass(pass);
-    auto reference = render(pass, fresh.Window);
-    const double same = vtkStylizeImageMetrics::MaximumDifference(image, reference);
-    const double changed = vtkStylizeImageMetrics::MaximumDifference(image, previous);
-    std::printf("switched to %s: max difference %.0f against a fresh pass, %.0f against the "
-                "model before\n",
-      vtkStylizeLightingPass::GetModelName(model), same, changed);
-    STYLIZE_CHECK(same == 0.0, "%s after a switch differs from a fresh pass (%.0f levels)",
-      vtkStylizeLightingPass::GetModelName(model), same);
-    STYLIZE_CHECK(changed > 4.0, "%s after a switch looks like the model before (%.0f levels)",
-      vtkStylizeLightingPass::GetModelName(model), changed);
-    fresh.Window->Finalize();
-    previous = image;
-  }
-  live.Window->Finalize();
-  return Failures == 0 ? 0 : 1;
 }

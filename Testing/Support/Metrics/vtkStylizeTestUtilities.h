@@ -31,6 +31,7 @@
 #include "vtkSphereSource.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeImageMetrics.h"
+#include "vtkStylizeTestChecks.h"
 #include "vtkTesting.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
@@ -45,20 +46,6 @@
 
 namespace stylizetest
 {
-inline int Failures = 0;
-
-#define STYLIZE_CHECK(cond, ...)                                                                   \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::fprintf(stderr, "FAIL %s:%d: %s: ", __FILE__, __LINE__, #cond);                         \
-      std::fprintf(stderr, __VA_ARGS__);                                                           \
-      std::fprintf(stderr, "\n");                                                                  \
-      ++stylizetest::Failures;                                                                     \
-    }                                                                                              \
-  } while (0)
-
 inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int w, int h)
 {
   auto win = vtkSmartPointer<vtkRenderWindow>::New();
@@ -409,14 +396,6 @@ inline bool StrictCompare(vtkImageData* a, vtkImageData* b, double tol, double m
   STYLIZE_CHECK(ok, "%s: strict comparison failed (limits: max %.0f, %.3f%% beyond %.0f)",
     what.c_str(), maxDiff, 100.0 * maxFraction, tol);
   return ok;
-}
-
-/** Counts NaN/Inf in a float buffer and reports. */
-inline bool CheckFinite(vtkFloatArray* a, const std::string& what)
-{
-  const vtkIdType bad = vtkStylizeImageMetrics::CountNonFinite(a);
-  STYLIZE_CHECK(bad == 0, "%s: %lld non-finite values", what.c_str(), static_cast<long long>(bad));
-  return bad == 0;
 }
 
 /** Downloads every channel the G-buffer allocated in its last frame and checks it is finite. */
