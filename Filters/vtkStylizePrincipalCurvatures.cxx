@@ -1,4 +1,5 @@
 #include "vtkStylizePrincipalCurvatures.h"
+#include "vtkStylizeMeshGeometry.h"
 
 #include "vtkCellArray.h"
 #include "vtkCommunicator.h"
@@ -16,7 +17,6 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkTriangleFilter.h"
 
 #include <algorithm>
 #include <array>
@@ -28,58 +28,7 @@ vtkStandardNewMacro(vtkStylizePrincipalCurvatures);
 
 namespace
 {
-using Vec = std::array<double, 3>;
-
-Vec Sub(const Vec& a, const Vec& b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-double Dot(const Vec& a, const Vec& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec Cross(const Vec& a, const Vec& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-Vec Scale(const Vec& a, double s)
-{
-  return { a[0] * s, a[1] * s, a[2] * s };
-}
-Vec Add(const Vec& a, const Vec& b)
-{
-  return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };
-}
-double Norm(const Vec& a)
-{
-  return std::sqrt(Dot(a, a));
-}
-/** a / |a|, or false when |a| is zero or not finite. */
-bool Normalize(Vec& a)
-{
-  const double n = Norm(a);
-  if (!(n > 0.0) || !std::isfinite(n))
-  {
-    return false;
-  }
-  a = Scale(a, 1.0 / n);
-  return true;
-}
-/** Any unit vector perpendicular to the unit vector n. */
-Vec Perpendicular(const Vec& n)
-{
-  Vec axis = std::abs(n[0]) < 0.9 ? Vec{ 1, 0, 0 } : Vec{ 0, 1, 0 };
-  Vec p = Cross(n, axis);
-  Normalize(p);
-  return p;
-}
-/** The rotation that takes unit vector a to unit vector b, applied to x (a != -b). */
-Vec Rotate(const Vec& a, const Vec& b, const Vec& x)
-{
-  const double c = Dot(a, b);
-  const Vec v = Cross(a, b);
-  return Add(Add(Scale(x, c), Cross(v, x)), Scale(v, Dot(v, x) / (1.0 + c)));
-}
+using namespace vtkStylizeMesh;
 
 /** The triangulated surface with each vertex's normal and tangent frame (u, v, normal). */
 struct Surface
@@ -91,40 +40,6 @@ struct Surface
   std::vector<Vec> FrameU, FrameV;             // unit tangents where Framed
   std::vector<bool> Framed;                    // the vertex has a face and a valid normal
 };
-
-/** The triangles of the input's polygons and strips (the points are unchanged). */
-std::vector<std::array<vtkIdType, 3>> Triangles(vtkPolyData* input)
-{
-  vtkNew<vtkPolyData> surface;
-  surface->SetPoints(input->GetPoints());
-  surface->SetPolys(input->GetPolys());
-  surface->SetStrips(input->GetStrips());
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(surface);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  if (input->GetNumberOfPoints() > 0 &&
-    (input->GetNumberOfPolys() > 0 || input->GetNumberOfStrips() > 0))
-  {
-    triangles->Update();
-  }
-  vtkPolyData* tri = triangles->GetOutput();
-  std::vector<std::array<vtkIdType, 3>> faces;
-  if (tri && tri->GetPolys())
-  {
-    vtkCellArray* polys = tri->GetPolys();
-    vtkIdType n;
-    const vtkIdType* ids;
-    for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-    {
-      if (n == 3 && ids[0] != ids[1] && ids[1] != ids[2] && ids[0] != ids[2])
-      {
-        faces.push_back({ ids[0], ids[1], ids[2] });
-      }
-    }
-  }
-  return faces;
-}
 
 /**
  * The points and unit point normals of s: the input's normals (useInput and the input has
@@ -150,26 +65,7 @@ void ComputeNormals(vtkPolyData* input, bool useInput, Surface& s)
   }
   else
   {
-    const std::vector<Vec>& p = s.P;
-    for (const auto& f : s.Faces)
-    {
-      Vec fn = Cross(Sub(p[f[1]], p[f[0]]), Sub(p[f[2]], p[f[0]]));
-      if (!Normalize(fn))
-      {
-        continue;
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        Vec a = Sub(p[f[(k + 1) % 3]], p[f[k]]);
-        Vec b = Sub(p[f[(k + 2) % 3]], p[f[k]]);
-        if (!Normalize(a) || !Normalize(b))
-        {
-          continue;
-        }
-        const double angle = std::acos(std::max(-1.0, std::min(1.0, Dot(a, b))));
-        s.Normal[f[k]] = Add(s.Normal[f[k]], Scale(fn, angle));
-      }
-    }
+    s.Normal = vtkStylizeMesh::AngleWeightedNormals(s.P, s.Faces);
   }
   s.Valid.assign(static_cast<size_t>(np), false);
   for (vtkIdType i = 0; i < np; ++i)

@@ -1,0 +1,304 @@
+#include "vtkStylizeFeatureLines.h"
+#include "vtkStylizeFeatureLinesInternals.h"
+#include "vtkStylizePrincipalCurvatures.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStaticCleanPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkStylizeFeatureLines);
+vtkCxxSetObjectMacro(vtkStylizeFeatureLines, Camera, vtkCamera);
+vtkCxxSetObjectMacro(vtkStylizeFeatureLines, ModelMatrix, vtkMatrix4x4);
+
+namespace FL = vtkStylizeFeatureLinesInternals;
+using namespace vtkStylizeMesh;
+
+namespace
+{
+/** The input's surface, points within 1e-7 of its diagonal merged (so that split normals and
+ * seams make no boundary). */
+FL::Mesh WeldedMesh(vtkPolyData* input)
+{
+  FL::Mesh m;
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(input->GetPoints());
+  surface->SetPolys(input->GetPolys());
+  surface->SetStrips(input->GetStrips());
+  if (!input->GetPoints() || input->GetNumberOfPoints() == 0)
+  {
+    return m;
+  }
+  vtkNew<vtkStaticCleanPolyData> clean;
+  clean->SetInputData(surface);
+  clean->SetTolerance(1e-7); // of the diagonal: seams of parametric and CAD surfaces
+  clean->ConvertLinesToPointsOff();
+  clean->ConvertPolysToLinesOff();
+  clean->ConvertStripsToPolysOff();
+  clean->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  clean->Update();
+  vtkPolyData* welded = clean->GetOutput();
+  m.Faces = Triangles(welded);
+  m.P.resize(static_cast<size_t>(welded->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < welded->GetNumberOfPoints(); ++i)
+  {
+    welded->GetPoint(i, m.P[i].data());
+  }
+  // Points of no face play no part; non-finite points would poison the diagonal.
+  for (const Vec& p : m.P)
+  {
+    if (!std::isfinite(p[0] + p[1] + p[2]))
+    {
+      m.Faces.clear();
+      m.P.clear();
+      return m;
+    }
+  }
+  FL::FinishMesh(m);
+  return m;
+}
+
+/** The principal curvatures of the mesh, smoothed over `smoothing` times its diagonal. */
+FL::Curvature Curvatures(const FL::Mesh& m, double smoothing)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(m.P.size()));
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(static_cast<vtkIdType>(m.P.size()));
+  for (size_t i = 0; i < m.P.size(); ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), m.P[i].data());
+    normals->SetTuple(static_cast<vtkIdType>(i), m.Normal[i].data());
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const FL::Face& f : m.Faces)
+  {
+    polys->InsertNextCell(3, f.data());
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  mesh->GetPointData()->SetNormals(normals);
+  vtkNew<vtkStylizePrincipalCurvatures> filter;
+  filter->SetController(nullptr); // thresholds are relative to this mesh
+  filter->SetInputData(mesh);
+  filter->UseInputNormalsOn();
+  filter->SetSmoothingRadius(smoothing);
+  filter->Update();
+  vtkPointData* pd = filter->GetOutput()->GetPointData();
+  FL::Curvature c;
+  const size_t np = m.P.size();
+  auto scalars = [&](const char* name, std::vector<double>& out)
+  {
+    vtkDataArray* a = pd->GetArray(name);
+    out.assign(np, 0.0);
+    for (size_t i = 0; a && i < np; ++i)
+    {
+      out[i] = a->GetComponent(static_cast<vtkIdType>(i), 0);
+    }
+  };
+  auto vectors = [&](const char* name, std::vector<Vec>& out)
+  {
+    vtkDataArray* a = pd->GetArray(name);
+    out.assign(np, Vec{ 0, 0, 0 });
+    for (size_t i = 0; a && i < np; ++i)
+    {
+      a->GetTuple(static_cast<vtkIdType>(i), out[i].data());
+    }
+  };
+  scalars("PrincipalCurvatureMax", c.K1);
+  scalars("PrincipalCurvatureMin", c.K2);
+  vectors("PrincipalDirectionMax", c.E1);
+  vectors("PrincipalDirectionMin", c.E2);
+  vectors("PrincipalDirectionMaxAbs", c.EMaxAbs);
+  return c;
+}
+
+/** The camera in the mesh's coordinates (through the inverse of the model matrix). */
+FL::View MakeView(vtkCamera* camera, vtkMatrix4x4* model)
+{
+  FL::View view;
+  vtkNew<vtkMatrix4x4> inverse;
+  if (model)
+  {
+    vtkMatrix4x4::Invert(model, inverse);
+  }
+  view.Parallel = camera->GetParallelProjection() != 0;
+  double eye[4] = { 0, 0, 0, 1 }, dir[4] = { 0, 0, 0, 0 };
+  camera->GetPosition(eye);
+  camera->GetDirectionOfProjection(dir);
+  double e[4], d[4];
+  inverse->MultiplyPoint(eye, e);
+  inverse->MultiplyPoint(dir, d);
+  view.Eye = { e[0] / e[3], e[1] / e[3], e[2] / e[3] };
+  view.ToViewer = { -d[0], -d[1], -d[2] };
+  if (!Normalize(view.ToViewer))
+  {
+    view.ToViewer = { 0, 0, 1 };
+  }
+  return view;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeFeatureLines::vtkStylizeFeatureLines() = default;
+
+//------------------------------------------------------------------------------
+vtkStylizeFeatureLines::~vtkStylizeFeatureLines()
+{
+  this->SetCamera(nullptr);
+  this->SetModelMatrix(nullptr);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkStylizeFeatureLines::GetKindName(int kind)
+{
+  static const char* const names[] = { "contour", "boundary", "crease", "ridge", "valley",
+    "suggestive" };
+  return kind >= 0 && kind < NUMBER_OF_KINDS ? names[kind] : "unknown";
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeFeatureLines::SetKindEnabled(int kind, bool enabled)
+{
+  if (kind >= 0 && kind < NUMBER_OF_KINDS)
+  {
+    this->SetKindMask(enabled ? (this->KindMask | (1 << kind)) : (this->KindMask & ~(1 << kind)));
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeFeatureLines::GetKindEnabled(int kind) const
+{
+  return kind >= 0 && kind < NUMBER_OF_KINDS && (this->KindMask & (1 << kind)) != 0;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkStylizeFeatureLines::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->Camera)
+  {
+    t = std::max(t, this->Camera->GetMTime());
+  }
+  if (this->ModelMatrix)
+  {
+    t = std::max(t, this->ModelMatrix->GetMTime());
+  }
+  return t;
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeFeatureLines::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeFeatureLines::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  FL::Mesh mesh = WeldedMesh(input);
+  std::vector<FL::Segments> segments(NUMBER_OF_KINDS);
+  if (!mesh.Faces.empty() && mesh.Diagonal > 0.0 && std::isfinite(mesh.Diagonal))
+  {
+    const bool view = this->Camera != nullptr;
+    const bool contours = view && this->GetKindEnabled(CONTOUR);
+    const bool suggestive = view && this->GetKindEnabled(SUGGESTIVE_CONTOUR);
+    const bool ridges = this->GetKindEnabled(RIDGE) || this->GetKindEnabled(VALLEY);
+    // Creases are found for the interior kinds too: they keep those off the creases.
+    FL::EdgeLines(mesh, this->CreaseAngle, segments[BOUNDARY], segments[CREASE]);
+    const FL::View v = view ? MakeView(this->Camera, this->ModelMatrix) : FL::View();
+    if (contours)
+    {
+      FL::Contours(mesh, v, segments[CONTOUR]);
+    }
+    if (ridges || suggestive)
+    {
+      const FL::Curvature c = Curvatures(mesh, this->CurvatureSmoothing);
+      if (ridges)
+      {
+        FL::RidgesAndValleys(mesh, c, this->RidgeThreshold, segments[RIDGE], segments[VALLEY]);
+      }
+      if (suggestive)
+      {
+        FL::SuggestiveContours(mesh, c, v, this->SuggestiveThreshold, segments[SUGGESTIVE_CONTOUR]);
+      }
+    }
+  }
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkUnsignedCharArray> pointKind, cellKind;
+  pointKind->SetName("FeatureKind");
+  cellKind->SetName("FeatureKind");
+  vtkNew<vtkFloatArray> strength;
+  strength->SetName("FeatureStrength");
+  const double minimum = this->MinimumLength * mesh.Diagonal;
+  for (int kind = 0; kind < NUMBER_OF_KINDS; ++kind)
+  {
+    if (!this->GetKindEnabled(kind))
+    {
+      continue;
+    }
+    const bool interior = kind == RIDGE || kind == VALLEY || kind == SUGGESTIVE_CONTOUR;
+    for (const FL::Chain& chain : FL::ChainSegments(segments[kind]))
+    {
+      if (chain.size() < 2 || (interior && FL::ChainLength(chain) < minimum))
+      {
+        continue;
+      }
+      lines->InsertNextCell(static_cast<vtkIdType>(chain.size()));
+      for (const FL::End& e : chain)
+      {
+        lines->InsertCellPoint(points->InsertNextPoint(e.P.data()));
+        pointKind->InsertNextValue(static_cast<unsigned char>(kind));
+        strength->InsertNextValue(e.Strength);
+      }
+      cellKind->InsertNextValue(static_cast<unsigned char>(kind));
+    }
+  }
+  output->SetPoints(points);
+  output->SetLines(lines);
+  output->GetPointData()->AddArray(pointKind);
+  output->GetPointData()->AddArray(strength);
+  output->GetCellData()->AddArray(cellKind);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeFeatureLines::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "KindMask: " << this->KindMask << "\n";
+  os << indent << "Camera: " << this->Camera << "\n";
+  os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
+  os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
+  os << indent << "RidgeThreshold: " << this->RidgeThreshold << "\n";
+  os << indent << "SuggestiveThreshold: " << this->SuggestiveThreshold << "\n";
+  os << indent << "MinimumLength: " << this->MinimumLength << "\n";
+  os << indent << "CurvatureSmoothing: " << this->CurvatureSmoothing << "\n";
+}

@@ -1,0 +1,163 @@
+/**
+ * @class   vtkStylizeFeatureLines
+ * @brief   The lines an illustrator draws on a surface, found on the mesh: occluding contours,
+ *          boundaries, creases, ridges, valleys and suggestive contours, as polylines.
+ *
+ * The input is a surface (polygons and strips, triangulated; coincident points are merged);
+ * the output is polylines with the point-data arrays FeatureKind (unsigned char, a Kinds value),
+ * FeatureStrength (float in [0, 1]: 1 for contours, boundaries and creases; for the other kinds
+ * how far the line is above its threshold, so that lines fade in instead of popping) and the
+ * cell-data array FeatureKind. The lines are in the input's coordinates.
+ *
+ * - Contours: zero crossings of n.v inside triangles (v toward the Camera, vertex normals
+ *   interpolated), smooth curves rather than mesh-edge zig-zags.
+ * - Boundaries: edges of one face. Creases: edges whose faces meet at more than CreaseAngle.
+ * - Ridges and valleys: where the principal curvature of larger magnitude is extreme along its
+ *   own direction (vtkStylizePrincipalCurvatures), positive for ridges, negative for valleys,
+ *   with |k| times the object's diagonal above RidgeThreshold.
+ * - Suggestive contours (DeCarlo et al. 2003): zero crossings of the radial curvature on front
+ *   faces where its derivative toward the viewer is positive, above SuggestiveThreshold, faded
+ *   near contours.
+ *
+ * Every threshold is relative to the object (its bounding-box diagonal), so the same mesh at
+ * any scale gives the same lines. Segments are chained into polylines through the mesh edges
+ * they cross; interior lines (ridges, valleys, suggestive contours) shorter than MinimumLength
+ * are dropped. Contours and suggestive contours need a Camera; without one they are skipped.
+ * Method, thresholds and their tuning on real data: docs/algorithms.md ("Feature lines").
+ *
+ * @sa vtkStylizePrincipalCurvatures vtkFeatureEdges vtkPolyDataSilhouette
+ */
+#ifndef vtkStylizeFeatureLines_h
+#define vtkStylizeFeatureLines_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkStylizeFiltersModule.h" // for export macro
+
+class vtkCamera;
+class vtkMatrix4x4;
+
+class VTKSTYLIZEFILTERS_EXPORT vtkStylizeFeatureLines : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkStylizeFeatureLines* New();
+  vtkTypeMacro(vtkStylizeFeatureLines, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The kinds of line: the values of the output's FeatureKind arrays. */
+  enum Kinds
+  {
+    CONTOUR = 0,
+    BOUNDARY = 1,
+    CREASE = 2,
+    RIDGE = 3,
+    VALLEY = 4,
+    SUGGESTIVE_CONTOUR = 5,
+    NUMBER_OF_KINDS = 6
+  };
+  /** The name of a kind ("contour", "boundary", "crease", "ridge", "valley", "suggestive"). */
+  static const char* GetKindName(int kind);
+
+  ///@{
+  /**
+   * The kinds extracted, a bit mask: bit (1 << kind) for each Kinds value. Range [0, 63],
+   * default 63 (all).
+   */
+  vtkSetClampMacro(KindMask, int, 0, 63);
+  vtkGetMacro(KindMask, int);
+  void SetKindEnabled(int kind, bool enabled);
+  bool GetKindEnabled(int kind) const;
+  ///@}
+
+  ///@{
+  /**
+   * The view that contours and suggestive contours depend on: the camera's position
+   * (perspective) or direction of projection (parallel). None (default): those kinds are
+   * skipped.
+   */
+  virtual void SetCamera(vtkCamera* camera);
+  vtkGetObjectMacro(Camera, vtkCamera);
+  ///@}
+
+  ///@{
+  /**
+   * The matrix from the input's coordinates to the camera's world (an actor's matrix). None
+   * (default): the identity.
+   */
+  virtual void SetModelMatrix(vtkMatrix4x4* matrix);
+  vtkGetObjectMacro(ModelMatrix, vtkMatrix4x4);
+  ///@}
+
+  ///@{
+  /**
+   * Edges whose two faces' normals differ by more than this angle are creases, in degrees.
+   * Range [0, 180], default 40.
+   */
+  vtkSetClampMacro(CreaseAngle, double, 0.0, 180.0);
+  vtkGetMacro(CreaseAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * A ridge or valley point is drawn where |k| times the object's bounding-box diagonal (the
+   * normal's turn, in radians, across the object's size) exceeds this; its strength grows from
+   * 0 at the threshold to 1 at twice the threshold. Range [0, 1e6], default 40.
+   */
+  vtkSetClampMacro(RidgeThreshold, double, 0.0, 1e6);
+  vtkGetMacro(RidgeThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * A suggestive contour point is drawn where the radial curvature's derivative toward the
+   * viewer times the squared diagonal exceeds this (dimensionless); strength as for ridges,
+   * times a fade from 0 where the surface is seen edge-on to 1 where n.v >= 0.3. Range
+   * [0, 1e9], default 2000.
+   */
+  vtkSetClampMacro(SuggestiveThreshold, double, 0.0, 1e9);
+  vtkGetMacro(SuggestiveThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Ridges, valleys and suggestive contours shorter than this fraction of the diagonal are
+   * dropped (scan noise makes many short pieces). Range [0, 1], default 0.03.
+   */
+  vtkSetClampMacro(MinimumLength, double, 0.0, 1.0);
+  vtkGetMacro(MinimumLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * The curvature estimate's smoothing radius, a fraction of the diagonal
+   * (vtkStylizePrincipalCurvatures::SmoothingRadius): larger values keep scan noise out of
+   * ridges, valleys and suggestive contours. Range [0, 1], default 0.01.
+   */
+  vtkSetClampMacro(CurvatureSmoothing, double, 0.0, 1.0);
+  vtkGetMacro(CurvatureSmoothing, double);
+  ///@}
+
+  /** Includes the camera's and the model matrix's modification times. */
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkStylizeFeatureLines();
+  ~vtkStylizeFeatureLines() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int KindMask = 63;
+  vtkCamera* Camera = nullptr;
+  vtkMatrix4x4* ModelMatrix = nullptr;
+  double CreaseAngle = 40.0;
+  double RidgeThreshold = 40.0;
+  double SuggestiveThreshold = 2000.0;
+  double MinimumLength = 0.03;
+  double CurvatureSmoothing = 0.01;
+
+private:
+  vtkStylizeFeatureLines(const vtkStylizeFeatureLines&) = delete;
+  void operator=(const vtkStylizeFeatureLines&) = delete;
+};
+
+#endif

@@ -1,0 +1,89 @@
+/**
+ * The stages of vtkStylizeFeatureLines (private): the welded triangle mesh, the view, line
+ * segments per kind found inside triangles or along edges, and their chaining into polylines.
+ */
+#ifndef vtkStylizeFeatureLinesInternals_h
+#define vtkStylizeFeatureLinesInternals_h
+
+#include "vtkStylizeMeshGeometry.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace vtkStylizeFeatureLinesInternals
+{
+using vtkStylizeMesh::Vec;
+using Face = std::array<vtkIdType, 3>;
+
+/** A triangle mesh with unit face and vertex normals (zero where undefined). */
+struct Mesh
+{
+  std::vector<Vec> P;
+  std::vector<Face> Faces;
+  std::vector<Vec> FaceNormal;
+  std::vector<double> FaceArea;
+  std::vector<Vec> Normal;
+  std::vector<char> OnCrease; // the vertex is an end of a crease edge
+  double Diagonal = 0.0;      // of the points' bounding box
+};
+
+/** Principal curvatures k1 >= k2 with their unit directions; EMaxAbs the direction of the
+ * larger |k| (zero at planar and umbilic points). */
+struct Curvature
+{
+  std::vector<double> K1, K2;
+  std::vector<Vec> E1, E2, EMaxAbs;
+};
+
+/** The viewer in the mesh's coordinates. */
+struct View
+{
+  bool Parallel = false;
+  Vec Eye{ 0, 0, 0 };      // perspective: the camera's position
+  Vec ToViewer{ 0, 0, 1 }; // parallel: the unit direction toward the viewer
+  /** The unit vector from p toward the viewer. */
+  Vec Toward(const Vec& p) const;
+};
+
+/** One end of a segment: the mesh edge (or vertex) it lies on, where, and its strength. */
+struct End
+{
+  std::uint64_t Key;
+  Vec P;
+  float Strength;
+};
+struct Segment
+{
+  End A, B;
+};
+using Segments = std::vector<Segment>;
+using Chain = std::vector<End>;
+
+/** Fills the faces' normals and areas, the unit vertex normals and the diagonal. */
+void FinishMesh(Mesh& mesh);
+
+/** Boundary edges (one face) and creases (faces' normals more than creaseAngle degrees
+ * apart, or more than two faces); marks the creases' vertices in mesh.OnCrease. */
+void EdgeLines(Mesh& mesh, double creaseAngle, Segments& boundaries, Segments& creases);
+
+/** Zero crossings of n.v inside the triangles. */
+void Contours(const Mesh& mesh, const View& view, Segments& out);
+
+/** Extremes of the larger-magnitude principal curvature along its direction. */
+void RidgesAndValleys(const Mesh& mesh, const Curvature& curvature, double threshold,
+  Segments& ridges, Segments& valleys);
+
+/** Zero crossings of the radial curvature with a positive derivative toward the viewer. */
+void SuggestiveContours(
+  const Mesh& mesh, const Curvature& curvature, const View& view, double threshold, Segments& out);
+
+/** The segments joined through their shared ends into polylines; a junction (an end shared by
+ * three or more segments) ends the chains that meet there. A closed chain repeats its first
+ * end at its end. */
+std::vector<Chain> ChainSegments(const Segments& segments);
+
+/** The length of a chain. */
+double ChainLength(const Chain& chain);
+}
+
+#endif
