@@ -174,7 +174,7 @@ const char* vtkStylizeFeatureLines::GetKindName(int kind)
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizeFeatureLines::SetKindEnabled(int kind, bool enabled)
+void vtkStylizeFeatureLines::EnableKind(int kind, bool enabled)
 {
   if (kind >= 0 && kind < NUMBER_OF_KINDS)
   {
@@ -183,7 +183,7 @@ void vtkStylizeFeatureLines::SetKindEnabled(int kind, bool enabled)
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeFeatureLines::GetKindEnabled(int kind) const
+bool vtkStylizeFeatureLines::IsKindEnabled(int kind) const
 {
   return kind >= 0 && kind < NUMBER_OF_KINDS && (this->KindMask & (1 << kind)) != 0;
 }
@@ -225,9 +225,9 @@ int vtkStylizeFeatureLines::RequestData(
   if (!mesh.Faces.empty() && mesh.Diagonal > 0.0 && std::isfinite(mesh.Diagonal))
   {
     const bool view = this->Camera != nullptr;
-    const bool contours = view && this->GetKindEnabled(CONTOUR);
-    const bool suggestive = view && this->GetKindEnabled(SUGGESTIVE_CONTOUR);
-    const bool ridges = this->GetKindEnabled(RIDGE) || this->GetKindEnabled(VALLEY);
+    const bool contours = view && this->IsKindEnabled(CONTOUR);
+    const bool suggestive = view && this->IsKindEnabled(SUGGESTIVE_CONTOUR);
+    const bool ridges = this->IsKindEnabled(RIDGE) || this->IsKindEnabled(VALLEY);
     // Creases are found for the interior kinds too: they keep those off the creases.
     FL::EdgeLines(mesh, this->CreaseAngle, segments[BOUNDARY], segments[CREASE]);
     const FL::View v = view ? MakeView(this->Camera, this->ModelMatrix) : FL::View();
@@ -260,7 +260,7 @@ int vtkStylizeFeatureLines::RequestData(
   const double minimum = this->MinimumLength * mesh.Diagonal;
   for (int kind = 0; kind < NUMBER_OF_KINDS; ++kind)
   {
-    if (!this->GetKindEnabled(kind))
+    if (!this->IsKindEnabled(kind))
     {
       continue;
     }

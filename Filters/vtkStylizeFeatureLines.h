@@ -64,8 +64,8 @@ public:
    */
   vtkSetClampMacro(KindMask, int, 0, 63);
   vtkGetMacro(KindMask, int);
-  void SetKindEnabled(int kind, bool enabled);
-  bool GetKindEnabled(int kind) const;
+  void EnableKind(int kind, bool enabled);
+  bool IsKindEnabled(int kind) const;
   ///@}
 
   ///@{
@@ -119,8 +119,9 @@ public:
 
   ///@{
   /**
-   * Ridges, valleys and suggestive contours shorter than this fraction of the diagonal are
-   * dropped (scan noise makes many short pieces). Range [0, 1], default 0.03.
+   * Ridges, valleys and suggestive contours shorter than this fraction of the diagonal
+   * (dimensionless) are dropped (scan noise makes many short pieces). Range [0, 1], default
+   * 0.03.
    */
   vtkSetClampMacro(MinimumLength, double, 0.0, 1.0);
   vtkGetMacro(MinimumLength, double);
@@ -128,8 +129,8 @@ public:
 
   ///@{
   /**
-   * The curvature estimate's smoothing radius, a fraction of the diagonal
-   * (vtkStylizePrincipalCurvatures::SmoothingRadius): larger values keep scan noise out of
+   * The curvature estimate's smoothing radius, a fraction of the diagonal (dimensionless;
+   * vtkStylizePrincipalCurvatures::SmoothingRadius): larger values keep scan noise out of
    * ridges, valleys and suggestive contours. Range [0, 1], default 0.01.
    */
   vtkSetClampMacro(CurvatureSmoothing, double, 0.0, 1.0);

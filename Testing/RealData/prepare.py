@@ -38,6 +38,13 @@ MESHES = {
     "elephant": ("elephant.off", "model"),
 }
 
+# Written too, for the feature-lines measures (lines.py) only: a scanned head with a face
+# (eyes, nose, mouth, ears) and a coarse head.
+LINE_MESHES = {
+    "mannequin": ("mannequin-devil.off", "scan"),
+    "head": ("head.off", "scan"),
+}
+
 ARCHIVES = [
     "/usr/share/doc/libcgal-dev/data.tar.gz",
     "/usr/share/doc/libcgal-demo/data.tar.gz",
@@ -137,7 +144,7 @@ def main():
                  "scripts/test.sh does)")
     os.makedirs(args.outdir, exist_ok=True)
     with tarfile.open(archive) as tar:
-        for name, (member, _kind) in MESHES.items():
+        for name, (member, _kind) in {**MESHES, **LINE_MESHES}.items():
             out = os.path.join(args.outdir, name + ".ply")
             if os.path.exists(out):
                 continue

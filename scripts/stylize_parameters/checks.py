@@ -33,12 +33,13 @@ def probe_scalar(cls, p):
 
 def probe_vector(cls, p):
     out = []
-    for v in (-PROBE, PROBE):
+    probe = INT_PROBE if p.type in ("int", "long", "vtkIdType") else PROBE
+    for v in (-probe, probe):
         o = cls()
         getattr(o, "Set" + p.name)(*([v] * p.size))
         out.append(tuple(getattr(o, "Get" + p.name)()))
     lows, highs = out
-    if any(abs(x) >= PROBE for x in lows + highs):
+    if any(abs(x) >= probe for x in lows + highs):
         return None
     if len(set(lows)) == 1 and len(set(highs)) == 1:
         return (lows[0], highs[0])

@@ -13,9 +13,11 @@ DIFF_LINES = 200  # --check shows at most this many lines of each stale file's d
 
 # The classes documented, in order.
 CLASSES = ["vtkStylizeLightingPass", "vtkStylizeGBufferPass", "vtkComicPass", "vtkPixelArtPass",
-           "vtkSketchPass", "vtkStylizePrincipalCurvatures", "vtkStylizeReader"]
+           "vtkSketchPass", "vtkStylizePrincipalCurvatures", "vtkStylizeFeatureLines",
+           "vtkStylizeLineVisibility", "vtkStylizeReader"]
 # The classes of the Filters module (the others are passes).
-FILTER_CLASSES = {"vtkStylizePrincipalCurvatures", "vtkStylizeReader"}
+FILTER_CLASSES = {"vtkStylizePrincipalCurvatures", "vtkStylizeFeatureLines",
+                  "vtkStylizeLineVisibility", "vtkStylizeReader"}
 
 # Units recognized in a comment, first match wins (the phrase must say it is the unit).
 UNIT_PATTERNS = [

@@ -1,0 +1,545 @@
+#include "vtkStylizeLineVisibility.h"
+
+#include "vtkBoundingBox.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkModifiedBSPTree.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkStylizeLineVisibility);
+vtkCxxSetObjectMacro(vtkStylizeLineVisibility, Camera, vtkCamera);
+vtkCxxSetObjectMacro(vtkStylizeLineVisibility, ModelMatrix, vtkMatrix4x4);
+vtkCxxSetObjectMacro(vtkStylizeLineVisibility, DepthImage, vtkImageData);
+
+struct vtkStylizeLineVisibility::Internals
+{
+  struct Occluder
+  {
+    vtkSmartPointer<vtkPolyData> Surface;
+    vtkSmartPointer<vtkMatrix4x4> Matrix;
+  };
+  std::vector<Occluder> Occluders;
+};
+
+namespace
+{
+/** The view's projection and the visibility test of one point (in the lines' coordinates). */
+class Tester
+{
+public:
+  Tester(vtkCamera* camera, vtkMatrix4x4* model, const int size[2])
+    : Width(size[0])
+    , Height(size[1])
+  {
+    vtkNew<vtkMatrix4x4> toWorld;
+    if (model)
+    {
+      toWorld->DeepCopy(model);
+    }
+    vtkMatrix4x4* projection = camera->GetCompositeProjectionTransformMatrix(
+      static_cast<double>(size[0]) / size[1], -1.0, 1.0);
+    vtkMatrix4x4::Multiply4x4(projection, toWorld, this->ToClip);
+    this->ToWorld->DeepCopy(toWorld);
+    this->Parallel = camera->GetParallelProjection() != 0;
+    camera->GetClippingRange(this->Near, this->Far);
+    camera->GetPosition(this->Eye);
+    camera->GetDirectionOfProjection(this->Direction);
+    this->TanHalf = std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0);
+    this->ParallelScale = camera->GetParallelScale();
+  }
+
+  /** Window coordinates (pixels, and depth in [0, 1]) of p; false behind the viewer. */
+  bool Project(const double p[3], double win[3]) const
+  {
+    const double in[4] = { p[0], p[1], p[2], 1.0 };
+    double c[4];
+    this->ToClip->MultiplyPoint(in, c);
+    if (!(c[3] > 0.0))
+    {
+      return false;
+    }
+    win[0] = (c[0] / c[3] + 1.0) * 0.5 * this->Width;
+    win[1] = (c[1] / c[3] + 1.0) * 0.5 * this->Height;
+    win[2] = (c[2] / c[3] + 1.0) * 0.5;
+    return std::isfinite(win[0] + win[1] + win[2]);
+  }
+
+  /** The distance along the view axis of window depth d. */
+  double EyeDepth(double d) const
+  {
+    if (this->Parallel)
+    {
+      return this->Near + d * (this->Far - this->Near);
+    }
+    const double z = 2.0 * d - 1.0;
+    return 2.0 * this->Near * this->Far / ((this->Far + this->Near) - z * (this->Far - this->Near));
+  }
+
+  /** The size of a pixel at eye depth z. */
+  double PixelSize(double z) const
+  {
+    return this->Parallel ? 2.0 * this->ParallelScale / this->Height
+                          : 2.0 * z * this->TanHalf / this->Height;
+  }
+
+  /** Whether window position win lies in the viewport and between the clipping planes. */
+  bool InView(const double win[3]) const
+  {
+    return win[0] >= 0.0 && win[0] < this->Width && win[1] >= 0.0 && win[1] < this->Height &&
+      win[2] >= 0.0 && win[2] <= 1.0;
+  }
+
+  void ToWorldPoint(const double p[3], double w[3]) const
+  {
+    const double in[4] = { p[0], p[1], p[2], 1.0 };
+    double out[4];
+    this->ToWorld->MultiplyPoint(in, out);
+    for (int i = 0; i < 3; ++i)
+    {
+      w[i] = out[i] / out[3];
+    }
+  }
+
+  vtkNew<vtkMatrix4x4> ToClip, ToWorld;
+  int Width, Height;
+  bool Parallel = false;
+  double Near = 0.1, Far = 1.0, TanHalf = 1.0, ParallelScale = 1.0;
+  double Eye[3], Direction[3];
+};
+
+/** DEPTH_BUFFER: a sample against the farthest depth of the pixels within a pixel of it. */
+class DepthTest
+{
+public:
+  DepthTest(const Tester& view, double tolerance)
+    : View(view)
+    , Tolerance(tolerance)
+  {
+  }
+
+  /** The depth image, if it is float, one component, the viewport's size. */
+  bool SetImage(vtkImageData* image)
+  {
+    vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+    int dims[3] = { 0, 0, 0 };
+    if (image)
+    {
+      image->GetDimensions(dims);
+    }
+    if (!scalars || scalars->GetDataType() != VTK_FLOAT || dims[0] != this->View.Width ||
+      dims[1] != this->View.Height || scalars->GetNumberOfComponents() != 1)
+    {
+      return false;
+    }
+    this->Depth = static_cast<const float*>(scalars->GetVoidPointer(0));
+    return true;
+  }
+
+  /** Whether a sample at window position win (in the view) is visible. */
+  bool Visible(const double win[3]) const
+  {
+    const int w = this->View.Width, h = this->View.Height;
+    const int i0 = std::max(0, static_cast<int>(std::ceil(win[0] - 1.5)));
+    const int i1 = std::min(w - 1, static_cast<int>(std::floor(win[0] + 0.5)));
+    const int j0 = std::max(0, static_cast<int>(std::ceil(win[1] - 1.5)));
+    const int j1 = std::min(h - 1, static_cast<int>(std::floor(win[1] + 0.5)));
+    double farthest = 0.0;
+    for (int j = j0; j <= j1; ++j)
+    {
+      for (int i = i0; i <= i1; ++i)
+      {
+        farthest = std::max(farthest, static_cast<double>(this->Depth[j * w + i]));
+      }
+    }
+    if (farthest >= 1.0)
+    {
+      return true; // background next to the sample
+    }
+    const double z = this->View.EyeDepth(win[2]);
+    return this->View.EyeDepth(farthest) >= z - this->Tolerance * this->View.PixelSize(z);
+  }
+
+private:
+  const Tester& View;
+  double Tolerance;
+  const float* Depth = nullptr;
+};
+
+/** RAY_CAST: a ray from the sample toward the viewer against the occluders. */
+class RayCast
+{
+public:
+  explicit RayCast(const Tester& view)
+    : View(view)
+  {
+  }
+
+  /** An occluder, in world coordinates through its matrix (may be null). */
+  void AddOccluder(vtkPolyData* surface, vtkMatrix4x4* matrix)
+  {
+    vtkSmartPointer<vtkPolyData> world = surface;
+    if (matrix)
+    {
+      vtkNew<vtkTransform> t;
+      t->SetMatrix(matrix);
+      vtkNew<vtkTransformPolyDataFilter> f;
+      f->SetInputData(surface);
+      f->SetTransform(t);
+      f->Update();
+      world = f->GetOutput();
+    }
+    const vtkIdType cells = world->GetNumberOfCells();
+    if (cells == 0)
+    {
+      return;
+    }
+    this->Box.AddBounds(world->GetBounds());
+    // The mean edge length of (up to 10000 of) the occluder's cells.
+    const vtkIdType stride = std::max<vtkIdType>(1, cells / 10000);
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < cells; c += stride)
+    {
+      world->GetCellPoints(c, ids);
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        double a[3], b[3];
+        world->GetPoint(ids->GetId(k), a);
+        world->GetPoint(ids->GetId((k + 1) % ids->GetNumberOfIds()), b);
+        this->EdgeSum += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+        ++this->EdgeCount;
+      }
+    }
+    auto locator = vtkSmartPointer<vtkModifiedBSPTree>::New();
+    locator->SetDataSet(world);
+    locator->BuildLocator();
+    this->Locators.push_back(locator);
+  }
+
+  /** Whether a sample p (window position win) sees the viewer. */
+  bool Visible(const double p[3], const double win[3]) const
+  {
+    const double size = this->Box.IsValid() ? this->Box.GetDiagonalLength() : 0.0;
+    // The ray starts one mean edge length (at least 3 pixel widths) from the sample: a
+    // contour's ray grazes its own surface, whose polygons lie up to about half an edge off
+    // the interpolated contour.
+    const double edge = this->EdgeCount > 0 ? this->EdgeSum / this->EdgeCount : 0.0;
+    const double start = std::max(edge, 3.0 * this->View.PixelSize(this->View.EyeDepth(win[2])));
+    double from[3], to[3], dir[3];
+    this->View.ToWorldPoint(p, from);
+    double length = 4.0 * size;
+    if (this->View.Parallel)
+    {
+      dir[0] = -this->View.Direction[0];
+      dir[1] = -this->View.Direction[1];
+      dir[2] = -this->View.Direction[2];
+    }
+    else
+    {
+      vtkMath::Subtract(this->View.Eye, from, dir);
+      length = vtkMath::Norm(dir);
+    }
+    if (vtkMath::Normalize(dir) == 0.0 || start >= length)
+    {
+      return true;
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      to[i] = from[i] + length * dir[i];
+      from[i] += start * dir[i];
+    }
+    double t, x[3], pcoords[3];
+    int subId;
+    for (const auto& locator : this->Locators)
+    {
+      if (locator->IntersectWithLine(from, to, 0.0, t, x, pcoords, subId))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
+private:
+  const Tester& View;
+  std::vector<vtkSmartPointer<vtkModifiedBSPTree>> Locators;
+  vtkBoundingBox Box;
+  double EdgeSum = 0.0;
+  vtkIdType EdgeCount = 0;
+};
+
+/** Cuts the input's polylines into runs of one visibility, into the output. */
+class Splitter
+{
+public:
+  Splitter(vtkPolyData* input, vtkPolyData* output, bool visibleOnly)
+    : Input(input)
+    , Output(output)
+    , VisibleOnly(visibleOnly)
+  {
+    this->Points->SetDataTypeToDouble();
+    output->GetPointData()->InterpolateAllocate(input->GetPointData());
+    output->GetCellData()->CopyAllocate(input->GetCellData());
+    this->PointVisibility->SetName("FeatureVisibility");
+    this->CellVisibility->SetName("FeatureVisibility");
+  }
+
+  /** Polyline `cell` (n points ids) sampled every `spacing` pixels of the view. */
+  template <class Visible>
+  void Split(vtkIdType cell, vtkIdType n, const vtkIdType* ids, const Tester& view, double spacing,
+    Visible visible)
+  {
+    if (n < 2)
+    {
+      return;
+    }
+    double p0[3];
+    this->Input->GetPoint(ids[0], p0);
+    bool current = visible(p0);
+    this->Add(ids[0], ids[1], 0.0, current);
+    for (vtkIdType s = 0; s + 1 < n; ++s)
+    {
+      const vtkIdType a = ids[s], b = ids[s + 1];
+      double pa[3], pb[3], wa[3], wb[3];
+      this->Input->GetPoint(a, pa);
+      this->Input->GetPoint(b, pb);
+      double pixels = 1.0;
+      if (view.Project(pa, wa) && view.Project(pb, wb))
+      {
+        pixels = std::hypot(wb[0] - wa[0], wb[1] - wa[1]);
+      }
+      const int samples =
+        static_cast<int>(std::min(1e6, std::max(1.0, std::ceil(pixels / spacing))));
+      double previous = 0.0;
+      for (int k = 1; k <= samples; ++k)
+      {
+        const double t = static_cast<double>(k) / samples;
+        double p[3];
+        this->At(a, b, t, p);
+        const bool vis = visible(p);
+        if (vis != current)
+        {
+          // The change located by bisection between the two samples.
+          double lo = previous, hi = t;
+          for (int i = 0; i < 4; ++i)
+          {
+            const double mid = 0.5 * (lo + hi);
+            double q[3];
+            this->At(a, b, mid, q);
+            (visible(q) == current ? lo : hi) = mid;
+          }
+          const double cut = 0.5 * (lo + hi);
+          this->Add(a, b, cut, current);
+          this->EndRun(cell, current);
+          current = vis;
+          this->Add(a, b, cut, current);
+        }
+        previous = t;
+      }
+      this->Add(a, b, 1.0, current);
+    }
+    this->EndRun(cell, current);
+  }
+
+  void Finish()
+  {
+    this->Output->SetPoints(this->Points);
+    this->Output->SetLines(this->Lines);
+    this->Output->GetPointData()->AddArray(this->PointVisibility);
+    this->Output->GetCellData()->AddArray(this->CellVisibility);
+    this->Output->Squeeze();
+  }
+
+private:
+  void At(vtkIdType a, vtkIdType b, double t, double p[3]) const
+  {
+    double pa[3], pb[3];
+    this->Input->GetPoint(a, pa);
+    this->Input->GetPoint(b, pb);
+    for (int i = 0; i < 3; ++i)
+    {
+      p[i] = pa[i] + t * (pb[i] - pa[i]);
+    }
+  }
+
+  void Add(vtkIdType a, vtkIdType b, double t, bool visible)
+  {
+    double p[3];
+    this->At(a, b, t, p);
+    const vtkIdType id = this->Points->InsertNextPoint(p);
+    this->Output->GetPointData()->InterpolateEdge(this->Input->GetPointData(), id, a, b, t);
+    this->PointVisibility->InsertNextValue(visible ? 1 : 0);
+    this->Run.push_back(id);
+  }
+
+  void EndRun(vtkIdType cell, bool visible)
+  {
+    if (this->Run.size() >= 2 && (visible || !this->VisibleOnly))
+    {
+      const vtkIdType c =
+        this->Lines->InsertNextCell(static_cast<vtkIdType>(this->Run.size()), this->Run.data());
+      this->Output->GetCellData()->CopyData(this->Input->GetCellData(), cell, c);
+      this->CellVisibility->InsertNextValue(visible ? 1 : 0);
+    }
+    this->Run.clear();
+  }
+
+  vtkPolyData* Input;
+  vtkPolyData* Output;
+  bool VisibleOnly;
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Lines;
+  vtkNew<vtkUnsignedCharArray> PointVisibility, CellVisibility;
+  std::vector<vtkIdType> Run; // the current run's output point ids
+};
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeLineVisibility::vtkStylizeLineVisibility()
+  : Internal(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeLineVisibility::~vtkStylizeLineVisibility()
+{
+  this->SetCamera(nullptr);
+  this->SetModelMatrix(nullptr);
+  this->SetDepthImage(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeLineVisibility::SetViewportSize(int width, int height)
+{
+  width = std::max(1, std::min(65536, width));
+  height = std::max(1, std::min(65536, height));
+  if (width != this->ViewportSize[0] || height != this->ViewportSize[1])
+  {
+    this->ViewportSize[0] = width;
+    this->ViewportSize[1] = height;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeLineVisibility::AddOccluder(vtkPolyData* surface, vtkMatrix4x4* matrix)
+{
+  if (surface)
+  {
+    this->Internal->Occluders.push_back({ surface, matrix });
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeLineVisibility::RemoveAllOccluders()
+{
+  this->Internal->Occluders.clear();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkStylizeLineVisibility::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  for (vtkObject* o : { static_cast<vtkObject*>(this->Camera),
+         static_cast<vtkObject*>(this->ModelMatrix), static_cast<vtkObject*>(this->DepthImage) })
+  {
+    if (o)
+    {
+      t = std::max(t, o->GetMTime());
+    }
+  }
+  return t;
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeLineVisibility::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeLineVisibility::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  if (!this->Camera)
+  {
+    vtkErrorMacro("a camera is required");
+    return 0;
+  }
+  const Tester view(this->Camera, this->ModelMatrix, this->ViewportSize);
+  DepthTest depth(view, this->DepthTolerance);
+  RayCast rays(view);
+  if (this->Method == DEPTH_BUFFER && !depth.SetImage(this->DepthImage))
+  {
+    vtkErrorMacro("DEPTH_BUFFER needs a float depth image of ViewportSize pixels");
+    return 0;
+  }
+  if (this->Method == RAY_CAST)
+  {
+    for (const auto& o : this->Internal->Occluders)
+    {
+      rays.AddOccluder(o.Surface, o.Matrix);
+    }
+  }
+  auto visible = [&](const double p[3]) -> bool
+  {
+    double win[3];
+    if (!view.Project(p, win) || !view.InView(win))
+    {
+      return false;
+    }
+    return this->Method == DEPTH_BUFFER ? depth.Visible(win) : rays.Visible(p, win);
+  };
+  Splitter splitter(input, output, this->VisibleOnly);
+  vtkIdType cell = 0, n;
+  const vtkIdType* ids;
+  vtkCellArray* lines = input->GetLines();
+  for (lines->InitTraversal(); lines->GetNextCell(n, ids); ++cell)
+  {
+    splitter.Split(cell, n, ids, view, this->SampleSpacing, visible);
+  }
+  splitter.Finish();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeLineVisibility::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << this->Method << "\n";
+  os << indent << "Camera: " << this->Camera << "\n";
+  os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
+  os << indent << "ViewportSize: " << this->ViewportSize[0] << " " << this->ViewportSize[1] << "\n";
+  os << indent << "DepthImage: " << this->DepthImage << "\n";
+  os << indent << "Occluders: " << this->Internal->Occluders.size() << "\n";
+  os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
+  os << indent << "DepthTolerance: " << this->DepthTolerance << "\n";
+  os << indent << "VisibleOnly: " << this->VisibleOnly << "\n";
+}

@@ -1,0 +1,144 @@
+/**
+ * @class   vtkStylizeLineVisibility
+ * @brief   Hidden-line removal for polylines on surfaces (vtkStylizeFeatureLines' output):
+ *          each line split where it passes behind a surface, against the scene's depth buffer
+ *          or by ray casting against the scene's meshes.
+ *
+ * The lines are sampled every SampleSpacing pixels of the view (Camera, ViewportSize) and each
+ * sample is tested:
+ * - DEPTH_BUFFER (default): against a rendering's depth (SetDepthImage: the window depth in
+ *   [0, 1] of every actor, as vtkRenderWindow::GetZbufferData gives it). A sample is visible
+ *   when the farthest depth among the pixels within one pixel of it is at most DepthTolerance
+ *   pixel widths in front of it: a contour sits on the edge of its own surface, and the nearest
+ *   pixel must not hide it.
+ * - RAY_CAST: a ray from the sample toward the viewer against every occluder (AddOccluder),
+ *   starting one mean edge length of the occluders (and at least 3 pixel widths) from the
+ *   sample: a contour's ray grazes its own surface, whose polygons lie up to about half an
+ *   edge off the interpolated contour. The independent reference of the tests.
+ * Where two neighbouring samples differ, the change is located by bisection to 1/16 of the
+ * spacing. The output is the input's lines cut into runs, with the input's point data
+ * interpolated and FeatureVisibility (unsigned char, 1 visible, 0 hidden) in point and cell data;
+ * VisibleOnly drops the hidden runs.
+ *
+ * @sa vtkStylizeFeatureLines
+ */
+#ifndef vtkStylizeLineVisibility_h
+#define vtkStylizeLineVisibility_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkStylizeFiltersModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkCamera;
+class vtkImageData;
+class vtkMatrix4x4;
+class vtkPolyData;
+
+class VTKSTYLIZEFILTERS_EXPORT vtkStylizeLineVisibility : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkStylizeLineVisibility* New();
+  vtkTypeMacro(vtkStylizeLineVisibility, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Methods
+  {
+    DEPTH_BUFFER = 0,
+    RAY_CAST = 1
+  };
+
+  ///@{
+  /** How samples are tested: DEPTH_BUFFER or RAY_CAST. Default DEPTH_BUFFER. */
+  vtkSetClampMacro(Method, int, DEPTH_BUFFER, RAY_CAST);
+  vtkGetMacro(Method, int);
+  ///@}
+
+  ///@{
+  /** The view. Required. */
+  virtual void SetCamera(vtkCamera* camera);
+  vtkGetObjectMacro(Camera, vtkCamera);
+  ///@}
+
+  ///@{
+  /** The matrix from the lines' coordinates to the camera's world. None (default): identity. */
+  virtual void SetModelMatrix(vtkMatrix4x4* matrix);
+  vtkGetObjectMacro(ModelMatrix, vtkMatrix4x4);
+  ///@}
+
+  ///@{
+  /**
+   * The viewport's size, in pixels (its aspect ratio is the projection's). Range [1, 65536]
+   * each, default (300, 300).
+   */
+  void SetViewportSize(int width, int height);
+  void SetViewportSize(const int size[2]) { this->SetViewportSize(size[0], size[1]); }
+  vtkGetVector2Macro(ViewportSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * The scene's depth for DEPTH_BUFFER: one float component per pixel, window depth in [0, 1]
+   * (1 where nothing was drawn), ViewportSize pixels, row 0 at the bottom.
+   */
+  virtual void SetDepthImage(vtkImageData* depth);
+  vtkGetObjectMacro(DepthImage, vtkImageData);
+  ///@}
+
+  ///@{
+  /** Surfaces that hide lines for RAY_CAST, each with its model matrix (may be null). */
+  void AddOccluder(vtkPolyData* surface, vtkMatrix4x4* matrix);
+  void RemoveAllOccluders();
+  ///@}
+
+  ///@{
+  /** Distance between samples, in pixels. Range [0.01, 100], default 0.25. */
+  vtkSetClampMacro(SampleSpacing, double, 0.01, 100.0);
+  vtkGetMacro(SampleSpacing, double);
+  ///@}
+
+  ///@{
+  /**
+   * DEPTH_BUFFER: how far behind the nearby surface a sample may be and still count as visible,
+   * in pixels (widths of a pixel at the sample's distance: a surface seen at a grazing angle
+   * changes depth quickly from pixel to pixel). Range [0, 100], default 2.
+   */
+  vtkSetClampMacro(DepthTolerance, double, 0.0, 100.0);
+  vtkGetMacro(DepthTolerance, double);
+  ///@}
+
+  ///@{
+  /** Keep only the visible runs. Default off. */
+  vtkSetMacro(VisibleOnly, bool);
+  vtkGetMacro(VisibleOnly, bool);
+  vtkBooleanMacro(VisibleOnly, bool);
+  ///@}
+
+  /** Includes the camera's, the matrix's and the depth image's modification times. */
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkStylizeLineVisibility();
+  ~vtkStylizeLineVisibility() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Method = DEPTH_BUFFER;
+  vtkCamera* Camera = nullptr;
+  vtkMatrix4x4* ModelMatrix = nullptr;
+  int ViewportSize[2] = { 300, 300 };
+  vtkImageData* DepthImage = nullptr;
+  double SampleSpacing = 0.25;
+  double DepthTolerance = 2.0;
+  bool VisibleOnly = false;
+
+private:
+  vtkStylizeLineVisibility(const vtkStylizeLineVisibility&) = delete;
+  void operator=(const vtkStylizeLineVisibility&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif
