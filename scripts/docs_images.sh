@@ -86,3 +86,12 @@ if [ -x "$paraview" ]; then
   cp "$gui/gui-window.png" "$out/paraview-gui.png"
   echo "$out/paraview-gui.png"
 fi
+
+# Feature lines with hidden lines removed (realdata.lines' drawings).
+for mesh in mannequin lion fandisk armadillo; do
+  lines="$build/Testing/RealData/lines/lines-$mesh.png"
+  if [ -f "$lines" ]; then
+    cp "$lines" "$out/lines-$mesh.png"
+    echo "$out/lines-$mesh.png"
+  fi
+done
