@@ -3,6 +3,7 @@
 #include "vtkStylizePrincipalCurvatures.h"
 
 #include "vtkCamera.h"
+#include "vtkCleanPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -14,7 +15,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStaticCleanPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -41,7 +41,9 @@ FL::Mesh WeldedMesh(vtkPolyData* input)
   {
     return m;
   }
-  vtkNew<vtkStaticCleanPolyData> clean;
+  // (vtkCleanPolyData, not the threaded vtkStaticCleanPolyData, whose merging within a
+  // tolerance differs from run to run in VTK 9.1)
+  vtkNew<vtkCleanPolyData> clean;
   clean->SetInputData(surface);
   clean->SetTolerance(1e-7); // of the diagonal: seams of parametric and CAD surfaces
   clean->ConvertLinesToPointsOff();
@@ -156,7 +158,10 @@ FL::View MakeView(vtkCamera* camera, vtkMatrix4x4* model)
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeFeatureLines::vtkStylizeFeatureLines() = default;
+vtkStylizeFeatureLines::vtkStylizeFeatureLines()
+  : ViewIndependent(new vtkStylizeFeatureLinesInternals::Cache)
+{
+}
 
 //------------------------------------------------------------------------------
 vtkStylizeFeatureLines::~vtkStylizeFeatureLines()
@@ -220,32 +225,46 @@ int vtkStylizeFeatureLines::RequestData(
   {
     return 0;
   }
-  FL::Mesh mesh = WeldedMesh(input);
-  std::vector<FL::Segments> segments(NUMBER_OF_KINDS);
-  if (!mesh.Faces.empty() && mesh.Diagonal > 0.0 && std::isfinite(mesh.Diagonal))
+  // What does not depend on the view is kept while the input and its settings stay: a new
+  // camera recomputes only the contours and the suggestive contours.
+  FL::Cache& cache = *this->ViewIndependent;
+  const bool curvature = this->IsKindEnabled(RIDGE) || this->IsKindEnabled(VALLEY) ||
+    (this->Camera && this->IsKindEnabled(SUGGESTIVE_CONTOUR));
+  const FL::CacheKey key{ input, input->GetMTime(), this->CreaseAngle, this->RidgeThreshold,
+    this->CurvatureSmoothing, curvature };
+  if (!cache.Valid || !(cache.Key == key))
   {
-    const bool view = this->Camera != nullptr;
-    const bool contours = view && this->IsKindEnabled(CONTOUR);
-    const bool suggestive = view && this->IsKindEnabled(SUGGESTIVE_CONTOUR);
-    const bool ridges = this->IsKindEnabled(RIDGE) || this->IsKindEnabled(VALLEY);
-    // Creases are found for the interior kinds too: they keep those off the creases.
-    FL::EdgeLines(mesh, this->CreaseAngle, segments[BOUNDARY], segments[CREASE]);
-    const FL::View v = view ? MakeView(this->Camera, this->ModelMatrix) : FL::View();
-    if (contours)
+    cache = FL::Cache();
+    cache.Key = key;
+    cache.Valid = true;
+    cache.Surface = WeldedMesh(input);
+    if (cache.Surface.Usable())
     {
-      FL::Contours(mesh, v, segments[CONTOUR]);
+      // Creases are found for the interior kinds too: they keep those off the creases.
+      FL::EdgeLines(cache.Surface, this->CreaseAngle, cache.Boundaries, cache.Creases);
+      if (curvature)
+      {
+        cache.Curvatures = Curvatures(cache.Surface, this->CurvatureSmoothing);
+        FL::RidgesAndValleys(
+          cache.Surface, cache.Curvatures, this->RidgeThreshold, cache.Ridges, cache.Valleys);
+      }
     }
-    if (ridges || suggestive)
+  }
+  const FL::Mesh& mesh = cache.Surface;
+  std::vector<FL::Segments> viewSegments(NUMBER_OF_KINDS);
+  const FL::Segments* segments[NUMBER_OF_KINDS] = { &viewSegments[CONTOUR], &cache.Boundaries,
+    &cache.Creases, &cache.Ridges, &cache.Valleys, &viewSegments[SUGGESTIVE_CONTOUR] };
+  if (mesh.Usable() && this->Camera)
+  {
+    const FL::View v = MakeView(this->Camera, this->ModelMatrix);
+    if (this->IsKindEnabled(CONTOUR))
     {
-      const FL::Curvature c = Curvatures(mesh, this->CurvatureSmoothing);
-      if (ridges)
-      {
-        FL::RidgesAndValleys(mesh, c, this->RidgeThreshold, segments[RIDGE], segments[VALLEY]);
-      }
-      if (suggestive)
-      {
-        FL::SuggestiveContours(mesh, c, v, this->SuggestiveThreshold, segments[SUGGESTIVE_CONTOUR]);
-      }
+      FL::Contours(mesh, v, viewSegments[CONTOUR]);
+    }
+    if (this->IsKindEnabled(SUGGESTIVE_CONTOUR))
+    {
+      FL::SuggestiveContours(
+        mesh, cache.Curvatures, v, this->SuggestiveThreshold, viewSegments[SUGGESTIVE_CONTOUR]);
     }
   }
 
@@ -265,7 +284,7 @@ int vtkStylizeFeatureLines::RequestData(
       continue;
     }
     const bool interior = kind == RIDGE || kind == VALLEY || kind == SUGGESTIVE_CONTOUR;
-    for (const FL::Chain& chain : FL::ChainSegments(segments[kind]))
+    for (const FL::Chain& chain : FL::ChainSegments(*segments[kind]))
     {
       if (chain.size() < 2 || (interior && FL::ChainLength(chain) < minimum))
       {

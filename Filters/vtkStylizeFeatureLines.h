@@ -23,6 +23,9 @@
  * any scale gives the same lines. Segments are chained into polylines through the mesh edges
  * they cross; interior lines (ridges, valleys, suggestive contours) shorter than MinimumLength
  * are dropped. Contours and suggestive contours need a Camera; without one they are skipped.
+ * What does not depend on the view (the welded mesh, its curvature, boundaries, creases, ridges
+ * and valleys) is kept while the input and those settings stay the same: a new camera
+ * recomputes only the contours and the suggestive contours.
  * Method, thresholds and their tuning on real data: docs/algorithms.md ("Feature lines").
  *
  * @sa vtkStylizePrincipalCurvatures vtkFeatureEdges vtkPolyDataSilhouette
@@ -33,8 +36,14 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkStylizeFiltersModule.h" // for export macro
 
+#include <memory> // for std::unique_ptr
+
 class vtkCamera;
 class vtkMatrix4x4;
+namespace vtkStylizeFeatureLinesInternals
+{
+struct Cache;
+}
 
 class VTKSTYLIZEFILTERS_EXPORT vtkStylizeFeatureLines : public vtkPolyDataAlgorithm
 {
@@ -159,6 +168,9 @@ protected:
 private:
   vtkStylizeFeatureLines(const vtkStylizeFeatureLines&) = delete;
   void operator=(const vtkStylizeFeatureLines&) = delete;
+
+  /** The welded mesh, its curvature and the view-independent lines of the last input. */
+  std::unique_ptr<vtkStylizeFeatureLinesInternals::Cache> ViewIndependent;
 };
 
 #endif

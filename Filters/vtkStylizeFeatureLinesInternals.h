@@ -7,6 +7,7 @@
 
 #include "vtkStylizeMeshGeometry.h"
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -25,6 +26,12 @@ struct Mesh
   std::vector<Vec> Normal;
   std::vector<char> OnCrease; // the vertex is an end of a crease edge
   double Diagonal = 0.0;      // of the points' bounding box
+
+  /** Whether there are faces and a finite, non-zero size. */
+  bool Usable() const
+  {
+    return !this->Faces.empty() && this->Diagonal > 0.0 && std::isfinite(this->Diagonal);
+  }
 };
 
 /** Principal curvatures k1 >= k2 with their unit directions; EMaxAbs the direction of the
@@ -45,6 +52,21 @@ struct View
   Vec Toward(const Vec& p) const;
 };
 
+/** What the view-independent part of a run depends on: the input and the settings used. */
+struct CacheKey
+{
+  const void* Input = nullptr;
+  unsigned long InputTime = 0;
+  double CreaseAngle = 0.0, RidgeThreshold = 0.0, CurvatureSmoothing = 0.0;
+  bool Curvature = false;
+  bool operator==(const CacheKey& o) const
+  {
+    return this->Input == o.Input && this->InputTime == o.InputTime &&
+      this->CreaseAngle == o.CreaseAngle && this->RidgeThreshold == o.RidgeThreshold &&
+      this->CurvatureSmoothing == o.CurvatureSmoothing && this->Curvature == o.Curvature;
+  }
+};
+
 /** One end of a segment: the mesh edge (or vertex) it lies on, where, and its strength. */
 struct End
 {
@@ -58,6 +80,16 @@ struct Segment
 };
 using Segments = std::vector<Segment>;
 using Chain = std::vector<End>;
+
+/** The view-independent part of the last run (vtkStylizeFeatureLines keeps it). */
+struct Cache
+{
+  bool Valid = false;
+  CacheKey Key;
+  vtkStylizeFeatureLinesInternals::Mesh Surface;
+  vtkStylizeFeatureLinesInternals::Curvature Curvatures;
+  Segments Boundaries, Creases, Ridges, Valleys;
+};
 
 /** Fills the faces' normals and areas, the unit vertex normals and the diagonal. */
 void FinishMesh(Mesh& mesh);

@@ -290,6 +290,51 @@ void SuggestiveContours()
     "suggestive contours differ with scale: %d, %d, %d", counts[0], counts[1], counts[2]);
 }
 
+/** A filter run again with a new camera, or a changed input, gives what a new filter gives: the
+ * kept view-independent part follows the input and its settings. */
+void Reuse()
+{
+  vtkNew<vtkParametricTorus> torus;
+  vtkNew<vtkParametricFunctionSource> source;
+  source->SetParametricFunction(torus);
+  source->SetUResolution(80);
+  source->SetVResolution(40);
+  source->SetScalarModeToNone();
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0.0, -6.0, 2.0);
+  vtkNew<vtkStylizeFeatureLines> kept;
+  kept->SetInputConnection(source->GetOutputPort());
+  kept->SetCamera(camera);
+  kept->SetRidgeThreshold(1.0);
+  kept->SetSuggestiveThreshold(1.0);
+  kept->Update();
+  auto same = [&](const char* what)
+  {
+    vtkNew<vtkStylizeFeatureLines> fresh;
+    fresh->SetInputConnection(source->GetOutputPort());
+    fresh->SetCamera(camera);
+    fresh->SetRidgeThreshold(1.0);
+    fresh->SetSuggestiveThreshold(1.0);
+    fresh->SetCreaseAngle(kept->GetCreaseAngle());
+    fresh->Update();
+    kept->Update();
+    const Lines a = Measure(kept->GetOutput()), b = Measure(fresh->GetOutput());
+    for (int k = 0; k < Kind::NUMBER_OF_KINDS; ++k)
+    {
+      STYLIZE_CHECK(a.Count[k] == b.Count[k] && a.Length[k] == b.Length[k],
+        "%s: %s lines differ from a new filter's (%d of length %.17g, %d of length %.17g)", what,
+        vtkStylizeFeatureLines::GetKindName(k), a.Count[k], a.Length[k], b.Count[k], b.Length[k]);
+    }
+  };
+  camera->Azimuth(30.0);
+  same("new camera");
+  source->SetUResolution(60);
+  same("changed input");
+  kept->SetCreaseAngle(20.0);
+  camera->Elevation(20.0);
+  same("changed crease angle");
+}
+
 /** Empty data, points without faces, non-finite points, one triangle, a camera on the surface:
  * no crash, finite output. */
 void Degenerate()
@@ -340,6 +385,7 @@ int TestFeatureLines(int, char*[])
   EdgesOfShapes();
   RidgesAndValleys();
   SuggestiveContours();
+  Reuse();
   Degenerate();
   return Failures == 0 ? 0 : 1;
 }
