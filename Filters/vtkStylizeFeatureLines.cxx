@@ -3,9 +3,9 @@
 #include "vtkStylizePrincipalCurvatures.h"
 
 #include "vtkCamera.h"
-#include "vtkCleanPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
