@@ -238,6 +238,27 @@ void FL::EdgeLines(Mesh& m, double creaseAngle, Segments& boundaries, Segments& 
     }
     i = j;
   }
+  // The edges of two faces of which one touches a crease.
+  m.CreaseSideEdges.clear();
+  auto touches = [&m](size_t f)
+  { return m.OnCrease[m.Faces[f][0]] || m.OnCrease[m.Faces[f][1]] || m.OnCrease[m.Faces[f][2]]; };
+  for (size_t i = 0; i < edges.size();)
+  {
+    size_t j = i + 1;
+    while (j < edges.size() && std::get<0>(edges[j]) == std::get<0>(edges[i]))
+    {
+      ++j;
+    }
+    const size_t f0 = std::get<1>(edges[i]);
+    if (j - i == 2 && (touches(f0) || touches(std::get<1>(edges[i + 1]))))
+    {
+      const std::uint64_t key = std::get<0>(edges[i]);
+      m.CreaseSideEdges.push_back(
+        { static_cast<vtkIdType>(key / m.P.size()), static_cast<vtkIdType>(key % m.P.size()),
+          static_cast<vtkIdType>(f0), static_cast<vtkIdType>(std::get<1>(edges[i + 1])) });
+    }
+    i = j;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -256,6 +277,10 @@ void FL::Contours(const Mesh& m, const View& view, Segments& out)
     [&](size_t f, Segments& segments, Segments*)
     {
       const Face& t = m.Faces[f];
+      if (m.OnCrease[t[0]] || m.OnCrease[t[1]] || m.OnCrease[t[2]])
+      {
+        return; // flat: its contour is on its edges (below)
+      }
       const double v[3] = { g[t[0]], g[t[1]], g[t[2]] };
       const double none[3] = { 0, 0, 0 };
       Segment s;
@@ -265,6 +290,21 @@ void FL::Contours(const Mesh& m, const View& view, Segments& out)
         segments.push_back(s);
       }
     });
+  // Beside creases: the edges between a face toward the viewer and one away from it, ends keyed
+  // apart from the edge points (np * np + point id).
+  const std::uint64_t np = m.P.size();
+  for (const auto& e : m.CreaseSideEdges)
+  {
+    const Vec mid = Scale(Add(m.P[e[0]], m.P[e[1]]), 0.5);
+    const Vec v = view.Toward(mid);
+    const bool toward0 = Dot(m.FaceNormal[e[2]], v) >= 0.0;
+    const bool toward1 = Dot(m.FaceNormal[e[3]], v) >= 0.0;
+    if (toward0 != toward1)
+    {
+      out.push_back({ { np * np + static_cast<std::uint64_t>(e[0]), m.P[e[0]], 1.0f },
+        { np * np + static_cast<std::uint64_t>(e[1]), m.P[e[1]], 1.0f } });
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -322,6 +362,13 @@ void FL::RidgesAndValleys(
       const double second = Dot(FaceGradient(m, f, dv), e);
       const bool convex = k[t[0]] > 0.0;
       if ((convex && second >= 0.0) || (!convex && second <= 0.0))
+      {
+        return;
+      }
+      // The curvature must change along e by at least its own size over the object's size: on
+      // a cylinder or a tube (k constant along e) every point is an extreme, none a ridge.
+      const double kc = (std::abs(k[t[0]]) + std::abs(k[t[1]]) + std::abs(k[t[2]])) / 3.0;
+      if (std::abs(second) * m.Diagonal * m.Diagonal < kc * Norm(e))
       {
         return;
       }

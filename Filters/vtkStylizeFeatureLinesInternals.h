@@ -25,7 +25,11 @@ struct Mesh
   std::vector<double> FaceArea;
   std::vector<Vec> Normal;
   std::vector<char> OnCrease; // the vertex is an end of a crease edge
-  double Diagonal = 0.0;      // of the points' bounding box
+  /** The edges of two faces that touch a crease: (a, b, face, face). Their faces are flat
+   * (a normal interpolated across a crease means nothing), so their contours are the edges
+   * between a face toward the viewer and one away from it. */
+  std::vector<std::array<vtkIdType, 4>> CreaseSideEdges;
+  double Diagonal = 0.0; // of the points' bounding box
 
   /** Whether there are faces and a finite, non-zero size. */
   bool Usable() const
@@ -98,7 +102,8 @@ void FinishMesh(Mesh& mesh);
  * apart, or more than two faces); marks the creases' vertices in mesh.OnCrease. */
 void EdgeLines(Mesh& mesh, double creaseAngle, Segments& boundaries, Segments& creases);
 
-/** Zero crossings of n.v inside the triangles. */
+/** Zero crossings of n.v inside the triangles; beside creases, the edges between a face toward
+ * the viewer and one away from it. */
 void Contours(const Mesh& mesh, const View& view, Segments& out);
 
 /** Extremes of the larger-magnitude principal curvature along its direction. */

@@ -5,6 +5,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCubeSource.h"
+#include "vtkCylinderSource.h"
 #include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -209,6 +210,16 @@ vtkSmartPointer<vtkPolyData> GaussianRidge(int n)
 
 void RidgesAndValleys()
 {
+  // A cylinder's curvature is the same all around: every point is an extreme, none a ridge.
+  vtkNew<vtkCylinderSource> cylinder;
+  cylinder->SetResolution(64);
+  cylinder->CappingOff();
+  const Lines c = Run(cylinder, nullptr, Bit(Kind::RIDGE) | Bit(Kind::VALLEY));
+  std::printf("cylinder: %d ridges, %d valleys\n", c.Count[Kind::RIDGE], c.Count[Kind::VALLEY]);
+  STYLIZE_CHECK(c.Count[Kind::RIDGE] == 0 && c.Count[Kind::VALLEY] == 0,
+    "cylinder: %d ridges and %d valleys, expected none", c.Count[Kind::RIDGE],
+    c.Count[Kind::VALLEY]);
+
   vtkNew<vtkTriangleFilter> source; // a pass-through, so that Run() can scale the data
   source->SetInputData(GaussianRidge(120));
   for (double scale : { 1.0, 1e-6, 1e6 })
