@@ -19,7 +19,6 @@ import sys
 import tempfile
 import xml.etree.ElementTree as ElementTree
 
-from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkTriangleFilter
 from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkSphereSource
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
