@@ -94,12 +94,17 @@ def view(mesh, azimuth, elevation, up):
     camera.OrthogonalizeViewUp()
     renderer.ResetCamera()
     window.Render()
+    return window, camera, depth_of(window)
+
+
+def depth_of(window):
+    """The window's depth buffer as a float image (window depth in [0, 1])."""
     z = vtk.vtkFloatArray()
     window.GetZbufferData(0, 0, SIZE[0] - 1, SIZE[1] - 1, z)
     depth = vtk.vtkImageData()
     depth.SetDimensions(SIZE[0], SIZE[1], 1)
     depth.GetPointData().SetScalars(z)
-    return window, camera, depth
+    return depth
 
 
 def visible_lines(lines, camera, method, depth=None, occluder=None):
@@ -246,11 +251,7 @@ def motion(name, path, steps=4):
             camera.Azimuth(1.0)
             renderer.ResetCameraClippingRange()
             window.Render()
-        z = vtk.vtkFloatArray()
-        window.GetZbufferData(0, 0, SIZE[0] - 1, SIZE[1] - 1, z)
-        depth = vtk.vtkImageData()
-        depth.SetDimensions(SIZE[0], SIZE[1], 1)
-        depth.GetPointData().SetScalars(z)
+        depth = depth_of(window)
         lines.Modified()
         lines.Update()
         copy = vtk.vtkPolyData()
