@@ -20,8 +20,6 @@
 #include <algorithm>
 
 vtkStandardNewMacro(vtkStylizeFeatureLines);
-vtkCxxSetObjectMacro(vtkStylizeFeatureLines, Camera, vtkCamera);
-vtkCxxSetObjectMacro(vtkStylizeFeatureLines, ModelMatrix, vtkMatrix4x4);
 
 namespace FL = vtkStylizeFeatureLinesInternals;
 using namespace vtkStylizeMesh;
@@ -164,11 +162,7 @@ vtkStylizeFeatureLines::vtkStylizeFeatureLines()
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeFeatureLines::~vtkStylizeFeatureLines()
-{
-  this->SetCamera(nullptr);
-  this->SetModelMatrix(nullptr);
-}
+vtkStylizeFeatureLines::~vtkStylizeFeatureLines() = default;
 
 //------------------------------------------------------------------------------
 const char* vtkStylizeFeatureLines::GetKindName(int kind)
@@ -191,28 +185,6 @@ void vtkStylizeFeatureLines::EnableKind(int kind, bool enabled)
 bool vtkStylizeFeatureLines::IsKindEnabled(int kind) const
 {
   return kind >= 0 && kind < NUMBER_OF_KINDS && (this->KindMask & (1 << kind)) != 0;
-}
-
-//------------------------------------------------------------------------------
-vtkMTimeType vtkStylizeFeatureLines::GetMTime()
-{
-  vtkMTimeType t = this->Superclass::GetMTime();
-  if (this->Camera)
-  {
-    t = std::max(t, this->Camera->GetMTime());
-  }
-  if (this->ModelMatrix)
-  {
-    t = std::max(t, this->ModelMatrix->GetMTime());
-  }
-  return t;
-}
-
-//------------------------------------------------------------------------------
-int vtkStylizeFeatureLines::FillInputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -313,8 +285,6 @@ void vtkStylizeFeatureLines::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "KindMask: " << this->KindMask << "\n";
-  os << indent << "Camera: " << this->Camera << "\n";
-  os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
   os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
   os << indent << "RidgeThreshold: " << this->RidgeThreshold << "\n";
   os << indent << "SuggestiveThreshold: " << this->SuggestiveThreshold << "\n";

@@ -22,7 +22,9 @@
  * Every threshold is relative to the object (its bounding-box diagonal), so the same mesh at
  * any scale gives the same lines. Segments are chained into polylines through the mesh edges
  * they cross; interior lines (ridges, valleys, suggestive contours) shorter than MinimumLength
- * are dropped. Contours and suggestive contours need a Camera; without one they are skipped.
+ * are dropped. Contours and suggestive contours need a Camera (vtkStylizeViewFilter, with the
+ * ModelMatrix from the input's coordinates to the camera's world); without one they are
+ * skipped.
  * What does not depend on the view (the welded mesh, its curvature, boundaries, creases, ridges
  * and valleys) is kept while the input and those settings stay the same: a new camera
  * recomputes only the contours and the suggestive contours.
@@ -33,35 +35,33 @@
 #ifndef vtkStylizeFeatureLines_h
 #define vtkStylizeFeatureLines_h
 
-#include "vtkPolyDataAlgorithm.h"
 #include "vtkStylizeFiltersModule.h" // for export macro
+#include "vtkStylizeViewFilter.h"
 
 #include <memory> // for std::unique_ptr
 
-class vtkCamera;
-class vtkMatrix4x4;
 namespace vtkStylizeFeatureLinesInternals
 {
 struct Cache;
 }
 
-class VTKSTYLIZEFILTERS_EXPORT vtkStylizeFeatureLines : public vtkPolyDataAlgorithm
+class VTKSTYLIZEFILTERS_EXPORT vtkStylizeFeatureLines : public vtkStylizeViewFilter
 {
 public:
   static vtkStylizeFeatureLines* New();
-  vtkTypeMacro(vtkStylizeFeatureLines, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkStylizeFeatureLines, vtkStylizeViewFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** The kinds of line: the values of the output's FeatureKind arrays. */
   enum Kinds
   {
-    CONTOUR = 0,
-    BOUNDARY = 1,
-    CREASE = 2,
-    RIDGE = 3,
-    VALLEY = 4,
-    SUGGESTIVE_CONTOUR = 5,
-    NUMBER_OF_KINDS = 6
+    CONTOUR, // 0
+    BOUNDARY,
+    CREASE,
+    RIDGE,
+    VALLEY,
+    SUGGESTIVE_CONTOUR, // 5
+    NUMBER_OF_KINDS
   };
   /** The name of a kind ("contour", "boundary", "crease", "ridge", "valley", "suggestive"). */
   static const char* GetKindName(int kind);
@@ -75,25 +75,6 @@ public:
   vtkGetMacro(KindMask, int);
   void EnableKind(int kind, bool enabled);
   bool IsKindEnabled(int kind) const;
-  ///@}
-
-  ///@{
-  /**
-   * The view that contours and suggestive contours depend on: the camera's position
-   * (perspective) or direction of projection (parallel). None (default): those kinds are
-   * skipped.
-   */
-  virtual void SetCamera(vtkCamera* camera);
-  vtkGetObjectMacro(Camera, vtkCamera);
-  ///@}
-
-  ///@{
-  /**
-   * The matrix from the input's coordinates to the camera's world (an actor's matrix). None
-   * (default): the identity.
-   */
-  virtual void SetModelMatrix(vtkMatrix4x4* matrix);
-  vtkGetObjectMacro(ModelMatrix, vtkMatrix4x4);
   ///@}
 
   ///@{
@@ -146,19 +127,13 @@ public:
   vtkGetMacro(CurvatureSmoothing, double);
   ///@}
 
-  /** Includes the camera's and the model matrix's modification times. */
-  vtkMTimeType GetMTime() override;
-
 protected:
   vtkStylizeFeatureLines();
   ~vtkStylizeFeatureLines() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int KindMask = 63;
-  vtkCamera* Camera = nullptr;
-  vtkMatrix4x4* ModelMatrix = nullptr;
   double CreaseAngle = 40.0;
   double RidgeThreshold = 40.0;
   double SuggestiveThreshold = 2000.0;

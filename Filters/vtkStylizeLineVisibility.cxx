@@ -26,8 +26,6 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkStylizeLineVisibility);
-vtkCxxSetObjectMacro(vtkStylizeLineVisibility, Camera, vtkCamera);
-vtkCxxSetObjectMacro(vtkStylizeLineVisibility, ModelMatrix, vtkMatrix4x4);
 vtkCxxSetObjectMacro(vtkStylizeLineVisibility, DepthImage, vtkImageData);
 
 struct vtkStylizeLineVisibility::Internals
@@ -421,8 +419,6 @@ vtkStylizeLineVisibility::vtkStylizeLineVisibility()
 //------------------------------------------------------------------------------
 vtkStylizeLineVisibility::~vtkStylizeLineVisibility()
 {
-  this->SetCamera(nullptr);
-  this->SetModelMatrix(nullptr);
   this->SetDepthImage(nullptr);
 }
 
@@ -460,22 +456,11 @@ void vtkStylizeLineVisibility::RemoveAllOccluders()
 vtkMTimeType vtkStylizeLineVisibility::GetMTime()
 {
   vtkMTimeType t = this->Superclass::GetMTime();
-  for (vtkObject* o : { static_cast<vtkObject*>(this->Camera),
-         static_cast<vtkObject*>(this->ModelMatrix), static_cast<vtkObject*>(this->DepthImage) })
+  if (this->DepthImage)
   {
-    if (o)
-    {
-      t = std::max(t, o->GetMTime());
-    }
+    t = std::max(t, this->DepthImage->GetMTime());
   }
   return t;
-}
-
-//------------------------------------------------------------------------------
-int vtkStylizeLineVisibility::FillInputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -534,8 +519,6 @@ void vtkStylizeLineVisibility::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Method: " << this->Method << "\n";
-  os << indent << "Camera: " << this->Camera << "\n";
-  os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
   os << indent << "ViewportSize: " << this->ViewportSize[0] << " " << this->ViewportSize[1] << "\n";
   os << indent << "DepthImage: " << this->DepthImage << "\n";
   os << indent << "Occluders: " << this->Internal->Occluders.size() << "\n";

@@ -4,7 +4,8 @@
  *          each line split where it passes behind a surface, against the scene's depth buffer
  *          or by ray casting against the scene's meshes.
  *
- * The lines are sampled every SampleSpacing pixels of the view (Camera, ViewportSize) and each
+ * The lines are sampled every SampleSpacing pixels of the view (the Camera, which is required,
+ * the ModelMatrix and the ViewportSize) and each
  * sample is tested:
  * - DEPTH_BUFFER (default): against a rendering's depth (SetDepthImage: the window depth in
  *   [0, 1] of every actor, as vtkRenderWindow::GetZbufferData gives it). A sample is visible
@@ -25,45 +26,33 @@
 #ifndef vtkStylizeLineVisibility_h
 #define vtkStylizeLineVisibility_h
 
-#include "vtkPolyDataAlgorithm.h"
 #include "vtkStylizeFiltersModule.h" // for export macro
+#include "vtkStylizeViewFilter.h"
 
 #include <memory> // for std::unique_ptr
 
-class vtkCamera;
 class vtkImageData;
 class vtkMatrix4x4;
 class vtkPolyData;
 
-class VTKSTYLIZEFILTERS_EXPORT vtkStylizeLineVisibility : public vtkPolyDataAlgorithm
+class VTKSTYLIZEFILTERS_EXPORT vtkStylizeLineVisibility : public vtkStylizeViewFilter
 {
 public:
   static vtkStylizeLineVisibility* New();
-  vtkTypeMacro(vtkStylizeLineVisibility, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkStylizeLineVisibility, vtkStylizeViewFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /** How samples are tested (below). */
   enum Methods
   {
-    DEPTH_BUFFER = 0,
-    RAY_CAST = 1
+    DEPTH_BUFFER, // 0
+    RAY_CAST
   };
 
   ///@{
   /** How samples are tested: DEPTH_BUFFER or RAY_CAST. Default DEPTH_BUFFER. */
   vtkSetClampMacro(Method, int, DEPTH_BUFFER, RAY_CAST);
   vtkGetMacro(Method, int);
-  ///@}
-
-  ///@{
-  /** The view. Required. */
-  virtual void SetCamera(vtkCamera* camera);
-  vtkGetObjectMacro(Camera, vtkCamera);
-  ///@}
-
-  ///@{
-  /** The matrix from the lines' coordinates to the camera's world. None (default): identity. */
-  virtual void SetModelMatrix(vtkMatrix4x4* matrix);
-  vtkGetObjectMacro(ModelMatrix, vtkMatrix4x4);
   ///@}
 
   ///@{
@@ -114,19 +103,16 @@ public:
   vtkBooleanMacro(VisibleOnly, bool);
   ///@}
 
-  /** Includes the camera's, the matrix's and the depth image's modification times. */
+  /** Includes the depth image's modification time (and the camera's and the matrix's). */
   vtkMTimeType GetMTime() override;
 
 protected:
   vtkStylizeLineVisibility();
   ~vtkStylizeLineVisibility() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Method = DEPTH_BUFFER;
-  vtkCamera* Camera = nullptr;
-  vtkMatrix4x4* ModelMatrix = nullptr;
   int ViewportSize[2] = { 300, 300 };
   vtkImageData* DepthImage = nullptr;
   double SampleSpacing = 0.25;
