@@ -26,6 +26,11 @@ Filters (module ``vtkstylize.vtkStylizeFilters``):
 - ``vtkStylizeDemoScene``: the built-in scene (wavelet isosurface, torus, streamline tubes) as
   a multiblock dataset.
 - ``vtkStylizePrincipalCurvatures``: per-point principal curvatures and directions of a surface.
+- ``vtkStylizeFeatureLines``: the lines an illustrator draws on a surface seen by a camera
+  (contours, boundaries, creases, ridges, valleys, suggestive contours), as polylines.
+- ``vtkStylizeLineVisibility``: hidden-line removal for those lines, against a rendering's depth
+  buffer or by ray casting: the lines split where they pass behind a surface.
+- ``vtkStylizeViewFilter``: the base of those two (the camera and the model matrix).
 
 Checked reading and the animation encoder (module ``vtkstylize.vtkStylizeIO``):
 
