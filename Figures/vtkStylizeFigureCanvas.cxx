@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <string>
 
 namespace vtkStylizeFigure
 {
@@ -187,5 +189,105 @@ void SetColor(cairo_t* cr, unsigned key, double alpha)
 {
   cairo_set_source_rgba(
     cr, ((key >> 16) & 255) / 255.0, ((key >> 8) & 255) / 255.0, (key & 255) / 255.0, alpha);
+}
+
+//------------------------------------------------------------------------------
+bool DrawPaperRegions(Canvas& c, const Image& paper, int maximum)
+{
+  std::map<unsigned, long long> counts;
+  for (int y = 0; y < paper.H; ++y)
+  {
+    for (int x = 0; x < paper.W; ++x)
+    {
+      ++counts[paper.Key(x, y)];
+    }
+  }
+  const long long total = static_cast<long long>(paper.W) * paper.H;
+  const long long minimum = std::max<long long>(4, total / 20000);
+  std::vector<std::pair<long long, unsigned>> major;
+  long long minor = 0;
+  for (const auto& kv : counts)
+  {
+    if (kv.second >= minimum)
+    {
+      major.emplace_back(kv.second, kv.first);
+    }
+    else
+    {
+      minor += kv.second;
+    }
+  }
+  std::sort(major.rbegin(), major.rend());
+  if (major.empty() || static_cast<int>(major.size()) > maximum || minor > total / 50)
+  {
+    return false;
+  }
+  // every pixel to its nearest major colour
+  std::map<unsigned, size_t> nearest;
+  auto dist = [](unsigned a, unsigned b)
+  {
+    int d = 0;
+    for (int s : { 16, 8, 0 })
+    {
+      const int q = static_cast<int>((a >> s) & 255) - static_cast<int>((b >> s) & 255);
+      d += q * q;
+    }
+    return d;
+  };
+  for (const auto& kv : counts)
+  {
+    size_t best = 0;
+    for (size_t i = 1; i < major.size(); ++i)
+    {
+      if (dist(kv.first, major[i].second) < dist(kv.first, major[best].second))
+      {
+        best = i;
+      }
+    }
+    nearest[kv.first] = best;
+  }
+  std::vector<size_t> label(static_cast<size_t>(total));
+  for (int y = 0; y < paper.H; ++y)
+  {
+    for (int x = 0; x < paper.W; ++x)
+    {
+      label[static_cast<size_t>(y) * paper.W + x] = nearest[paper.Key(x, y)];
+    }
+  }
+  // the largest as the page, the others over it
+  SetColor(c.Cr, major[0].second);
+  cairo_rectangle(c.Cr, 0, 0, c.W, c.H);
+  cairo_fill(c.Cr);
+  ++c.Rectangles;
+  std::vector<float> mask(label.size());
+  for (size_t m = 1; m < major.size(); ++m)
+  {
+    for (size_t i = 0; i < label.size(); ++i)
+    {
+      mask[i] = label[i] == m ? 0.0f : 1.0f;
+    }
+    cairo_new_path(c.Cr);
+    c.Paths += TraceInto(c.Cr, mask, c.W, c.H, 0.5f, 1);
+    cairo_set_fill_rule(c.Cr, CAIRO_FILL_RULE_EVEN_ODD);
+    SetColor(c.Cr, major[m].second);
+    cairo_fill(c.Cr);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void DrawPaper(Canvas& c, const Image& paper, int paperMode, int maximumPaperColors)
+{
+  if (paperMode == 0 && DrawPaperRegions(c, paper, maximumPaperColors))
+  {
+    return;
+  }
+  if (paperMode == 0)
+  {
+    c.Warning += "the paper has more than " + std::to_string(maximumPaperColors) +
+      " colours: drawn as an image; ";
+  }
+  DrawImage(c.Cr, paper);
+  ++c.Images;
 }
 }

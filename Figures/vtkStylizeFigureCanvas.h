@@ -77,6 +77,19 @@ long long TraceInto(
 /** Fills where `value` < threshold (traced) with black at `alpha`: multiplies by 1 - alpha. */
 void FillTraced(Canvas& c, const std::vector<float>& value, float threshold, double alpha);
 
+/**
+ * The paper as one filled region per colour (traced); false, drawing nothing, when it has more
+ * than `maximum` colours.
+ */
+bool DrawPaperRegions(Canvas& c, const Image& paper, int maximum);
+
+/**
+ * The paper of a style (its captured layer `paper`) as the writer's PaperMode says (0, REGIONS:
+ * regions of one colour each, an image beyond `maximumPaperColors` with a warning; 1, IMAGE:
+ * one image).
+ */
+void DrawPaper(Canvas& c, const Image& paper, int paperMode, int maximumPaperColors);
+
 /** Embeds `image` at the page's origin, one image pixel per page unit. */
 void DrawImage(cairo_t* cr, const Image& image);
 

@@ -2,6 +2,7 @@
 
 #include "vtkComicPass.h"
 #include "vtkImageData.h"
+#include "vtkLineArtPass.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPixelArtPass.h"
@@ -11,6 +12,7 @@
 #include "vtkStylizeFigureCanvas.h"
 #include "vtkStylizeFigureComic.h"
 #include "vtkStylizeFigureLayerSource.h"
+#include "vtkStylizeFigureLineArt.h"
 #include "vtkStylizeFigureOverlays.h"
 #include "vtkStylizeFigurePixelArt.h"
 #include "vtkStylizeFigureSink.h"
@@ -90,6 +92,10 @@ bool DrawStyle(
   if (auto* sketch = vtkSketchPass::SafeDownCast(style))
   {
     return DrawSketch(c, frame, sketch, writer->GetSketchOutlineWidth());
+  }
+  if (auto* lines = vtkLineArtPass::SafeDownCast(style))
+  {
+    return DrawLineArt(c, lines, writer->GetPaperMode(), writer->GetMaximumPaperColors());
   }
   return DrawComic(
     c, vtkComicPass::SafeDownCast(style), writer->GetPaperMode(), writer->GetMaximumPaperColors());
@@ -174,12 +180,13 @@ int vtkStylizeFigureWriter::Write()
   if (!style)
   {
     return fail("no VTK Stylize style to draw: the window's renderers render without a comic, "
-                "pixel-art or sketch pass");
+                "pixel-art, sketch or line-art pass");
   }
   auto* comic = vtkComicPass::SafeDownCast(style);
   auto* pixelArt = vtkPixelArtPass::SafeDownCast(style);
   auto* sketch = vtkSketchPass::SafeDownCast(style);
-  if (!comic && !pixelArt && !sketch)
+  auto* lineArt = vtkLineArtPass::SafeDownCast(style);
+  if (!comic && !pixelArt && !sketch && !lineArt)
   {
     return fail(std::string("cannot draw the style ") + style->GetClassName() + " as a figure");
   }
@@ -215,8 +222,9 @@ int vtkStylizeFigureWriter::Write()
   // the frame as the PNG shows it (without the 2D actors)
   Image frame;
   const int frameLayer = comic ? static_cast<int>(vtkComicPass::COMIC)
-                               : (pixelArt ? static_cast<int>(vtkPixelArtPass::PIXEL_ART)
-                                           : static_cast<int>(vtkSketchPass::SKETCH));
+    : pixelArt                 ? static_cast<int>(vtkPixelArtPass::PIXEL_ART)
+    : sketch                   ? static_cast<int>(vtkSketchPass::SKETCH)
+                               : static_cast<int>(vtkLineArtPass::LINE_ART);
   if (!c.Capture(frameLayer, nullptr, frame))
   {
     return fail("rendering the figure's layers failed");

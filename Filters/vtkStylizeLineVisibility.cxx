@@ -44,17 +44,26 @@ namespace
 class Tester
 {
 public:
-  Tester(vtkCamera* camera, vtkMatrix4x4* model, const int size[2])
+  /**
+   * `size`: the depth image's pixels; `full`, `offset`: the whole image's size and the depth
+   * image's lower-left corner in it (a tile of a larger image; `size` and 0 otherwise).
+   */
+  Tester(vtkCamera* camera, vtkMatrix4x4* model, const int size[2], const double full[2],
+    const double offset[2])
     : Width(size[0])
     , Height(size[1])
+    , FullWidth(full[0])
+    , FullHeight(full[1])
+    , OffsetX(offset[0])
+    , OffsetY(offset[1])
   {
     vtkNew<vtkMatrix4x4> toWorld;
     if (model)
     {
       toWorld->DeepCopy(model);
     }
-    vtkMatrix4x4* projection = camera->GetCompositeProjectionTransformMatrix(
-      static_cast<double>(size[0]) / size[1], -1.0, 1.0);
+    vtkMatrix4x4* projection =
+      camera->GetCompositeProjectionTransformMatrix(full[0] / full[1], -1.0, 1.0);
     vtkMatrix4x4::Multiply4x4(projection, toWorld, this->ToClip);
     this->ToWorld->DeepCopy(toWorld);
     this->Parallel = camera->GetParallelProjection() != 0;
@@ -75,8 +84,8 @@ public:
     {
       return false;
     }
-    win[0] = (c[0] / c[3] + 1.0) * 0.5 * this->Width;
-    win[1] = (c[1] / c[3] + 1.0) * 0.5 * this->Height;
+    win[0] = (c[0] / c[3] + 1.0) * 0.5 * this->FullWidth - this->OffsetX;
+    win[1] = (c[1] / c[3] + 1.0) * 0.5 * this->FullHeight - this->OffsetY;
     win[2] = (c[2] / c[3] + 1.0) * 0.5;
     return std::isfinite(win[0] + win[1] + win[2]);
   }
@@ -95,8 +104,8 @@ public:
   /** The size of a pixel at eye depth z. */
   double PixelSize(double z) const
   {
-    return this->Parallel ? 2.0 * this->ParallelScale / this->Height
-                          : 2.0 * z * this->TanHalf / this->Height;
+    return this->Parallel ? 2.0 * this->ParallelScale / this->FullHeight
+                          : 2.0 * z * this->TanHalf / this->FullHeight;
   }
 
   /** Whether window position win lies in the viewport and between the clipping planes. */
@@ -119,6 +128,7 @@ public:
 
   vtkNew<vtkMatrix4x4> ToClip, ToWorld;
   int Width, Height;
+  double FullWidth, FullHeight, OffsetX, OffsetY;
   bool Parallel = false;
   double Near = 0.1, Far = 1.0, TanHalf = 1.0, ParallelScale = 1.0;
   double Eye[3], Direction[3];
@@ -128,9 +138,11 @@ public:
 class DepthTest
 {
 public:
-  DepthTest(const Tester& view, double tolerance)
+  DepthTest(const Tester& view, double tolerance, double worldTolerance, bool viewDepth)
     : View(view)
     , Tolerance(tolerance)
+    , WorldTolerance(worldTolerance)
+    , ViewDepth(viewDepth)
   {
   }
 
@@ -165,20 +177,26 @@ public:
     {
       for (int i = i0; i <= i1; ++i)
       {
-        farthest = std::max(farthest, static_cast<double>(this->Depth[j * w + i]));
+        const double d = this->Depth[static_cast<size_t>(j) * w + i];
+        // background: window depth 1, view depth 0 (or not finite)
+        if (this->ViewDepth ? !(d > 0.0 && d < VTK_DOUBLE_MAX) : !(d < 1.0))
+        {
+          return true; // background next to the sample
+        }
+        farthest = std::max(farthest, d);
       }
     }
-    if (farthest >= 1.0)
-    {
-      return true; // background next to the sample
-    }
     const double z = this->View.EyeDepth(win[2]);
-    return this->View.EyeDepth(farthest) >= z - this->Tolerance * this->View.PixelSize(z);
+    const double occluder = this->ViewDepth ? farthest : this->View.EyeDepth(farthest);
+    return occluder >=
+      z - std::max(this->WorldTolerance, this->Tolerance * this->View.PixelSize(z));
   }
 
 private:
   const Tester& View;
   double Tolerance;
+  double WorldTolerance;
+  bool ViewDepth;
   const float* Depth = nullptr;
 };
 
@@ -436,6 +454,35 @@ void vtkStylizeLineVisibility::SetViewportSize(int width, int height)
 }
 
 //------------------------------------------------------------------------------
+void vtkStylizeLineVisibility::SetImageSize(double width, double height)
+{
+  auto clamp = [](double v) { return std::isfinite(v) ? std::max(0.0, std::min(1.0e7, v)) : 0.0; };
+  width = clamp(width);
+  height = clamp(height);
+  if (width != this->ImageSize[0] || height != this->ImageSize[1])
+  {
+    this->ImageSize[0] = width;
+    this->ImageSize[1] = height;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeLineVisibility::SetImageOffset(double x, double y)
+{
+  auto clamp = [](double v)
+  { return std::isfinite(v) ? std::max(-1.0e7, std::min(1.0e7, v)) : 0.0; };
+  x = clamp(x);
+  y = clamp(y);
+  if (x != this->ImageOffset[0] || y != this->ImageOffset[1])
+  {
+    this->ImageOffset[0] = x;
+    this->ImageOffset[1] = y;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkStylizeLineVisibility::AddOccluder(vtkPolyData* surface, vtkMatrix4x4* matrix)
 {
   if (surface)
@@ -478,8 +525,13 @@ int vtkStylizeLineVisibility::RequestData(
     vtkErrorMacro("a camera is required");
     return 0;
   }
-  const Tester view(this->Camera, this->ModelMatrix, this->ViewportSize);
-  DepthTest depth(view, this->DepthTolerance);
+  const bool tiled = this->ImageSize[0] > 0 && this->ImageSize[1] > 0;
+  const double full[2] = { tiled ? this->ImageSize[0] : this->ViewportSize[0],
+    tiled ? this->ImageSize[1] : this->ViewportSize[1] };
+  const double offset[2] = { tiled ? this->ImageOffset[0] : 0.0,
+    tiled ? this->ImageOffset[1] : 0.0 };
+  const Tester view(this->Camera, this->ModelMatrix, this->ViewportSize, full, offset);
+  DepthTest depth(view, this->DepthTolerance, this->WorldTolerance, this->DepthKind == VIEW_DEPTH);
   RayCast rays(view);
   if (this->Method == DEPTH_BUFFER && !depth.SetImage(this->DepthImage))
   {
@@ -521,8 +573,12 @@ void vtkStylizeLineVisibility::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Method: " << this->Method << "\n";
   os << indent << "ViewportSize: " << this->ViewportSize[0] << " " << this->ViewportSize[1] << "\n";
   os << indent << "DepthImage: " << this->DepthImage << "\n";
+  os << indent << "DepthKind: " << (this->DepthKind == VIEW_DEPTH ? "view" : "window") << "\n";
+  os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";
+  os << indent << "ImageOffset: " << this->ImageOffset[0] << " " << this->ImageOffset[1] << "\n";
   os << indent << "Occluders: " << this->Internal->Occluders.size() << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "DepthTolerance: " << this->DepthTolerance << "\n";
+  os << indent << "WorldTolerance: " << this->WorldTolerance << "\n";
   os << indent << "VisibleOnly: " << this->VisibleOnly << "\n";
 }

@@ -67,8 +67,34 @@ public:
 
   ///@{
   /**
-   * The scene's depth for DEPTH_BUFFER: one float component per pixel, window depth in [0, 1]
-   * (1 where nothing was drawn), ViewportSize pixels, row 0 at the bottom.
+   * A tile of a larger image (a magnified screenshot, or a viewport with a guard band): the
+   * whole image's size in pixels, whose aspect ratio is the projection's, and the lower-left
+   * corner of the viewport (the depth image) in it, pixels. ImageSize (0, 0), the default: the
+   * viewport is the whole image. Sizes in [0, 1e7], offsets in [-1e7, 1e7].
+   */
+  void SetImageSize(double width, double height);
+  vtkGetVector2Macro(ImageSize, double);
+  void SetImageOffset(double x, double y);
+  vtkGetVector2Macro(ImageOffset, double);
+  ///@}
+
+  /** What the depth image holds. */
+  enum DepthKinds
+  {
+    WINDOW_DEPTH, ///< window depth in [0, 1], 1 where nothing was drawn
+    VIEW_DEPTH    ///< -z in view space, world units, 0 where nothing was drawn (linear depth)
+  };
+
+  ///@{
+  /** What the depth image holds: WINDOW_DEPTH (default) or VIEW_DEPTH. */
+  vtkSetClampMacro(DepthKind, int, WINDOW_DEPTH, VIEW_DEPTH);
+  vtkGetMacro(DepthKind, int);
+  ///@}
+
+  ///@{
+  /**
+   * The scene's depth for DEPTH_BUFFER: one float component per pixel, DepthKind values,
+   * ViewportSize pixels, row 0 at the bottom.
    */
   virtual void SetDepthImage(vtkImageData* depth);
   vtkGetObjectMacro(DepthImage, vtkImageData);
@@ -97,6 +123,18 @@ public:
   ///@}
 
   ///@{
+  /**
+   * DEPTH_BUFFER: the least depth tolerance, in world units, whatever the pixels' size. A
+   * contour interpolated inside a coarse mesh's triangles lies behind the polygons that draw
+   * its silhouette by up to about an edge: the mean edge length keeps such contours whole
+   * (vtkLineArtPass sets it so, as RAY_CAST starts its rays an edge away). Range [0, 1e30],
+   * default 0.
+   */
+  vtkSetClampMacro(WorldTolerance, double, 0.0, 1.0e30);
+  vtkGetMacro(WorldTolerance, double);
+  ///@}
+
+  ///@{
   /** Keep only the visible runs. Default off. */
   vtkSetMacro(VisibleOnly, bool);
   vtkGetMacro(VisibleOnly, bool);
@@ -115,8 +153,12 @@ protected:
   int Method = DEPTH_BUFFER;
   int ViewportSize[2] = { 300, 300 };
   vtkImageData* DepthImage = nullptr;
+  int DepthKind = WINDOW_DEPTH;
+  double ImageSize[2] = { 0.0, 0.0 };
+  double ImageOffset[2] = { 0.0, 0.0 };
   double SampleSpacing = 0.25;
   double DepthTolerance = 2.0;
+  double WorldTolerance = 0.0;
   bool VisibleOnly = false;
 
 private:

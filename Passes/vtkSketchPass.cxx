@@ -191,26 +191,10 @@ void vtkSketchPass::SetBrightThresholds(double t1, double t2)
   }
 }
 
-namespace
-{
-bool SetColor(double target[3], double r, double g, double b)
-{
-  const double in[3] = { r, g, b };
-  bool changed = false;
-  for (int i = 0; i < 3; ++i)
-  {
-    const double v = std::isfinite(in[i]) ? std::min(1.0, std::max(0.0, in[i])) : target[i];
-    changed = changed || v != target[i];
-    target[i] = v;
-  }
-  return changed;
-}
-}
-
 //------------------------------------------------------------------------------
 void vtkSketchPass::SetPencilColor(double r, double g, double b)
 {
-  if (SetColor(this->PencilColor, r, g, b))
+  if (SetClampedColor(this->PencilColor, r, g, b))
   {
     this->Modified();
   }
@@ -219,7 +203,7 @@ void vtkSketchPass::SetPencilColor(double r, double g, double b)
 //------------------------------------------------------------------------------
 void vtkSketchPass::SetPaperColor(double r, double g, double b)
 {
-  if (SetColor(this->PaperColor, r, g, b))
+  if (SetClampedColor(this->PaperColor, r, g, b))
   {
     this->Modified();
   }

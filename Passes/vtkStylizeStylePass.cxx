@@ -238,6 +238,26 @@ void vtkStylizeStylePass::RestorePatternAnchors()
 }
 
 //------------------------------------------------------------------------------
+int vtkStylizeStylePass::GetTranslucentLayer()
+{
+  return this->Internals->Layer;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStylePass::SetClampedColor(double target[3], double r, double g, double b)
+{
+  const double in[3] = { r, g, b };
+  bool changed = false;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double v = std::isfinite(in[i]) ? std::min(1.0, std::max(0.0, in[i])) : target[i];
+    changed = changed || v != target[i];
+    target[i] = v;
+  }
+  return changed;
+}
+
+//------------------------------------------------------------------------------
 double vtkStylizeStylePass::GetPixelsPerPoint(int height, int tiles)
 {
   const double reference = this->GetPointReferenceHeight();

@@ -352,12 +352,21 @@ protected:
    */
   bool RenderScene(const vtkRenderState* s, const SceneRequest& request);
 
+  /** The translucent layer RenderStyle() is stylizing: 0 for the opaque scene, 1 the nearest. */
+  int GetTranslucentLayer();
+
   /** Ends a frame: draws what follows the stylized image (translucent geometry, volumes, the
    * overlay), then checks GL errors. */
   void EndFrame(const vtkRenderState* s);
 
   /** The stages' #defines for this frame; the programs are rebuilt only when they change. */
   void SetShaderDefines(const std::string& defines);
+
+  /**
+   * Sets `target` to (r, g, b), each clamped to [0, 1] (a value that is not finite keeps the
+   * old one); true when it changed. For the styles' colour setters.
+   */
+  static bool SetClampedColor(double target[3], double r, double g, double b);
 
   /** Appends "#define name" to `defines` when `on`. */
   static void AddDefine(std::string& defines, bool on, const std::string& name);

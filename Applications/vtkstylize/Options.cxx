@@ -4,6 +4,7 @@
 #include "vtkstylizeCommon.h"
 
 #include "vtkComicPass.h"
+#include "vtkLineArtPass.h"
 #include "vtkNew.h"
 #include "vtkPixelArtPass.h"
 #include "vtkSketchPass.h"
@@ -292,6 +293,10 @@ PassGroup GroupOf(const vtkPixelArtPass*)
 PassGroup GroupOf(const vtkSketchPass*)
 {
   return { "Sketch (--style sketch)", "sketch" };
+}
+PassGroup GroupOf(const vtkLineArtPass*)
+{
+  return { "Line art (--style lines)", "lines" };
 }
 
 /**
@@ -969,6 +974,13 @@ const std::vector<StyleSpec>& Styles()
       [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
         const Options& opt) -> vtkSmartPointer<vtkRenderPass>
       { return MakeStyle<vtkSketchPass>(lighting, opt); } },
+    { "lines",
+      "line art: contours, creases, ridges, valleys and suggestive contours found on the mesh, "
+      "hidden lines removed, in ink on paper (vtkLineArtPass)",
+      vtkStylizeLightingPass::STANDARD,
+      [](vtkStylizeLightingPass* lighting, vtkStylizeGBufferPass*,
+        const Options& opt) -> vtkSmartPointer<vtkRenderPass>
+      { return MakeStyle<vtkLineArtPass>(lighting, opt); } },
   };
   return styles;
 }
@@ -1045,7 +1057,7 @@ Options ParseCommandLine(int argc, char* argv[])
     {
       // known before anything is read or rendered
       UsageError("a vector figure (" + Quote(opt.Output) +
-        ") draws a style's layers: give --style comic, pixel or sketch, not none");
+        ") draws a style's layers: give --style comic, pixel, sketch or lines, not none");
     }
   }
   const std::vector<std::string>& positional = cl.Inputs;

@@ -22,6 +22,7 @@ class vtkComicPass;
 class vtkPixelArtPass;
 class vtkRenderPass;
 class vtkSketchPass;
+class vtkLineArtPass;
 class vtkStylizeGBufferPass;
 class vtkStylizeLightingPass;
 
@@ -48,7 +49,7 @@ struct PassSettings
   template <class Pass>
   using List = std::vector<std::function<void(Pass*)>>;
   std::tuple<List<vtkStylizeLightingPass>, List<vtkComicPass>, List<vtkPixelArtPass>,
-    List<vtkSketchPass>>
+    List<vtkSketchPass>, List<vtkLineArtPass>>
     Lists;
 
   template <class Pass>

@@ -12,6 +12,7 @@
 #include "vtkCoordinate.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkLineArtPass.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -170,8 +171,8 @@ void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations
   title->GetPositionCoordinate()->SetValue(0.02, 0.97);
   ren->AddActor2D(title);
 
-  // Black-and-white output (comic or sketch, not tinted) shows no colours: no colour legend
-  // unless --scalar-bar asks for one.
+  // Black-and-white output (comic or sketch, not tinted; line art) shows no colours: no colour
+  // legend unless --scalar-bar asks for one.
   bool blackAndWhite = false;
   if (opt.Style == "comic")
   {
@@ -184,6 +185,10 @@ void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations
     vtkNew<vtkSketchPass> sketch;
     opt.Passes.ApplyTo(sketch.Get());
     blackAndWhite = !sketch->GetTinted();
+  }
+  else if (opt.Style == "lines")
+  {
+    blackAndWhite = true;
   }
   const auto it = maps.find(info.ScalarBarArray);
   if (!info.ScalarBarArray.empty() && it != maps.end() && (!blackAndWhite || opt.ScalarBar))

@@ -4,6 +4,7 @@
 #include "vtkComicPass.h"
 #include "vtkContext2DScalarBarActor.h"
 #include "vtkImageData.h"
+#include "vtkLineArtPass.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
@@ -158,6 +159,7 @@ vtkPVStylizeView::vtkPVStylizeView()
   this->ComicPass = vtkSmartPointer<vtkComicPass>::New();
   this->PixelArtPass = vtkSmartPointer<vtkPixelArtPass>::New();
   this->SketchPass = vtkSmartPointer<vtkSketchPass>::New();
+  this->LineArtPass = vtkSmartPointer<vtkLineArtPass>::New();
   this->LightingPass = vtkSmartPointer<vtkStylizeLightingPass>::New();
   // Per rank, the lighting pass renders what ParaView's default pass renders.
   this->LightingDelegate = vtkSmartPointer<vtkPVDefaultPass>::New();
@@ -198,6 +200,12 @@ void vtkPVStylizeView::SetSketchPass(vtkSketchPass* pass)
   this->Modified();
 }
 
+void vtkPVStylizeView::SetLineArtPass(vtkLineArtPass* pass)
+{
+  this->LineArtPass = pass ? pass : vtkSmartPointer<vtkLineArtPass>::New().GetPointer();
+  this->Modified();
+}
+
 void vtkPVStylizeView::SetLightingPass(vtkStylizeLightingPass* pass)
 {
   this->LightingPass = pass ? pass : vtkSmartPointer<vtkStylizeLightingPass>::New().GetPointer();
@@ -224,6 +232,11 @@ vtkSketchPass* vtkPVStylizeView::GetSketchPass()
   return this->SketchPass;
 }
 
+vtkLineArtPass* vtkPVStylizeView::GetLineArtPass()
+{
+  return this->LineArtPass;
+}
+
 vtkStylizeLightingPass* vtkPVStylizeView::GetLightingPass()
 {
   return this->LightingPass;
@@ -240,6 +253,8 @@ vtkStylizeStylePass* vtkPVStylizeView::GetActiveStylePass()
       return this->PixelArtPass;
     case SKETCH:
       return this->SketchPass;
+    case LINE_ART:
+      return this->LineArtPass;
     default:
       return nullptr;
   }
@@ -299,7 +314,8 @@ void vtkPVStylizeView::ReleasePassResources(vtkStylizeStylePass* keep)
   }
   for (vtkStylizeStylePass* pass : { static_cast<vtkStylizeStylePass*>(this->ComicPass),
          static_cast<vtkStylizeStylePass*>(this->PixelArtPass),
-         static_cast<vtkStylizeStylePass*>(this->SketchPass) })
+         static_cast<vtkStylizeStylePass*>(this->SketchPass),
+         static_cast<vtkStylizeStylePass*>(this->LineArtPass) })
   {
     if (pass && pass != keep)
     {
@@ -381,7 +397,8 @@ void vtkPVStylizeView::ConfigurePasses()
   }
   for (vtkStylizeStylePass* pass : { static_cast<vtkStylizeStylePass*>(this->ComicPass),
          static_cast<vtkStylizeStylePass*>(this->PixelArtPass),
-         static_cast<vtkStylizeStylePass*>(this->SketchPass) })
+         static_cast<vtkStylizeStylePass*>(this->SketchPass),
+         static_cast<vtkStylizeStylePass*>(this->LineArtPass) })
   {
     pass->SetWindowScale(this->WindowScale[0], this->WindowScale[1]);
   }
@@ -419,7 +436,7 @@ void vtkPVStylizeView::Render(bool interactive, bool skip_rendering)
 void vtkPVStylizeView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  static const char* const names[] = { "None", "Comic", "Pixel art", "Sketch" };
+  static const char* const names[] = { "None", "Comic", "Pixel art", "Sketch", "Line art" };
   os << indent << "Style: " << names[this->Style] << "\n";
   os << indent << "LightingModel: " << this->LightingModel << "\n";
   os << indent << "RequestedFXAA: " << this->RequestedFXAA << "\n";

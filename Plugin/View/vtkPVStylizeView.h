@@ -45,6 +45,7 @@ class vtkComicPass;
 class vtkImageData;
 class vtkPixelArtPass;
 class vtkSketchPass;
+class vtkLineArtPass;
 class vtkStylizeGBufferPass;
 class vtkStylizeLightingPass;
 class vtkStylizeStylePass;
@@ -63,12 +64,16 @@ public:
     NONE = 0,
     COMIC = 1,
     PIXEL_ART = 2,
-    SKETCH = 3
+    SKETCH = 3,
+    LINE_ART = 4
   };
 
   ///@{
-  /** The style drawn: NONE (ParaView's rendering), COMIC, PIXEL_ART or SKETCH. Default NONE. */
-  vtkSetClampMacro(Style, int, NONE, SKETCH);
+  /**
+   * The style drawn: NONE (ParaView's rendering), COMIC, PIXEL_ART, SKETCH or LINE_ART. Default
+   * NONE.
+   */
+  vtkSetClampMacro(Style, int, NONE, LINE_ART);
   vtkGetMacro(Style, int);
   ///@}
 
@@ -99,10 +104,12 @@ public:
   void SetComicPass(vtkComicPass* pass);
   void SetPixelArtPass(vtkPixelArtPass* pass);
   void SetSketchPass(vtkSketchPass* pass);
+  void SetLineArtPass(vtkLineArtPass* pass);
   void SetLightingPass(vtkStylizeLightingPass* pass);
   vtkComicPass* GetComicPass();
   vtkPixelArtPass* GetPixelArtPass();
   vtkSketchPass* GetSketchPass();
+  vtkLineArtPass* GetLineArtPass();
   vtkStylizeLightingPass* GetLightingPass();
   ///@}
 
@@ -205,6 +212,7 @@ protected:
   vtkSmartPointer<vtkComicPass> ComicPass;
   vtkSmartPointer<vtkPixelArtPass> PixelArtPass;
   vtkSmartPointer<vtkSketchPass> SketchPass;
+  vtkSmartPointer<vtkLineArtPass> LineArtPass;
   vtkSmartPointer<vtkStylizeLightingPass> LightingPass;
   vtkSmartPointer<vtkRenderPass> LightingDelegate;
   vtkSmartPointer<vtkStylizeGBufferPass> RankGBuffer;

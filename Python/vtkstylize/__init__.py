@@ -10,10 +10,12 @@ Render passes (module ``vtkstylize.vtkStylizePasses``):
   a palette (levels per channel, grays, 16 colours, a user list or the data's colormap).
 - ``vtkSketchPass``: pencil sketch: line integral convolution of surface noise along the
   principal curvature directions, pencil tone and cross-hatching.
-- ``vtkStylizeStylePass``: the base of the three styles, an image-processing pass (it renders
+- ``vtkLineArtPass``: line art: contours, creases, ridges, valleys and suggestive contours found
+  on the meshes, hidden lines removed, drawn in ink on paper over an optional flat tone.
+- ``vtkStylizeStylePass``: the base of the four styles, an image-processing pass (it renders
   the geometry itself, or stylizes the image of a delegate pass when one is set).
 - ``vtkStylizeLightingPass``: VTK's lighting replaced by a selectable model (Standard, Comic,
-  PixelArt); the lighting stage of the three styles (``GetLightingPass()``).
+  PixelArt); the lighting stage of the four styles (``GetLightingPass()``).
 - ``vtkStylizeGBufferPass``: the shared G-buffer (lit colour, depth, normals, positions) the
   screen-space styles read.
 - ``vtkStylizeSceneLights``: ``AddLights(renderer, count, center, distance, ...)``, the
@@ -46,11 +48,11 @@ Figures (module ``vtkstylize.vtkStylizeFigures``):
 
 - ``vtkStylizeFigureWriter``: a stylized render window as a vector figure (SVG, PDF): comic
   outlines traced, dots and hatch lines exact, pixel art as rectangles, sketch pencil as an
-  image under vector outlines, text and scalar bars as vector text and shapes.
+  image under vector outlines, line art as stroked paths from the geometry, text and scalar bars as vector text and shapes.
 
 And a small pure-Python layer:
 
-- ``STYLES``: the style names, ``("none", "comic", "pixel", "sketch")``.
+- ``STYLES``: the style names, ``("none", "comic", "pixel", "sketch", "lines")``.
 - ``create_pass(style, **settings)``: a new pass for a style, its settings given by VTK setter
   name (``EdgeWidth=2.0`` calls ``SetEdgeWidth(2.0)``); ``None`` for ``"none"``.
 - ``apply_style(renderer, style, **settings)``: sets that pass on a renderer and returns it;
@@ -98,14 +100,16 @@ from .vtkStylizeFigures import *  # noqa: F401,F403
 from .vtkStylizePasses import vtkComicPass as _vtkComicPass
 from .vtkStylizePasses import vtkPixelArtPass as _vtkPixelArtPass
 from .vtkStylizePasses import vtkSketchPass as _vtkSketchPass
+from .vtkStylizePasses import vtkLineArtPass as _vtkLineArtPass
 
 #: The style names accepted by create_pass() and apply_style(), "none" first.
-STYLES = ("none", "comic", "pixel", "sketch")
+STYLES = ("none", "comic", "pixel", "sketch", "lines")
 
 _STYLE_CLASSES = {
     "comic": _vtkComicPass,
     "pixel": _vtkPixelArtPass,
     "sketch": _vtkSketchPass,
+    "lines": _vtkLineArtPass,
 }
 
 
@@ -184,7 +188,8 @@ def configure(obj, **settings):
 def create_pass(style, **settings):
     """A new render pass for style (one of STYLES, any case), configured with settings by
     setter name: create_pass("comic", EdgeWidth=2.0) calls SetEdgeWidth(2.0). Returns a
-    vtkComicPass, vtkPixelArtPass or vtkSketchPass; None for "none" (which takes no settings).
+    vtkComicPass, vtkPixelArtPass, vtkSketchPass or vtkLineArtPass; None for "none" (which
+    takes no settings).
     ValueError for an unknown style or setting."""
     cls = _style_class(style)
     if cls is None:

@@ -2,7 +2,7 @@
 
 - the package documents and re-exports every wrapped class, and the build tree's copy of
   __init__.py is the source file (argv[1], when given);
-- STYLES lists the four styles; create_pass() builds each style's pass and applies settings by
+- STYLES lists the five style names; create_pass() builds each style's pass and applies settings by
   setter name: set values read back, out-of-range values come back clamped, strings select
   Set<Name>To<Value> methods and enum constants, tuples are unpacked, settings apply in order;
 - unknown styles and settings raise ValueError naming the culprit (with a suggestion), a value
@@ -51,7 +51,7 @@ for module in (vtkstylize.vtkStylizePasses, vtkstylize.vtkStylizeIO,
 for name in ("STYLES", "create_pass", "apply_style", "configure"):
     check("``%s" % name in doc, "%s is not described in the package's docstring" % name)
     check(getattr(vtkstylize, name, None) is not None, "vtkstylize.%s is missing" % name)
-from vtkstylize import vtkComicPass, vtkPixelArtPass, vtkSketchPass  # noqa: E402
+from vtkstylize import vtkComicPass, vtkLineArtPass, vtkPixelArtPass, vtkSketchPass  # noqa: E402
 if len(sys.argv) > 1:
     with open(sys.argv[1], encoding="utf-8") as source, \
             open(vtkstylize.__file__, encoding="utf-8") as built:
@@ -59,9 +59,10 @@ if len(sys.argv) > 1:
               "%s is not a copy of %s: re-run cmake" % (vtkstylize.__file__, sys.argv[1]))
 
 # STYLES and create_pass for each style.
-check(vtkstylize.STYLES == ("none", "comic", "pixel", "sketch"), "STYLES: %r" % (vtkstylize.STYLES,))
+check(vtkstylize.STYLES == ("none", "comic", "pixel", "sketch", "lines"), "STYLES: %r" % (vtkstylize.STYLES,))
 check(vtkstylize.create_pass("none") is None, "create_pass('none') is not None")
-classes = {"comic": vtkComicPass, "pixel": vtkPixelArtPass, "sketch": vtkSketchPass}
+classes = {"comic": vtkComicPass, "pixel": vtkPixelArtPass, "sketch": vtkSketchPass,
+           "lines": vtkLineArtPass}
 for style, cls in classes.items():
     p = vtkstylize.create_pass(style)
     check(isinstance(p, cls), "create_pass(%r) gave %r" % (style, p))
@@ -153,7 +154,7 @@ def grab():
 
 metrics = vtkStylizeImageMetrics
 plain = grab()
-for style in ("comic", "pixel", "sketch", "comic"):
+for style in ("comic", "pixel", "sketch", "lines", "comic"):
     applied = vtkstylize.apply_style(renderer, style, ReferenceHeight=120) \
         if style != "pixel" else vtkstylize.apply_style(renderer, style, PixelSize=8)
     check(isinstance(applied, classes[style]) and renderer.GetPass() is applied,

@@ -13,7 +13,7 @@ DIFF_LINES = 200  # --check shows at most this many lines of each stale file's d
 
 # The classes documented, in order.
 CLASSES = ["vtkStylizeLightingPass", "vtkStylizeGBufferPass", "vtkComicPass", "vtkPixelArtPass",
-           "vtkSketchPass", "vtkStylizePrincipalCurvatures", "vtkStylizeFeatureLines",
+           "vtkSketchPass", "vtkLineArtPass", "vtkStylizePrincipalCurvatures", "vtkStylizeFeatureLines",
            "vtkStylizeLineVisibility", "vtkStylizeReader"]
 # The classes of the Filters module (the others are passes).
 FILTER_CLASSES = {"vtkStylizePrincipalCurvatures", "vtkStylizeFeatureLines",
@@ -61,9 +61,10 @@ XML_PROXIES = [
     ("ComicPass", "vtkComicPass", "Comic", "Comic", "1"),
     ("PixelArtPass", "vtkPixelArtPass", "Pixel art", "PixelArt", "2"),
     ("SketchPass", "vtkSketchPass", "Sketch", "Sketch", "3"),
+    ("LineArtPass", "vtkLineArtPass", "Line art", "LineArt", "4"),
     ("LightingPass", "vtkStylizeLightingPass", "Lighting", "Lighting", None),
 ]
-XML_ALL_STYLES = "1 2 3"
+XML_ALL_STYLES = "1 2 3 4"
 # Parameters the view sets itself, so not exposed: (class, parameter) -> why.
 XML_SKIP = {("vtkStylizeLightingPass", "Model"): "set by the view",
             ("vtkSketchPass", "SceneBounds"): "set by the view (the data's bounds on all ranks)",
@@ -175,13 +176,26 @@ CLI_SKETCH = [
     ("CrossHatching", "--no-cross", None), ("Tinted", "--tinted", None),
     ("ReferenceHeight", "--reference-height", "PX"),
 ]
+CLI_LINES = [
+    ("ContourWidth", "--contour-width", "PT"), ("CreaseWidth", "--crease-width", "PT"),
+    ("RidgeWidth", "--ridge-width", "PT"), ("ValleyWidth", "--valley-width", "PT"),
+    ("SuggestiveWidth", "--suggestive-width", "PT"), ("DepthTaper", "--depth-taper", "F"),
+    ("StrengthTaper", "--strength-taper", "F"), ("CreaseAngle", "--crease-angle", "DEG"),
+    ("RidgeThreshold", "--ridge-threshold", "T"),
+    ("SuggestiveThreshold", "--suggestive-threshold", "T"),
+    ("Tone", "--tone", "none|shades", {"none": "NONE", "shades": "SHADES"}),
+    ("ToneLevels", "--tone-levels", "N"), ("ToneDarkest", "--tone-darkest", "F"),
+    ("InkColor", "--ink", "COLOR"), ("PaperColor", "--paper", "COLOR"),
+    ("ReferenceHeight", "--reference-height", "PX"),
+    ("Layer", "--lines-layer", "lines|paper", {"lines": "LINE_ART", "paper": "PAPER"}),
+]
 CLI_LIGHTING = [
     ("SubjectFactor", "--subject", "P1"), ("GrayLevelsNear", "--levels-near", "N"),
     ("GrayLevelsFar", "--levels-far", "N"), ("SpecularGain", "--specular-gain", "G"),
     ("Scattering", "--scattering", "S"), ("SpecularOcclusion", "--occlusion", "M"),
 ]
 CLI_OPTIONS = [("vtkComicPass", "comic", CLI_COMIC), ("vtkPixelArtPass", "pixel", CLI_PIXEL),
-               ("vtkSketchPass", "sketch", CLI_SKETCH),
+               ("vtkSketchPass", "sketch", CLI_SKETCH), ("vtkLineArtPass", "lines", CLI_LINES),
                ("vtkStylizeLightingPass", "lighting", CLI_LIGHTING)]
 # Settings the command line offers by hand (vtkstylize's Options.cxx), and why.
 CLI_BY_HAND = [

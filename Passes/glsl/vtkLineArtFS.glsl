@@ -1,0 +1,43 @@
+// VTK Stylize line art (vtkLineArtPass): feature-line strokes in ink over the paper.
+// The strokes' ink coverage is computed on the CPU (vtkStylizeFeatureStrokes) and arrives as a
+// texture; this stage lays it over the paper or the flat tone. The pass prepends:
+//   LINE_ART_STAGE_FINAL  the only stage: paper, tone and ink into the output
+//   LINE_ART_SHADES       the lit tone in lineArtToneLevels flat shades (Tone SHADES)
+//   LINE_ART_LAYER        0 the line art, 1 the paper alone (vector figures)
+
+#ifdef LINE_ART_STAGE_FINAL
+uniform sampler2D lineArtInk;     // ink coverage of the strokes in [0, 1], one per pixel
+uniform vec3 lineArtInkColor;
+uniform vec3 lineArtPaperColor;
+uniform int lineArtToneLevels;    // shades, the paper included (>= 2)
+uniform float lineArtToneDarkest; // the darkest shade's share of the paper's brightness
+
+void lineArtMain()
+{
+  ivec2 size = textureSize(stylizeColorTexture, 0);
+  ivec2 p = clamp(ivec2(texCoord * vec2(size)), ivec2(0), size - 1);
+  vec4 image = texelFetch(stylizeColorTexture, p, 0);
+  float depth = texelFetch(stylizeDepthTexture, p, 0).r;
+  bool background = !(depth < 1.0);
+  float ink = clamp(texelFetch(lineArtInk, p, 0).r, 0.0, 1.0);
+  vec3 paper = lineArtPaperColor;
+#ifdef LINE_ART_SHADES
+  // Flat shades of the lit luminance: level 0 (darkest) .. levels - 1 (the paper).
+  vec3 lit = stylizeSaturateFinite(image.rgb);
+  float tone = dot(lit, vec3(0.2126, 0.7152, 0.0722));
+  float top = float(lineArtToneLevels - 1);
+  float level = min(floor(tone * float(lineArtToneLevels)), top);
+  paper *= mix(lineArtToneDarkest, 1.0, level / top);
+#endif
+  vec3 under = background ? stylizeSaturateFinite(image.rgb) : paper;
+#if LINE_ART_LAYER == 1
+  ink = 0.0;
+#endif
+  if (stylizeDiscardBackground == 1 && background && ink <= 0.0)
+  {
+    discard;
+  }
+  gl_FragData[0] = stylizeOutput(background, mix(under, lineArtInkColor, ink), image.a, ink);
+  gl_FragDepth = stylizeWindowDepth(depth);
+}
+#endif

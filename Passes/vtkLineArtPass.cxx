@@ -1,0 +1,237 @@
+#include "vtkLineArtPass.h"
+
+#include "vtkFloatArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtkStylizeFeatureLines.h"
+#include "vtkStylizeFeatureStrokes.h"
+#include "vtkStylizeGBufferPass.h"
+#include "vtkStylizeLightingPass.h"
+#include "vtkStylizeShaderUtilities.h"
+#include "vtkWeakPointer.h"
+
+#include "vtkLineArtFS.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace
+{
+enum Stages
+{
+  FINAL_STAGE = 0 // paper, tone and ink into the output
+};
+constexpr vtkStylizeStage LineArtStages[] = {
+  { FINAL_STAGE, "LINE_ART_STAGE_FINAL", "LINE_ART_STAGE_FINAL" },
+};
+static_assert(vtkStylizeStagesInOrder(LineArtStages), "the line art's stages out of order");
+}
+
+struct vtkLineArtPass::Internals
+{
+  vtkNew<vtkStylizeFeatureStrokes> Strokes;
+  /** The ray-cast strokes of ComputeFigureStrokes(), kept apart from the frame's. */
+  vtkNew<vtkStylizeFeatureStrokes> FigureStrokes;
+  /** The translucent layers': no lines (their ink stays empty). */
+  vtkNew<vtkStylizeFeatureStrokes> LayerStrokes;
+  vtkNew<vtkFloatArray> Depth;
+  vtkWeakPointer<vtkRenderer> LastRenderer;
+};
+
+vtkStandardNewMacro(vtkLineArtPass);
+
+//------------------------------------------------------------------------------
+vtkLineArtPass::vtkLineArtPass()
+  : vtkStylizeStylePass(vtkStylizeLightingPass::STANDARD)
+  , Internal(new Internals)
+{
+  this->SetStages(vtkLineArtFS, "  lineArtMain();\n",
+    std::vector<vtkStylizeStage>(std::begin(LineArtStages), std::end(LineArtStages)));
+}
+
+//------------------------------------------------------------------------------
+vtkLineArtPass::~vtkLineArtPass()
+{
+  delete this->Internal;
+}
+
+//------------------------------------------------------------------------------
+void vtkLineArtPass::SetInkColor(double r, double g, double b)
+{
+  if (SetClampedColor(this->InkColor, r, g, b))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLineArtPass::SetPaperColor(double r, double g, double b)
+{
+  if (SetClampedColor(this->PaperColor, r, g, b))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkLineArtPass::SwapLayer(int layer)
+{
+  const int previous = this->Layer;
+  this->SetLayer(layer);
+  return previous;
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkLineArtPass::GetStrokes()
+{
+  return this->Internal->Strokes->GetStrokes();
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+/** The strokes' settings from the pass's. */
+vtkStylizeFeatureStrokes::Settings StrokeSettings(vtkLineArtPass* pass)
+{
+  vtkStylizeFeatureStrokes::Settings s;
+  s.Widths[vtkStylizeFeatureLines::CONTOUR] = pass->GetContourWidth();
+  s.Widths[vtkStylizeFeatureLines::BOUNDARY] = pass->GetContourWidth();
+  s.Widths[vtkStylizeFeatureLines::CREASE] = pass->GetCreaseWidth();
+  s.Widths[vtkStylizeFeatureLines::RIDGE] = pass->GetRidgeWidth();
+  s.Widths[vtkStylizeFeatureLines::VALLEY] = pass->GetValleyWidth();
+  s.Widths[vtkStylizeFeatureLines::SUGGESTIVE_CONTOUR] = pass->GetSuggestiveWidth();
+  s.DepthTaper = pass->GetDepthTaper();
+  s.StrengthTaper = pass->GetStrengthTaper();
+  s.CreaseAngle = pass->GetCreaseAngle();
+  s.RidgeThreshold = pass->GetRidgeThreshold();
+  s.SuggestiveThreshold = pass->GetSuggestiveThreshold();
+  return s;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkLineArtPass::ComputeFigureStrokes(int width, int height, int tiles)
+{
+  vtkStylizeFeatureStrokes::View view;
+  view.Renderer = this->Internal->LastRenderer;
+  view.Size[0] = std::max(1, width);
+  view.Size[1] = std::max(1, height);
+  view.FullSize[0] = view.Size[0];
+  view.FullSize[1] = view.Size[1];
+  view.PointSize = this->GetPixelsPerPoint(view.Size[1], tiles);
+  if (view.Renderer)
+  {
+    this->Internal->FigureStrokes->Build(view, StrokeSettings(this), nullptr);
+  }
+  return this->Internal->FigureStrokes->GetStrokes();
+}
+
+//------------------------------------------------------------------------------
+double vtkLineArtPass::GetReach(const Frame& frame)
+{
+  return vtkStylizeFeatureStrokes::Reach(StrokeSettings(this), this->PointSize(frame)) + 1.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLineArtPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
+{
+  this->GetLightingPass()->SetMonochrome(true);
+  SceneRequest scene;
+  scene.Channels = vtkStylizeGBufferPass::LINEAR_DEPTH;
+  if (!this->RenderScene(s, scene))
+  {
+    return false;
+  }
+  std::string defines;
+  AddDefine(defines, this->Tone == SHADES, "LINE_ART_SHADES");
+  defines += "#define LINE_ART_LAYER " + std::to_string(this->Layer) + "\n";
+  this->SetShaderDefines(defines);
+
+  // The lines against the scene's depth (every actor's), as strokes, their ink as a texture.
+  Internals& in = *this->Internal;
+  in.LastRenderer = frame.Renderer;
+  vtkStylizeFeatureStrokes::View view;
+  view.Renderer = frame.Renderer;
+  view.Size[0] = frame.Size[0];
+  view.Size[1] = frame.Size[1];
+  std::copy(frame.FullSize, frame.FullSize + 2, view.FullSize);
+  std::copy(frame.FullOffset, frame.FullOffset + 2, view.FullOffset);
+  view.PointSize = this->PointSize(frame);
+  view.Interactive = frame.Interactive;
+  vtkFloatArray* depth = nullptr;
+  if (this->GetGBufferPass()->DownloadChannel(vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER, in.Depth))
+  {
+    depth = in.Depth;
+  }
+  // Lines are found on opaque surfaces; a translucent layer is its paper (or tone) alone, laid
+  // over the line art with the surface's opacity.
+  const bool layer = this->GetTranslucentLayer() > 0;
+  vtkStylizeFeatureStrokes::Settings settings = StrokeSettings(this);
+  if (layer)
+  {
+    std::fill(settings.Widths, settings.Widths + vtkStylizeFeatureStrokes::Kinds, 0.0);
+  }
+  vtkStylizeFeatureStrokes* strokes = layer ? in.LayerStrokes : in.Strokes;
+  strokes->Build(view, settings, depth);
+  vtkTextureObject* ink = strokes->Upload(frame.Window);
+
+  const int margin =
+    static_cast<int>(std::ceil(vtkStylizeFeatureStrokes::Reach(settings, view.PointSize)));
+  this->RenderStageToOutput(
+    frame, FINAL_STAGE, true,
+    [&](vtkStylizeUniforms& u)
+    {
+      this->BindSceneTextures(u);
+      u.Texture("lineArtInk", ink)
+        .Float3("lineArtInkColor", this->InkColor[0], this->InkColor[1], this->InkColor[2])
+        .Float3("lineArtPaperColor", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2])
+        .Int("lineArtToneLevels", this->ToneLevels)
+        .Float("lineArtToneDarkest", this->ToneDarkest);
+      this->SetSceneOutputUniforms(u, frame.Renderer);
+    },
+    margin);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLineArtPass::ReleaseStyleResources(vtkWindow* w)
+{
+  this->Internal->Strokes->Free(w);
+  this->Internal->LayerStrokes->Free(w);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkLineArtPass::GetStyleTextureBytes()
+{
+  return this->Internal->Strokes->GetTextureBytes() +
+    this->Internal->LayerStrokes->GetTextureBytes();
+}
+
+//------------------------------------------------------------------------------
+void vtkLineArtPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ContourWidth: " << this->ContourWidth << " pt\n";
+  os << indent << "CreaseWidth: " << this->CreaseWidth << " pt\n";
+  os << indent << "RidgeWidth: " << this->RidgeWidth << " pt\n";
+  os << indent << "ValleyWidth: " << this->ValleyWidth << " pt\n";
+  os << indent << "SuggestiveWidth: " << this->SuggestiveWidth << " pt\n";
+  os << indent << "DepthTaper: " << this->DepthTaper << "\n";
+  os << indent << "StrengthTaper: " << this->StrengthTaper << "\n";
+  os << indent << "CreaseAngle: " << this->CreaseAngle << " deg\n";
+  os << indent << "RidgeThreshold: " << this->RidgeThreshold << "\n";
+  os << indent << "SuggestiveThreshold: " << this->SuggestiveThreshold << "\n";
+  os << indent << "Tone: " << (this->Tone == SHADES ? "shades" : "none") << "\n";
+  os << indent << "ToneLevels: " << this->ToneLevels << "\n";
+  os << indent << "ToneDarkest: " << this->ToneDarkest << "\n";
+  os << indent << "InkColor: " << this->InkColor[0] << " " << this->InkColor[1] << " "
+     << this->InkColor[2] << "\n";
+  os << indent << "PaperColor: " << this->PaperColor[0] << " " << this->PaperColor[1] << " "
+     << this->PaperColor[2] << "\n";
+  os << indent << "ReferenceHeight: " << this->ReferenceHeight << " px\n";
+  os << indent << "Layer: " << (this->Layer == PAPER ? "paper" : "line art") << "\n";
+}

@@ -1,0 +1,131 @@
+/**
+ * @class   vtkStylizeFeatureStrokes
+ * @brief   Feature lines drawn as strokes (private to the module): the lines an illustrator
+ *          draws on the renderer's surfaces (vtkStylizeFeatureLines), their hidden parts removed
+ *          (vtkStylizeLineVisibility), as polylines of varying width in the image's pixels, and
+ *          their ink coverage as a texture the styles' final stages read.
+ *
+ * A style that draws feature lines (vtkLineArtPass; the comic's and the sketch's line phase)
+ * owns one. Per frame, Build() finds the lines of every visible opaque actor whose mapper's
+ * input is a surface (vtkPolyData, or the polydata leaves of composite data), through the
+ * actor's matrix, tests them against the scene's depth (the G-buffer's linear depth: every
+ * actor hides lines) or, with no depth, by ray casting against the same surfaces (the exact
+ * path of vector figures), and turns the visible runs into strokes. What does not depend on
+ * the view (curvature, creases, ridges, valleys) is kept per surface between frames.
+ *
+ * Widths are in points, each kind its own, thinned with depth across the scene (DepthTaper)
+ * and with the line's strength (StrengthTaper). The ink is the union of round-capped segments,
+ * anti-aliased over one pixel, so a tile of a magnified screenshot draws what the full image
+ * draws there (the style gives it a guard band of Reach() pixels).
+ */
+#ifndef vtkStylizeFeatureStrokes_h
+#define vtkStylizeFeatureStrokes_h
+
+#include "vtkObject.h"
+#include "vtkStylizePassesModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
+
+class vtkFloatArray;
+class vtkMatrix4x4;
+class vtkStylizeLineVisibility;
+class vtkOpenGLRenderWindow;
+class vtkPolyData;
+class vtkRenderer;
+class vtkTextureObject;
+class vtkWindow;
+
+class VTKSTYLIZEPASSES_NO_EXPORT vtkStylizeFeatureStrokes : public vtkObject
+{
+public:
+  static vtkStylizeFeatureStrokes* New();
+  vtkTypeMacro(vtkStylizeFeatureStrokes, vtkObject);
+
+  /** The number of kinds of line (vtkStylizeFeatureLines::Kinds). */
+  static constexpr int Kinds = 6;
+
+  /** What to draw and how (the owning style's settings). */
+  struct Settings
+  {
+    /** Stroke width per kind (vtkStylizeFeatureLines::Kinds), points; 0: the kind is off. */
+    double Widths[Kinds] = { 2.5, 2.5, 1.5, 1.0, 1.0, 1.2 };
+    /** Share of the width lost from the scene's nearest to its farthest point, [0, 1]. */
+    double DepthTaper = 0.5;
+    /** Share of the width that follows the line's strength (FeatureStrength), [0, 1]. */
+    double StrengthTaper = 1.0;
+    /** vtkStylizeFeatureLines' thresholds. */
+    double CreaseAngle = 40.0;
+    double RidgeThreshold = 40.0;
+    double SuggestiveThreshold = 2000.0;
+  };
+
+  /** The image the strokes are drawn in (a style's frame). */
+  struct View
+  {
+    vtkRenderer* Renderer = nullptr;
+    /** The pixels drawn (the depth image's size). */
+    int Size[2] = { 0, 0 };
+    /** The whole (possibly tiled, magnified) image's size, pixels; its aspect is the camera's. */
+    double FullSize[2] = { 1.0, 1.0 };
+    /** The lower-left corner of the drawn pixels in the whole image, pixels. */
+    double FullOffset[2] = { 0.0, 0.0 };
+    /** Pixels per point. */
+    double PointSize = 1.0;
+    /** The cheap variant: contours, boundaries and creases only (no curvature). */
+    bool Interactive = false;
+  };
+
+  /**
+   * Finds the visible lines of `view`'s renderer as strokes. `linearDepth`: the scene's
+   * -z in view space per pixel of view.Size (0 where nothing was drawn), as the G-buffer's
+   * LINEAR_DEPTH; nullptr: visibility by ray casting against the surfaces. Returns the number
+   * of strokes.
+   */
+  vtkIdType Build(const View& view, const Settings& settings, vtkFloatArray* linearDepth);
+
+  /**
+   * The strokes of the last Build() as polylines: points (x, y, 0) in the drawn pixels (row 0
+   * at the bottom), point data StrokeWidth (float, pixels) and cell data FeatureKind.
+   */
+  vtkPolyData* GetStrokes();
+
+  /**
+   * The ink coverage of the last Build()'s strokes in [0, 1], one float per pixel of
+   * view.Size, rows bottom to top, uploaded as a single-channel float texture with nearest
+   * filtering.
+   */
+  vtkTextureObject* Upload(vtkOpenGLRenderWindow* window);
+
+  /** The ink coverage on the CPU (what Upload() sends). */
+  void Rasterize(std::vector<float>& coverage);
+
+  /** How far a stroke reaches from its line, pixels: half the widest stroke, plus one. */
+  static double Reach(const Settings& settings, double pointSize);
+
+  /** Frees the texture (the window's context current). */
+  void Free(vtkWindow* w);
+
+  /** Forgets the surfaces' cached lines. */
+  void ClearCache();
+
+  /** Bytes of the texture. */
+  vtkIdType GetTextureBytes();
+
+protected:
+  vtkStylizeFeatureStrokes();
+  ~vtkStylizeFeatureStrokes() override;
+
+private:
+  vtkStylizeFeatureStrokes(const vtkStylizeFeatureStrokes&) = delete;
+  void operator=(const vtkStylizeFeatureStrokes&) = delete;
+
+  /** Sets up the visibility of the lines of `data` (a cached surface) for this frame. */
+  void SetVisibility(vtkStylizeLineVisibility* vis, vtkPolyData* data, vtkMatrix4x4* matrix,
+    const View& view, bool depthBuffer);
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif
