@@ -41,7 +41,8 @@ void Simplify(const std::vector<StrokePoint>& p, size_t first, size_t last, std:
     const double ex = p[i].X - p[first].X, ey = p[i].Y - p[first].Y;
     double d = len > 0.0 ? std::fabs(ex * dy - ey * dx) / len : std::hypot(ex, ey);
     // a change of width is kept as a change of shape would be
-    const double t = len > 0.0 ? std::min(1.0, std::max(0.0, (ex * dx + ey * dy) / (len * len))) : 0.0;
+    const double t =
+      len > 0.0 ? std::min(1.0, std::max(0.0, (ex * dx + ey * dy) / (len * len))) : 0.0;
     d = std::max(d, 0.5 * std::fabs(p[i].W - (p[first].W + t * (p[last].W - p[first].W))));
     if (d > worst)
     {

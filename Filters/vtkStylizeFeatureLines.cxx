@@ -188,6 +188,21 @@ bool vtkStylizeFeatureLines::IsKindEnabled(int kind) const
 }
 
 //------------------------------------------------------------------------------
+void vtkStylizeFeatureLines::SetObjectBounds(const double bounds[6])
+{
+  double b[6];
+  for (int i = 0; i < 6; ++i)
+  {
+    b[i] = bounds && std::isfinite(bounds[i]) ? bounds[i] : (i % 2 ? -1.0 : 1.0);
+  }
+  if (!std::equal(b, b + 6, this->ObjectBounds))
+  {
+    std::copy(b, b + 6, this->ObjectBounds);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 int vtkStylizeFeatureLines::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -202,21 +217,36 @@ int vtkStylizeFeatureLines::RequestData(
   FL::Cache& cache = *this->ViewIndependent;
   const bool curvature = this->IsKindEnabled(RIDGE) || this->IsKindEnabled(VALLEY) ||
     (this->Camera && this->IsKindEnabled(SUGGESTIVE_CONTOUR));
-  const FL::CacheKey key{ input, input->GetMTime(), this->CreaseAngle, this->RidgeThreshold,
+  FL::CacheKey key{ input, input->GetMTime(), this->CreaseAngle, this->RidgeThreshold,
     this->CurvatureSmoothing, curvature };
+  std::copy(this->ObjectBounds, this->ObjectBounds + 6, key.ObjectBounds);
   if (!cache.Valid || !(cache.Key == key))
   {
     cache = FL::Cache();
     cache.Key = key;
     cache.Valid = true;
     cache.Surface = WeldedMesh(input);
+    // The thresholds' diagonal: the object's when given (a piece's lines as the whole's).
+    const double own = cache.Surface.Diagonal;
+    const double* b = this->ObjectBounds;
+    if (b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5])
+    {
+      const double d = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+        (b[5] - b[4]) * (b[5] - b[4]));
+      if (d > 0.0 && std::isfinite(d))
+      {
+        cache.Surface.Diagonal = d;
+      }
+    }
     if (cache.Surface.Usable())
     {
       // Creases are found for the interior kinds too: they keep those off the creases.
       FL::EdgeLines(cache.Surface, this->CreaseAngle, cache.Boundaries, cache.Creases);
       if (curvature)
       {
-        cache.Curvatures = Curvatures(cache.Surface, this->CurvatureSmoothing);
+        // (the curvature filter's radius is a fraction of the piece's own diagonal)
+        cache.Curvatures = Curvatures(
+          cache.Surface, own > 0.0 ? this->CurvatureSmoothing * cache.Surface.Diagonal / own : 0.0);
         FL::RidgesAndValleys(
           cache.Surface, cache.Curvatures, this->RidgeThreshold, cache.Ridges, cache.Valleys);
       }
@@ -290,4 +320,7 @@ void vtkStylizeFeatureLines::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SuggestiveThreshold: " << this->SuggestiveThreshold << "\n";
   os << indent << "MinimumLength: " << this->MinimumLength << "\n";
   os << indent << "CurvatureSmoothing: " << this->CurvatureSmoothing << "\n";
+  os << indent << "ObjectBounds: " << this->ObjectBounds[0] << " " << this->ObjectBounds[1] << " "
+     << this->ObjectBounds[2] << " " << this->ObjectBounds[3] << " " << this->ObjectBounds[4] << " "
+     << this->ObjectBounds[5] << "\n";
 }

@@ -127,6 +127,22 @@ public:
   vtkGetMacro(CurvatureSmoothing, double);
   ///@}
 
+  ///@{
+  /**
+   * The bounds (in the input's coordinates) of the object whose diagonal the thresholds, the
+   * smoothing and the minimum length are fractions of. Invalid (xmin > xmax, the default): the
+   * input's own. A piece of a larger dataset (a rank's piece in ParaView) given the whole's
+   * bounds gets the lines the whole would have there.
+   */
+  void SetObjectBounds(const double bounds[6]);
+  void SetObjectBounds(double x0, double x1, double y0, double y1, double z0, double z1)
+  {
+    const double b[6] = { x0, x1, y0, y1, z0, z1 };
+    this->SetObjectBounds(b);
+  }
+  vtkGetVector6Macro(ObjectBounds, double);
+  ///@}
+
 protected:
   vtkStylizeFeatureLines();
   ~vtkStylizeFeatureLines() override;
@@ -139,6 +155,7 @@ protected:
   double SuggestiveThreshold = 2000.0;
   double MinimumLength = 0.03;
   double CurvatureSmoothing = 0.01;
+  double ObjectBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
 
 private:
   vtkStylizeFeatureLines(const vtkStylizeFeatureLines&) = delete;

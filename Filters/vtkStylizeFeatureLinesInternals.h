@@ -6,6 +6,7 @@
 #define vtkStylizeFeatureLinesInternals_h
 
 #include "vtkStylizeMeshGeometry.h"
+#include <algorithm> // for std::equal
 
 #include <cmath>
 #include <cstdint>
@@ -63,11 +64,13 @@ struct CacheKey
   unsigned long InputTime = 0;
   double CreaseAngle = 0.0, RidgeThreshold = 0.0, CurvatureSmoothing = 0.0;
   bool Curvature = false;
+  double ObjectBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   bool operator==(const CacheKey& o) const
   {
     return this->Input == o.Input && this->InputTime == o.InputTime &&
       this->CreaseAngle == o.CreaseAngle && this->RidgeThreshold == o.RidgeThreshold &&
-      this->CurvatureSmoothing == o.CurvatureSmoothing && this->Curvature == o.Curvature;
+      this->CurvatureSmoothing == o.CurvatureSmoothing && this->Curvature == o.Curvature &&
+      std::equal(this->ObjectBounds, this->ObjectBounds + 6, o.ObjectBounds);
   }
 };
 

@@ -164,8 +164,11 @@ public:
     return true;
   }
 
-  /** Whether a sample at window position win (in the view) is visible. */
-  bool Visible(const double win[3]) const
+  /**
+   * Whether a sample at window position win (in the view) is visible; `contour`: the sample is
+   * on an occluding contour, which gets the WorldTolerance too.
+   */
+  bool Visible(const double win[3], bool contour) const
   {
     const int w = this->View.Width, h = this->View.Height;
     const int i0 = std::max(0, static_cast<int>(std::ceil(win[0] - 1.5)));
@@ -188,8 +191,8 @@ public:
     }
     const double z = this->View.EyeDepth(win[2]);
     const double occluder = this->ViewDepth ? farthest : this->View.EyeDepth(farthest);
-    return occluder >=
-      z - std::max(this->WorldTolerance, this->Tolerance * this->View.PixelSize(z));
+    const double world = contour ? this->WorldTolerance : 0.0;
+    return occluder >= z - std::max(world, this->Tolerance * this->View.PixelSize(z));
   }
 
 private:
@@ -545,6 +548,9 @@ int vtkStylizeLineVisibility::RequestData(
       rays.AddOccluder(o.Surface, o.Matrix);
     }
   }
+  // Lines without a FeatureKind count as contours (the WorldTolerance applies to them).
+  vtkDataArray* kinds = input->GetCellData()->GetArray("FeatureKind");
+  bool contour = true;
   auto visible = [&](const double p[3]) -> bool
   {
     double win[3];
@@ -552,7 +558,7 @@ int vtkStylizeLineVisibility::RequestData(
     {
       return false;
     }
-    return this->Method == DEPTH_BUFFER ? depth.Visible(win) : rays.Visible(p, win);
+    return this->Method == DEPTH_BUFFER ? depth.Visible(win, contour) : rays.Visible(p, win);
   };
   Splitter splitter(input, output, this->VisibleOnly);
   vtkIdType cell = 0, n;
@@ -560,6 +566,7 @@ int vtkStylizeLineVisibility::RequestData(
   vtkCellArray* lines = input->GetLines();
   for (lines->InitTraversal(); lines->GetNextCell(n, ids); ++cell)
   {
+    contour = !kinds || kinds->GetTuple1(cell) == 0.0;
     splitter.Split(cell, n, ids, view, this->SampleSpacing, visible);
   }
   splitter.Finish();

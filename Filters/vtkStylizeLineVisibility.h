@@ -67,10 +67,11 @@ public:
 
   ///@{
   /**
-   * A tile of a larger image (a magnified screenshot, or a viewport with a guard band): the
-   * whole image's size in pixels, whose aspect ratio is the projection's, and the lower-left
-   * corner of the viewport (the depth image) in it, pixels. ImageSize (0, 0), the default: the
-   * viewport is the whole image. Sizes in [0, 1e7], offsets in [-1e7, 1e7].
+   * The image the camera projects onto, when the depth image is a part of it or reaches beyond
+   * it (a tile of a larger image, a guard band around a viewport): its size in pixels, whose
+   * aspect ratio is the projection's, and the depth image's lower-left corner in it, pixels
+   * (negative beyond it). ImageSize (0, 0), the default: the depth image is that image. Sizes
+   * in [0, 1e7], offsets in [-1e7, 1e7].
    */
   void SetImageSize(double width, double height);
   vtkGetVector2Macro(ImageSize, double);
@@ -124,11 +125,12 @@ public:
 
   ///@{
   /**
-   * DEPTH_BUFFER: the least depth tolerance, in world units, whatever the pixels' size. A
+   * DEPTH_BUFFER: the least depth tolerance of occluding contours (cell FeatureKind 0, or
+   * every line when the input has no FeatureKind), in world units, whatever the pixels' size. A
    * contour interpolated inside a coarse mesh's triangles lies behind the polygons that draw
    * its silhouette by up to about an edge: the mean edge length keeps such contours whole
-   * (vtkLineArtPass sets it so, as RAY_CAST starts its rays an edge away). Range [0, 1e30],
-   * default 0.
+   * (vtkLineArtPass sets it so, as RAY_CAST starts its rays an edge away). The other kinds lie
+   * on the surface the depth buffer shows and keep DepthTolerance. Range [0, 1e30], default 0.
    */
   vtkSetClampMacro(WorldTolerance, double, 0.0, 1.0e30);
   vtkGetMacro(WorldTolerance, double);

@@ -6,6 +6,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkStylizeDirectionField.h"
+#include "vtkStylizeFeatureStrokes.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeShaderUtilities.h"
@@ -42,6 +43,7 @@ enum Textures
 struct vtkComicPass::Plan
 {
   bool DepthEdges, NormalEdges, ColorEdges, ObjectAnchor;
+  bool FeatureLines;   // the feature lines' strokes
   bool Principal;      // hatching along the principal direction field
   FieldSettings Field; // its settings: the defaults
   double WeightSum;    // of the enabled edge phases, 1 when none
@@ -55,6 +57,7 @@ vtkStandardNewMacro(vtkComicPass);
 vtkComicPass::vtkComicPass()
   : vtkStylizeStylePass(vtkStylizeLightingPass::COMIC)
   , Field(vtkStylizeDirectionField::New())
+  , Strokes(vtkStylizeFeatureStrokes::New())
 {
   std::string source = vtkComicFS;
   std::string mainCall = "  comicMain();\n";
@@ -67,18 +70,20 @@ vtkComicPass::vtkComicPass()
 vtkComicPass::~vtkComicPass()
 {
   this->Field->Delete();
+  this->Strokes->Delete();
 }
 
 //------------------------------------------------------------------------------
 void vtkComicPass::ReleaseStyleResources(vtkWindow* w)
 {
   this->Field->Free(w);
+  this->Strokes->Free(w);
 }
 
 //------------------------------------------------------------------------------
 vtkIdType vtkComicPass::GetStyleTextureBytes()
 {
-  return this->Field->GetTextureBytes();
+  return this->Field->GetTextureBytes() + this->Strokes->GetTextureBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -98,6 +103,8 @@ void vtkComicPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Edges: " << this->Edges << "\n";
+  os << indent << "FeatureLines: " << this->FeatureLines << "\n";
+  os << indent << "FeatureLineWidth: " << this->FeatureLineWidth << " pt\n";
   os << indent << "EdgeWeights: " << this->EdgeWeights[0] << " " << this->EdgeWeights[1] << " "
      << this->EdgeWeights[2] << "\n";
   os << indent << "DepthThreshold: " << this->DepthThreshold << "\n";
@@ -153,6 +160,15 @@ bool vtkComicPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
   {
     this->Field->Free(frame.Window);
   }
+  if (plan.FeatureLines)
+  {
+    this->Strokes->RenderFrame(
+      this, frame, vtkStylizeFeatureStrokes::Settings::Proportional(this->FeatureLineWidth));
+  }
+  else
+  {
+    this->Strokes->Free(frame.Window);
+  }
   this->RenderCompositeStage(frame, plan);
   return true;
 }
@@ -170,6 +186,8 @@ vtkComicPass::Plan vtkComicPass::PlanFrame(bool interactive) const
   // at the fixed angle (no direction field).
   p.NormalEdges = edges && this->EdgeWeights[1] > 0.0 && !interactive;
   p.ColorEdges = edges && this->EdgeWeights[2] > 0.0 && !interactive;
+  p.FeatureLines =
+    this->FeatureLines && this->FeatureLineWidth > 0.0 && this->GetTranslucentLayer() == 0;
   const bool patterns = this->Dots || this->Hatching;
   p.ObjectAnchor = patterns && this->Anchor == OBJECT;
   p.Principal = this->Hatching && this->HatchOrientation == PRINCIPAL && !interactive;
@@ -195,6 +213,7 @@ vtkComicPass::Plan vtkComicPass::PlanFrame(bool interactive) const
   define(p.DepthEdges, "COMIC_DEPTH_EDGES");
   define(p.NormalEdges, "COMIC_NORMAL_EDGES");
   define(p.ColorEdges, "COMIC_COLOR_EDGES");
+  define(p.FeatureLines, "COMIC_FEATURE_LINES");
   define(this->Dots, "COMIC_DOTS");
   define(this->Hatching, "COMIC_HATCH");
   define(this->Hatching && this->CrossHatching, "COMIC_CROSS");
@@ -284,6 +303,13 @@ double vtkComicPass::GetReach(const Frame& frame)
   {
     reach = std::max(reach, vtkStylizeDirectionField::Reach(frame, plan.Field, pointSize) + 1.0);
   }
+  if (plan.FeatureLines)
+  {
+    reach = std::max(reach,
+      vtkStylizeFeatureStrokes::Reach(
+        vtkStylizeFeatureStrokes::Settings::Proportional(this->FeatureLineWidth), pointSize) +
+        1.0);
+  }
   return reach;
 }
 
@@ -302,14 +328,25 @@ void vtkComicPass::RenderCompositeStage(const Frame& frame, const Plan& plan)
   // Away from the scene only the outline (within the edge stride of a surface) differs from
   // the background, unless colour edges also find the background's own gradients (or a
   // figure's layer records the background as such).
-  const int stride =
-    std::max(1, static_cast<int>(std::lround(this->EdgeWidth * this->PointSize(frame))));
+  int margin = std::max(1, static_cast<int>(std::lround(this->EdgeWidth * this->PointSize(frame))));
+  if (plan.FeatureLines)
+  {
+    // the strokes reach beyond the surfaces by half their width
+    margin = std::max(margin,
+      static_cast<int>(std::ceil(vtkStylizeFeatureStrokes::Reach(
+        vtkStylizeFeatureStrokes::Settings::Proportional(this->FeatureLineWidth),
+        this->PointSize(frame)))));
+  }
   this->RenderStageToOutput(
     frame, COMPOSITE_STAGE, true,
     [&](vtkStylizeUniforms& u)
     {
       this->SetStageUniforms(u, frame, plan);
       u.Texture("comicEdgeTexture", this->TextureSlot(EDGE_TEXTURE));
+      if (plan.FeatureLines)
+      {
+        u.Texture("comicFeatureInk", this->Strokes->GetTexture());
+      }
     },
-    plan.ColorEdges || this->Layer >= FIGURE_INPUTS ? -1 : stride);
+    plan.ColorEdges || this->Layer >= FIGURE_INPUTS ? -1 : margin);
 }

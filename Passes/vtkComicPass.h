@@ -27,6 +27,7 @@
 #include "vtkStylizeStylePass.h"
 
 class vtkStylizeDirectionField;
+class vtkStylizeFeatureStrokes;
 
 class VTKSTYLIZEPASSES_EXPORT vtkComicPass : public vtkStylizeStylePass
 {
@@ -76,6 +77,31 @@ public:
   vtkSetMacro(Edges, bool);
   vtkGetMacro(Edges, bool);
   vtkBooleanMacro(Edges, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Feature lines: the lines an illustrator draws, found on the meshes as vtkLineArtPass finds
+   * them (occluding contours, boundaries, creases, ridges, valleys and suggestive contours,
+   * hidden lines removed), drawn in ink with the edges: the eyes, nose and mouth of a face scan,
+   * the folds of a part, which screen-space thresholds cannot tell from scan noise. The interactive
+   * variant draws contours, boundaries and creases only; translucent layers draw none. Default
+   * off: the comic's own normal edges already draw the folds of scans and parts, and on a
+   * faceted isosurface (ParaView's contours) the creases add clutter (docs/comic.md).
+   */
+  vtkSetMacro(FeatureLines, bool);
+  vtkGetMacro(FeatureLines, bool);
+  vtkBooleanMacro(FeatureLines, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Width of the feature lines' contours and boundaries, in points; creases, ridges, valleys and
+   * suggestive contours are thinner, in vtkLineArtPass's default proportions (0.6, 0.4, 0.4
+   * and 0.48 of it). Range [0, 20], default 1.5.
+   */
+  vtkSetClampMacro(FeatureLineWidth, double, 0.0, 20.0);
+  vtkGetMacro(FeatureLineWidth, double);
   ///@}
 
   ///@{
@@ -291,6 +317,8 @@ protected:
   ~vtkComicPass() override;
 
   bool Edges = true;
+  bool FeatureLines = false;
+  double FeatureLineWidth = 1.5;
   double EdgeWeights[3] = { 0.5, 0.5, 0.0 };
   double DepthThreshold = 10.0;
   double NormalThreshold = 0.15;
@@ -315,6 +343,8 @@ protected:
   double ReferenceHeight = 1080.0;
   /** The principal direction field of PRINCIPAL hatching. */
   vtkStylizeDirectionField* Field = nullptr;
+  /** The feature lines' strokes. */
+  vtkStylizeFeatureStrokes* Strokes = nullptr;
 
   /** What a frame computes (the enabled stages, their channels and defines). */
   struct Plan;

@@ -34,11 +34,8 @@ static_assert(vtkStylizeStagesInOrder(LineArtStages), "the line art's stages out
 struct vtkLineArtPass::Internals
 {
   vtkNew<vtkStylizeFeatureStrokes> Strokes;
-  /** The ray-cast strokes of ComputeFigureStrokes(), kept apart from the frame's. */
-  vtkNew<vtkStylizeFeatureStrokes> FigureStrokes;
   /** The translucent layers': no lines (their ink stays empty). */
   vtkNew<vtkStylizeFeatureStrokes> LayerStrokes;
-  vtkNew<vtkFloatArray> Depth;
   vtkWeakPointer<vtkRenderer> LastRenderer;
 };
 
@@ -120,14 +117,15 @@ vtkPolyData* vtkLineArtPass::ComputeFigureStrokes(int width, int height, int til
   view.Renderer = this->Internal->LastRenderer;
   view.Size[0] = std::max(1, width);
   view.Size[1] = std::max(1, height);
-  view.FullSize[0] = view.Size[0];
-  view.FullSize[1] = view.Size[1];
+  view.ViewportSize[0] = view.Size[0];
+  view.ViewportSize[1] = view.Size[1];
   view.PointSize = this->GetPixelsPerPoint(view.Size[1], tiles);
   if (view.Renderer)
   {
-    this->Internal->FigureStrokes->Build(view, StrokeSettings(this), nullptr);
+    // the frame's strokes replaced: the lines of the same camera are kept per surface
+    this->Internal->Strokes->Build(view, StrokeSettings(this), nullptr);
   }
-  return this->Internal->FigureStrokes->GetStrokes();
+  return this->Internal->Strokes->GetStrokes();
 }
 
 //------------------------------------------------------------------------------
@@ -152,35 +150,21 @@ bool vtkLineArtPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
   this->SetShaderDefines(defines);
 
   // The lines against the scene's depth (every actor's), as strokes, their ink as a texture.
-  Internals& in = *this->Internal;
-  in.LastRenderer = frame.Renderer;
-  vtkStylizeFeatureStrokes::View view;
-  view.Renderer = frame.Renderer;
-  view.Size[0] = frame.Size[0];
-  view.Size[1] = frame.Size[1];
-  std::copy(frame.FullSize, frame.FullSize + 2, view.FullSize);
-  std::copy(frame.FullOffset, frame.FullOffset + 2, view.FullOffset);
-  view.PointSize = this->PointSize(frame);
-  view.Interactive = frame.Interactive;
-  vtkFloatArray* depth = nullptr;
-  if (this->GetGBufferPass()->DownloadChannel(vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER, in.Depth))
-  {
-    depth = in.Depth;
-  }
   // Lines are found on opaque surfaces; a translucent layer is its paper (or tone) alone, laid
   // over the line art with the surface's opacity.
+  Internals& in = *this->Internal;
+  in.LastRenderer = frame.Renderer;
   const bool layer = this->GetTranslucentLayer() > 0;
   vtkStylizeFeatureStrokes::Settings settings = StrokeSettings(this);
   if (layer)
   {
     std::fill(settings.Widths, settings.Widths + vtkStylizeFeatureStrokes::Kinds, 0.0);
   }
-  vtkStylizeFeatureStrokes* strokes = layer ? in.LayerStrokes : in.Strokes;
-  strokes->Build(view, settings, depth);
-  vtkTextureObject* ink = strokes->Upload(frame.Window);
+  vtkTextureObject* ink =
+    (layer ? in.LayerStrokes : in.Strokes)->RenderFrame(this, frame, settings);
 
   const int margin =
-    static_cast<int>(std::ceil(vtkStylizeFeatureStrokes::Reach(settings, view.PointSize)));
+    static_cast<int>(std::ceil(vtkStylizeFeatureStrokes::Reach(settings, this->PointSize(frame))));
   this->RenderStageToOutput(
     frame, FINAL_STAGE, true,
     [&](vtkStylizeUniforms& u)

@@ -13,7 +13,8 @@
  * strokes whose width is set per kind (0 leaves a kind out, and it is not computed), thinned
  * with depth across the scene (DepthTaper) and faded in with the line's strength
  * (StrengthTaper), so that lines appear gradually as the view turns. Under the ink the paper
- * is plain (Tone NONE) or the lit tone in a few flat shades (SHADES). Vector figures
+ * is plain (Tone NONE) or the lit tone in a few flat shades (SHADES). Actors drawn as
+ * wireframe or points, and line and vertex cells, are drawn in ink as they are. Vector figures
  * (vtkStylizeFigureWriter) draw the same strokes as paths, found by ray casting.
  *
  * What does not depend on the view (curvature, creases, ridges and valleys) is computed once per
@@ -201,8 +202,9 @@ public:
   ///@}
 
   /**
-   * The strokes of the last frame: polylines with points (x, y, 0) in the pixels the frame
-   * computed (row 0 at the bottom), point data StrokeWidth (pixels) and cell data FeatureKind.
+   * The strokes of the last frame (or of the last ComputeFigureStrokes()): polylines with
+   * points (x, y, 0) in the pixels the frame computed (row 0 at the bottom), point data
+   * StrokeWidth (pixels) and cell data FeatureKind.
    */
   vtkPolyData* GetStrokes();
 
@@ -210,7 +212,8 @@ public:
    * The strokes of the last rendered renderer's scene in an image `width` x `height` pixels
    * drawn in `tiles` x `tiles` tiles (a magnified figure; 1 otherwise), their hidden parts
    * removed by ray casting against the scene's surfaces (exact, slower than a frame): what a
-   * vector figure draws. Same arrays as GetStrokes(); empty before the first frame.
+   * vector figure draws. The result is GetStrokes(), until the next frame; empty before the
+   * first frame.
    */
   vtkPolyData* ComputeFigureStrokes(int width, int height, int tiles);
 

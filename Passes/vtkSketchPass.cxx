@@ -18,6 +18,7 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkStylizeDirectionField.h"
+#include "vtkStylizeFeatureStrokes.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeShaderUtilities.h"
@@ -85,6 +86,8 @@ class vtkSketchPass::vtkInternals
 {
 public:
   vtkNew<vtkStylizeDirectionField> Field;
+  /** The feature lines' strokes. */
+  vtkNew<vtkStylizeFeatureStrokes> Strokes;
   int NoiseKind = -1;
   double NoiseStats[2] = { 0.5, 0.29 };
 
@@ -98,6 +101,7 @@ public:
 struct vtkSketchPass::Plan
 {
   bool Model, Strokes, ObjectNoise, Contrast;
+  bool FeatureLines; // the feature lines' strokes (in the SKETCH layer)
   SceneRequest Scene;
   std::string Defines;
   FieldSettings Field; // the direction field's settings (NaN settings replaced)
@@ -391,6 +395,8 @@ void vtkSketchPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->PaperColor[2] << "\n";
   os << indent << "Tinted: " << this->Tinted << "\n";
   os << indent << "ReferenceHeight: " << this->ReferenceHeight << " px\n";
+  os << indent << "FeatureLines: " << this->FeatureLines << "\n";
+  os << indent << "FeatureLineWidth: " << this->FeatureLineWidth << " pt\n";
 }
 
 //------------------------------------------------------------------------------
@@ -493,12 +499,13 @@ bool vtkSketchPass::DownloadDirections(vtkFloatArray* out)
 void vtkSketchPass::ReleaseStyleResources(vtkWindow* w)
 {
   this->Internals->Field->Free(w);
+  this->Internals->Strokes->Free(w);
 }
 
 //------------------------------------------------------------------------------
 vtkIdType vtkSketchPass::GetStyleTextureBytes()
 {
-  return this->Internals->Field->GetTextureBytes();
+  return this->Internals->Field->GetTextureBytes() + this->Internals->Strokes->GetTextureBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -517,7 +524,18 @@ double vtkSketchPass::GetReach(const Frame& frame)
   {
     reach = std::max(reach, p.BlurRadius + 2.0 * this->BlurStride);
   }
+  if (p.FeatureLines)
+  {
+    reach = std::max(reach, this->FeatureLineReach(p.PointSize) + 1.0);
+  }
   return reach;
+}
+
+//------------------------------------------------------------------------------
+double vtkSketchPass::FeatureLineReach(double pointSize) const
+{
+  return vtkStylizeFeatureStrokes::Reach(
+    vtkStylizeFeatureStrokes::Settings::Proportional(this->FeatureLineWidth), pointSize);
 }
 
 //------------------------------------------------------------------------------
@@ -552,6 +570,15 @@ bool vtkSketchPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
   {
     this->FreeTexture(BLUR_X);
     this->FreeTexture(BLUR_Y);
+  }
+  if (plan.FeatureLines)
+  {
+    this->Internals->Strokes->RenderFrame(
+      this, frame, vtkStylizeFeatureStrokes::Settings::Proportional(this->FeatureLineWidth));
+  }
+  else
+  {
+    this->Internals->Strokes->Free(frame.Window);
   }
   this->RenderFinalStage(frame, plan);
   return true;
@@ -610,6 +637,9 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   define(p.Contrast, "SKETCH_CONTRAST");
   define(this->Tinted, "SKETCH_TINTED");
   define(true, "SKETCH_LAYER " + std::to_string(this->Layer));
+  p.FeatureLines = this->FeatureLines && this->FeatureLineWidth > 0.0 && this->Layer == SKETCH &&
+    this->GetTranslucentLayer() == 0;
+  define(p.FeatureLines, "SKETCH_FEATURE_LINES");
 
   p.StepLength = finite(this->StepLength, self->GetStepLengthMinValue());
   p.Steps = this->Steps;
@@ -745,7 +775,12 @@ void vtkSketchPass::RenderFinalStage(const Frame& frame, const Plan& p)
         .Float("sketchCross", p.CrossThreshold)
         .Float3("sketchPencil", this->PencilColor[0], this->PencilColor[1], this->PencilColor[2])
         .Float3("sketchPaper", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2]);
+      if (p.FeatureLines)
+      {
+        u.Texture("sketchFeatureInk", this->Internals->Strokes->GetTexture());
+      }
       this->SetSceneOutputUniforms(u, frame.Renderer);
     },
-    0); // the background keeps its colour: the stage runs where the scene is
+    // the background keeps its colour: the stage runs where the scene is (and its lines)
+    p.FeatureLines ? static_cast<int>(std::ceil(this->FeatureLineReach(p.PointSize))) : 0);
 }

@@ -361,6 +361,29 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Feature lines: the lines an illustrator draws, found on the meshes as vtkLineArtPass finds
+   * them (occluding contours, boundaries, creases, ridges, valleys and suggestive contours,
+   * hidden lines removed), drawn in pencil: the eyes, nose and mouth of a face scan, the folds of a
+   * part, which screen-space thresholds cannot tell from scan noise. The interactive variant
+   * draws contours, boundaries and creases only; translucent layers draw none. Default on.
+   */
+  vtkSetMacro(FeatureLines, bool);
+  vtkGetMacro(FeatureLines, bool);
+  vtkBooleanMacro(FeatureLines, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Width of the feature lines' contours and boundaries, in points; creases, ridges, valleys and
+   * suggestive contours are thinner, in vtkLineArtPass's default proportions (0.6, 0.4, 0.4
+   * and 0.48 of it). Range [0, 20], default 1.5.
+   */
+  vtkSetClampMacro(FeatureLineWidth, double, 0.0, 20.0);
+  vtkGetMacro(FeatureLineWidth, double);
+  ///@}
+
+  ///@{
   /** Pencil colour (RGB, each [0, 1]). Default (0.12, 0.12, 0.14), graphite. */
   virtual void SetPencilColor(double r, double g, double b);
   vtkGetVector3Macro(PencilColor, double);
@@ -457,12 +480,16 @@ protected:
   double PaperColor[3] = { 1.0, 1.0, 1.0 };
   bool Tinted = false;
   double ReferenceHeight = 1080.0;
+  bool FeatureLines = true;
+  double FeatureLineWidth = 1.5;
 
   /** What a frame computes: stages, channels, defines, and the settings' lengths in pixels. */
   struct Plan;
   Plan PlanFrame(const Frame& frame) const;
   /** The strokes' length on top of the field's reach, or the blur's, whichever is larger. */
   double GetReach(const Frame& frame) override;
+  /** How far the feature lines' strokes reach from their lines, pixels. */
+  double FeatureLineReach(double pointSize) const;
   /** The blur's grid: BlurStride. */
   int GetGuardAlignment(const Frame& frame) override;
   /** The noise texture of the current kind, made when the kind changes. */

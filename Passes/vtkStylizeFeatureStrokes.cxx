@@ -4,15 +4,19 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCommunicator.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkExtractEdges.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -23,6 +27,7 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkStylizeFeatureLines.h"
+#include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLineVisibility.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
@@ -35,16 +40,81 @@
 
 namespace
 {
-/** A surface of the scene: its lines and their visibility, kept between frames. */
+/**
+ * A dataset of the scene (an actor's, or a leaf of its composite data) and its lines, kept
+ * between frames: its surface (itself, or vtkDataSetSurfaceFilter's of another dataset), the
+ * feature lines of the surface or, for an actor drawn as wireframe, the surface's edges (as
+ * creases), and their visibility.
+ */
 struct Surface
 {
-  vtkWeakPointer<vtkPolyData> Data;
+  vtkWeakPointer<vtkDataSet> Data;
+  bool Wireframe = false;
+  vtkNew<vtkDataSetSurfaceFilter> Geometry;
   vtkNew<vtkStylizeFeatureLines> Lines;
+  vtkNew<vtkExtractEdges> Edges;
+  vtkNew<vtkPolyData> KindedEdges;
+  vtkMTimeType EdgesTime = 0;
   vtkNew<vtkStylizeLineVisibility> Visibility;
   bool Seen = false;
   /** The mean edge length of the surface's polygons, and the surface's time when measured. */
   double MeanEdge = 0.0;
   vtkMTimeType EdgeTime = 0;
+
+  Surface(vtkDataSet* data, bool wireframe)
+    : Data(data)
+    , Wireframe(wireframe)
+  {
+    this->Geometry->SetInputData(data);
+    this->Lines->SetInputConnection(this->Geometry->GetOutputPort());
+    this->Edges->SetInputConnection(this->Geometry->GetOutputPort());
+    if (auto* pd = vtkPolyData::SafeDownCast(data))
+    {
+      this->Lines->SetInputData(pd);
+      this->Edges->SetInputData(pd);
+    }
+    if (wireframe)
+    {
+      this->Visibility->SetInputData(this->KindedEdges);
+    }
+    else
+    {
+      this->Visibility->SetInputConnection(this->Lines->GetOutputPort());
+    }
+    this->Visibility->VisibleOnlyOn();
+    this->Visibility->SetDepthKind(vtkStylizeLineVisibility::VIEW_DEPTH);
+  }
+
+  /** The surface the lines are on (updated). */
+  vtkPolyData* SurfaceOf()
+  {
+    if (auto* pd = vtkPolyData::SafeDownCast(this->Data))
+    {
+      return pd;
+    }
+    this->Geometry->Update();
+    return this->Geometry->GetOutput();
+  }
+
+  /** A wireframe's edges as creases (their FeatureKind), updated when the data changes. */
+  void UpdateEdges()
+  {
+    this->Edges->Update();
+    vtkPolyData* edges = this->Edges->GetOutput();
+    if (edges->GetMTime() <= this->EdgesTime)
+    {
+      return;
+    }
+    this->EdgesTime = edges->GetMTime();
+    this->KindedEdges->Initialize();
+    this->KindedEdges->SetPoints(edges->GetPoints());
+    this->KindedEdges->SetLines(edges->GetLines());
+    vtkNew<vtkUnsignedCharArray> kinds;
+    kinds->SetName("FeatureKind");
+    kinds->SetNumberOfTuples(edges->GetNumberOfLines());
+    kinds->Fill(vtkStylizeFeatureLines::CREASE);
+    this->KindedEdges->GetCellData()->AddArray(kinds);
+  }
 };
 
 /** The mean edge length of (up to 10000 of) the surface's polygons. */
@@ -83,25 +153,32 @@ double ScaleOf(vtkMatrix4x4* m)
   {
     return 1.0;
   }
-  const double det = vtkMatrix4x4::Determinant(m->GetData()) / std::max(1e-300, std::fabs(m->GetElement(3, 3)));
+  const double det =
+    vtkMatrix4x4::Determinant(m->GetData()) / std::max(1e-300, std::fabs(m->GetElement(3, 3)));
   const double s = std::cbrt(std::fabs(det));
   return std::isfinite(s) ? s : 1.0;
 }
 
-/** A surface to draw this frame and the matrix from its coordinates to the world. */
+/**
+ * A dataset to draw this frame, the matrix from its coordinates to the world, its look, and the
+ * index of its actor among the frame's (LineActors()).
+ */
 struct Item
 {
-  vtkPolyData* Data;
+  vtkDataSet* Data;
   vtkMatrix4x4* Matrix;
+  bool Wireframe;
+  size_t Actor;
 };
 
-void AddSurface(vtkDataObject* data, vtkMatrix4x4* matrix, std::vector<Item>& out)
+void AddSurface(
+  vtkDataObject* data, vtkMatrix4x4* matrix, bool wireframe, size_t actor, std::vector<Item>& out)
 {
-  if (auto* pd = vtkPolyData::SafeDownCast(data))
+  if (auto* ds = vtkDataSet::SafeDownCast(data))
   {
-    if (pd->GetNumberOfPolys() + pd->GetNumberOfStrips() > 0)
+    if (ds->GetNumberOfCells() > 0)
     {
-      out.push_back({ pd, matrix });
+      out.push_back({ ds, matrix, wireframe, actor });
     }
   }
   else if (auto* cd = vtkCompositeDataSet::SafeDownCast(data))
@@ -110,29 +187,98 @@ void AddSurface(vtkDataObject* data, vtkMatrix4x4* matrix, std::vector<Item>& ou
     it.TakeReference(cd->NewIterator());
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
     {
-      AddSurface(it->GetCurrentDataObject(), matrix, out);
+      AddSurface(it->GetCurrentDataObject(), matrix, wireframe, actor, out);
     }
   }
 }
 
-/** The visible opaque actors' surfaces. */
-std::vector<Item> SurfacesOf(vtkRenderer* ren)
+/** The actors whose lines are drawn: visible, opaque, drawn as surfaces or wireframe. */
+std::vector<vtkActor*> LineActors(vtkRenderer* ren)
 {
-  std::vector<Item> items;
+  std::vector<vtkActor*> actors;
   vtkPropCollection* props = ren->GetViewProps();
   vtkCollectionSimpleIterator it;
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
   {
     auto* actor = vtkActor::SafeDownCast(prop);
-    if (!actor || !actor->GetVisibility() || !actor->GetMapper() ||
-      actor->GetProperty()->GetOpacity() < 1.0)
+    if (actor && actor->GetVisibility() && actor->GetMapper() &&
+      actor->GetProperty()->GetOpacity() >= 1.0 &&
+      actor->GetProperty()->GetRepresentation() != VTK_POINTS)
     {
-      continue;
+      actors.push_back(actor);
     }
-    AddSurface(actor->GetMapper()->GetInputDataObject(0, 0), actor->GetMatrix(), items);
+  }
+  return actors;
+}
+
+/** The datasets of the actors. */
+std::vector<Item> SurfacesOf(const std::vector<vtkActor*>& actors)
+{
+  std::vector<Item> items;
+  for (size_t a = 0; a < actors.size(); ++a)
+  {
+    vtkActor* actor = actors[a];
+    AddSurface(actor->GetMapper()->GetInputDataObject(0, 0), actor->GetMatrix(),
+      actor->GetProperty()->GetRepresentation() == VTK_WIREFRAME, a, items);
   }
   return items;
+}
+
+/**
+ * Over several processes (each rendering its own pieces): the scene's bounds and each actor's
+ * data bounds, over every process, so that every piece gets the thresholds and the taper the
+ * whole data would; false (nothing set) when the processes do not show the same actors.
+ */
+bool ShareBounds(vtkMultiProcessController* c, const std::vector<vtkActor*>& actors,
+  vtkStylizeFeatureStrokes::View& view)
+{
+  const int count = static_cast<int>(actors.size());
+  int least = count, most = count;
+  c->AllReduce(&count, &least, 1, vtkCommunicator::MIN_OP);
+  c->AllReduce(&count, &most, 1, vtkCommunicator::MAX_OP);
+  if (least != most)
+  {
+    return false;
+  }
+  // lows and highs of the scene, then of each actor's data
+  std::vector<double> lo(3 * (count + 1), VTK_DOUBLE_MAX), hi(3 * (count + 1), -VTK_DOUBLE_MAX);
+  auto add = [&](size_t slot, const double* b)
+  {
+    if (b && vtkMath::AreBoundsInitialized(b))
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        lo[3 * slot + i] = b[2 * i];
+        hi[3 * slot + i] = b[2 * i + 1];
+      }
+    }
+  };
+  double scene[6];
+  view.Renderer->ComputeVisiblePropBounds(scene);
+  add(0, scene);
+  for (size_t a = 0; a < actors.size(); ++a)
+  {
+    add(a + 1, actors[a]->GetMapper()->GetBounds());
+  }
+  std::vector<double> los(lo.size()), his(hi.size());
+  c->AllReduce(lo.data(), los.data(), static_cast<vtkIdType>(lo.size()), vtkCommunicator::MIN_OP);
+  c->AllReduce(hi.data(), his.data(), static_cast<vtkIdType>(hi.size()), vtkCommunicator::MAX_OP);
+  auto bounds = [&](size_t slot, double* b)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      b[2 * i] = los[3 * slot + i];
+      b[2 * i + 1] = his[3 * slot + i];
+    }
+  };
+  bounds(0, view.SceneBounds);
+  view.ObjectBounds.assign(actors.size(), {});
+  for (size_t a = 0; a < actors.size(); ++a)
+  {
+    bounds(a + 1, view.ObjectBounds[a].data());
+  }
+  return true;
 }
 
 /** Coverage of a pixel centre at distance d from a stroke's axis of half width r. */
@@ -146,9 +292,10 @@ inline float Coverage(double d, double r)
 
 struct vtkStylizeFeatureStrokes::Internals
 {
-  std::map<vtkPolyData*, std::unique_ptr<Surface>> Cache;
+  std::map<std::pair<vtkDataSet*, bool>, std::unique_ptr<Surface>> Cache;
   vtkNew<vtkPolyData> Strokes;
   vtkNew<vtkImageData> Depth;
+  vtkNew<vtkFloatArray> LinearDepth;
   int Size[2] = { 0, 0 };
   vtkTextureObject* Texture = nullptr;
   std::vector<float> Coverage;
@@ -217,10 +364,17 @@ public:
     }
     // The projection of the whole image, and the scene's depth range for the taper.
     this->Projection->DeepCopy(camera->GetCompositeProjectionTransformMatrix(
-      view.FullSize[0] / std::max(1.0, view.FullSize[1]), -1.0, 1.0));
+      view.ViewportSize[0] / std::max(1.0, view.ViewportSize[1]), -1.0, 1.0));
     this->ModelView->DeepCopy(camera->GetViewTransformMatrix());
     double b[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
-    view.Renderer->ComputeVisiblePropBounds(b);
+    if (vtkMath::AreBoundsInitialized(view.SceneBounds))
+    {
+      std::copy(view.SceneBounds, view.SceneBounds + 6, b);
+    }
+    else
+    {
+      view.Renderer->ComputeVisiblePropBounds(b);
+    }
     if (vtkMath::AreBoundsInitialized(b))
     {
       const double center[4] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]),
@@ -263,8 +417,8 @@ public:
         toClip->MultiplyPoint(p, c);
         toEye->MultiplyPoint(p, e);
         const double w = c[3] > 0.0 ? c[3] : 1.0;
-        double x = (c[0] / w + 1.0) * 0.5 * this->V.FullSize[0] - this->V.FullOffset[0];
-        double y = (c[1] / w + 1.0) * 0.5 * this->V.FullSize[1] - this->V.FullOffset[1];
+        double x = (c[0] / w + 1.0) * 0.5 * this->V.ViewportSize[0] - this->V.ViewportOffset[0];
+        double y = (c[1] / w + 1.0) * 0.5 * this->V.ViewportSize[1] - this->V.ViewportOffset[1];
         if (!std::isfinite(x) || !std::isfinite(y))
         {
           x = y = -1.0e6;
@@ -308,6 +462,34 @@ private:
   vtkNew<vtkUnsignedCharArray> Kinds;
 };
 
+/**
+ * Sets up the visibility of a surface's lines for this frame: against `depth` (the scene's
+ * linear depth, `size` pixels), or by ray casting when it is null.
+ */
+void SetVisibility(Surface& s, vtkMatrix4x4* matrix, const vtkStylizeFeatureStrokes::View& view,
+  const int size[2], vtkImageData* depth)
+{
+  vtkStylizeLineVisibility* vis = s.Visibility;
+  vtkPolyData* surface = s.SurfaceOf();
+  if (s.EdgeTime < surface->GetMTime())
+  {
+    s.MeanEdge = MeanEdgeLength(surface);
+    s.EdgeTime = surface->GetMTime();
+  }
+  // A contour interpolated inside a coarse mesh's triangles lies up to about an edge behind
+  // the polygons that draw its silhouette (the ray-cast reference starts an edge away too).
+  vis->SetWorldTolerance(s.MeanEdge * ScaleOf(matrix));
+  vis->SetCamera(view.Renderer->GetActiveCamera());
+  vis->SetModelMatrix(matrix);
+  vis->SetViewportSize(size);
+  vis->SetImageSize(view.ViewportSize[0], view.ViewportSize[1]);
+  vis->SetImageOffset(view.ViewportOffset[0], view.ViewportOffset[1]);
+  vis->RemoveAllOccluders();
+  vis->SetMethod(
+    depth ? vtkStylizeLineVisibility::DEPTH_BUFFER : vtkStylizeLineVisibility::RAY_CAST);
+  vis->SetDepthImage(depth);
+}
+
 /** The kinds a frame computes: those with a width; the interactive variant, the cheap ones. */
 int KindMask(const vtkStylizeFeatureStrokes::Settings& settings, bool interactive)
 {
@@ -335,7 +517,7 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
   const int mask = KindMask(settings, view.Interactive);
   vtkCamera* camera = view.Renderer ? view.Renderer->GetActiveCamera() : nullptr;
   const std::vector<Item> items =
-    camera && mask ? SurfacesOf(view.Renderer) : std::vector<Item>();
+    camera && mask ? SurfacesOf(LineActors(view.Renderer)) : std::vector<Item>();
   if (linearDepth)
   {
     in.Depth->SetDimensions(in.Size[0], in.Size[1], 1);
@@ -349,34 +531,44 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
   }
   for (const Item& item : items)
   {
-    std::unique_ptr<Surface>& s = in.Cache[item.Data];
+    std::unique_ptr<Surface>& s = in.Cache[{ item.Data, item.Wireframe }];
     if (!s || s->Data.GetPointer() != item.Data)
     {
-      s.reset(new Surface);
-      s->Data = item.Data;
-      s->Lines->SetInputData(item.Data);
-      s->Visibility->SetInputConnection(s->Lines->GetOutputPort());
-      s->Visibility->VisibleOnlyOn();
-      s->Visibility->SetDepthKind(vtkStylizeLineVisibility::VIEW_DEPTH);
+      s.reset(new Surface(item.Data, item.Wireframe));
     }
     s->Seen = true;
-    vtkStylizeFeatureLines* fl = s->Lines;
+  }
+  for (const Item& item : items)
+  {
+    Surface& s = *in.Cache[{ item.Data, item.Wireframe }];
+    if (item.Wireframe)
+    {
+      s.UpdateEdges();
+    }
+    vtkStylizeFeatureLines* fl = s.Lines;
     fl->SetKindMask(mask);
     fl->SetCreaseAngle(settings.CreaseAngle);
     fl->SetRidgeThreshold(settings.RidgeThreshold);
     fl->SetSuggestiveThreshold(settings.SuggestiveThreshold);
     fl->SetCamera(camera);
     fl->SetModelMatrix(item.Matrix);
-    this->SetVisibility(s->Visibility, item.Data, item.Matrix, view, linearDepth != nullptr);
+    const double invalid[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
+    fl->SetObjectBounds(
+      item.Actor < view.ObjectBounds.size() ? view.ObjectBounds[item.Actor].data() : invalid);
+    SetVisibility(s, item.Matrix, view, in.Size, linearDepth ? in.Depth.GetPointer() : nullptr);
     if (!linearDepth)
     {
       for (const Item& other : items)
       {
-        s->Visibility->AddOccluder(other.Data, other.Matrix);
+        if (!other.Wireframe)
+        {
+          s.Visibility->AddOccluder(
+            in.Cache[{ other.Data, other.Wireframe }]->SurfaceOf(), other.Matrix);
+        }
       }
     }
-    s->Visibility->Update();
-    sink.Append(s->Visibility->GetOutput(), item.Matrix);
+    s.Visibility->Update();
+    sink.Append(s.Visibility->GetOutput(), item.Matrix);
   }
   for (auto it = in.Cache.begin(); it != in.Cache.end();)
   {
@@ -387,28 +579,57 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizeFeatureStrokes::SetVisibility(vtkStylizeLineVisibility* vis, vtkPolyData* data,
-  vtkMatrix4x4* matrix, const View& view, bool depthBuffer)
+vtkTextureObject* vtkStylizeFeatureStrokes::RenderFrame(
+  vtkStylizeStylePass* style, const vtkStylizeStylePass::Frame& frame, const Settings& settings)
 {
-  Internals& in = *this->Internal;
-  Surface& s = *in.Cache[data];
-  if (s.EdgeTime < data->GetMTime())
+  View view;
+  view.Renderer = frame.Renderer;
+  view.Size[0] = frame.Size[0];
+  view.Size[1] = frame.Size[1];
+  // The camera projects onto the viewport (a tile: VTK narrows the camera to it), which the
+  // guard transform places in the frame's pixels: ndc' = s ndc + t.
+  for (int a = 0; a < 2; ++a)
   {
-    s.MeanEdge = MeanEdgeLength(data);
-    s.EdgeTime = data->GetMTime();
+    const double scale = frame.GuardTransform[a], shift = frame.GuardTransform[a + 2];
+    view.ViewportSize[a] = scale * frame.Size[a];
+    view.ViewportOffset[a] = -0.5 * (shift + 1.0 - scale) * frame.Size[a];
   }
-  // A contour interpolated inside a coarse mesh's triangles lies up to about an edge behind
-  // the polygons that draw its silhouette (the ray-cast reference starts an edge away too).
-  vis->SetWorldTolerance(s.MeanEdge * ScaleOf(matrix));
-  vis->SetCamera(view.Renderer->GetActiveCamera());
-  vis->SetModelMatrix(matrix);
-  vis->SetViewportSize(in.Size);
-  vis->SetImageSize(view.FullSize[0], view.FullSize[1]);
-  vis->SetImageOffset(view.FullOffset[0], view.FullOffset[1]);
-  vis->RemoveAllOccluders();
-  vis->SetMethod(
-    depthBuffer ? vtkStylizeLineVisibility::DEPTH_BUFFER : vtkStylizeLineVisibility::RAY_CAST);
-  vis->SetDepthImage(depthBuffer ? in.Depth.GetPointer() : nullptr);
+  view.PointSize = style->PointSize(frame);
+  view.Interactive = frame.Interactive;
+  Internals& in = *this->Internal;
+  vtkFloatArray* depth = in.LinearDepth;
+  bool haveDepth =
+    style->GetGBufferPass()->DownloadChannel(vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER, depth);
+  // Several processes, each with its own pieces: process 0 holds the composited depth, which
+  // every process tests its lines against; their ink is combined on process 0.
+  vtkMultiProcessController* c = style->GetGBufferPass()->GetController();
+  const bool ranks = c && c->GetNumberOfProcesses() > 1;
+  if (ranks)
+  {
+    const vtkIdType pixels = static_cast<vtkIdType>(frame.Size[0]) * frame.Size[1];
+    if (!haveDepth || depth->GetNumberOfTuples() != pixels)
+    {
+      depth->SetNumberOfComponents(1);
+      depth->SetNumberOfTuples(pixels);
+      depth->Fill(0.0);
+    }
+    c->Broadcast(depth->GetPointer(0), pixels, 0);
+    haveDepth = true;
+    ShareBounds(c, LineActors(frame.Renderer), view);
+  }
+  this->Build(view, settings, haveDepth ? depth : nullptr);
+  this->Rasterize(in.Coverage);
+  if (ranks)
+  {
+    std::vector<float> combined(in.Coverage.size(), 0.0f);
+    c->Reduce(in.Coverage.data(), combined.data(), static_cast<vtkIdType>(combined.size()),
+      vtkCommunicator::MAX_OP, 0);
+    if (c->GetLocalProcessId() == 0)
+    {
+      in.Coverage.swap(combined);
+    }
+  }
+  return this->UploadCoverage(frame.Window);
 }
 
 //------------------------------------------------------------------------------
@@ -463,8 +684,14 @@ void vtkStylizeFeatureStrokes::Rasterize(std::vector<float>& coverage)
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkStylizeFeatureStrokes::Upload(vtkOpenGLRenderWindow* window)
 {
+  this->Rasterize(this->Internal->Coverage);
+  return this->UploadCoverage(window);
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkStylizeFeatureStrokes::UploadCoverage(vtkOpenGLRenderWindow* window)
+{
   Internals& in = *this->Internal;
-  this->Rasterize(in.Coverage);
   if (!in.Texture)
   {
     in.Texture = vtkTextureObject::New();
@@ -477,6 +704,12 @@ vtkTextureObject* vtkStylizeFeatureStrokes::Upload(vtkOpenGLRenderWindow* window
   in.Texture->Create2DFromRaw(static_cast<unsigned int>(in.Size[0]),
     static_cast<unsigned int>(in.Size[1]), 1, VTK_FLOAT, in.Coverage.data());
   return in.Texture;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkStylizeFeatureStrokes::GetTexture()
+{
+  return this->Internal->Texture;
 }
 
 //------------------------------------------------------------------------------

@@ -6,12 +6,16 @@
  *          their ink coverage as a texture the styles' final stages read.
  *
  * A style that draws feature lines (vtkLineArtPass; the comic's and the sketch's line phase)
- * owns one. Per frame, Build() finds the lines of every visible opaque actor whose mapper's
- * input is a surface (vtkPolyData, or the polydata leaves of composite data), through the
- * actor's matrix, tests them against the scene's depth (the G-buffer's linear depth: every
- * actor hides lines) or, with no depth, by ray casting against the same surfaces (the exact
+ * owns one. Per frame, Build() finds the lines of every visible opaque actor drawn as a surface
+ * whose mapper's input is a surface (vtkPolyData, or the polydata leaves of composite data),
+ * through the actor's matrix, tests them against the scene's depth (the G-buffer's linear depth:
+ * every actor hides lines) or, with no depth, by ray casting against the same surfaces (the exact
  * path of vector figures), and turns the visible runs into strokes. What does not depend on
  * the view (curvature, creases, ridges, valleys) is kept per surface between frames.
+ *
+ * On several processes (ParaView's ranks, each with its own pieces) process 0's composited depth
+ * is sent to every process, whose lines are tested against it, with thresholds and taper from
+ * the whole data's bounds; their ink is combined on process 0: 1 and N processes draw alike.
  *
  * Widths are in points, each kind its own, thinned with depth across the scene (DepthTaper)
  * and with the line's strength (StrengthTaper). The ink is the union of round-capped segments,
@@ -23,13 +27,13 @@
 
 #include "vtkObject.h"
 #include "vtkStylizePassesModule.h" // for export macro
+#include "vtkStylizeStylePass.h"    // for vtkStylizeStylePass::Frame
 
+#include <array>  // for std::array
 #include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
 
 class vtkFloatArray;
-class vtkMatrix4x4;
-class vtkStylizeLineVisibility;
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
 class vtkRenderer;
@@ -58,6 +62,21 @@ public:
     double CreaseAngle = 40.0;
     double RidgeThreshold = 40.0;
     double SuggestiveThreshold = 2000.0;
+
+    /**
+     * The default proportions between the kinds (those of vtkLineArtPass), the contours
+     * `width` points wide: what the comic's and the sketch's line phase draw.
+     */
+    static Settings Proportional(double width)
+    {
+      Settings s;
+      const double scale = width / s.Widths[0];
+      for (double& w : s.Widths)
+      {
+        w *= scale;
+      }
+      return s;
+    }
   };
 
   /** The image the strokes are drawn in (a style's frame). */
@@ -66,14 +85,25 @@ public:
     vtkRenderer* Renderer = nullptr;
     /** The pixels drawn (the depth image's size). */
     int Size[2] = { 0, 0 };
-    /** The whole (possibly tiled, magnified) image's size, pixels; its aspect is the camera's. */
-    double FullSize[2] = { 1.0, 1.0 };
-    /** The lower-left corner of the drawn pixels in the whole image, pixels. */
-    double FullOffset[2] = { 0.0, 0.0 };
+    /**
+     * The viewport the camera projects onto (a tile of a magnified screenshot, where VTK narrows
+     * the camera to the tile), pixels; its aspect is the projection's.
+     */
+    double ViewportSize[2] = { 1.0, 1.0 };
+    /** The lower-left corner of the drawn pixels in that viewport, pixels (< 0 in a guard band). */
+    double ViewportOffset[2] = { 0.0, 0.0 };
     /** Pixels per point. */
     double PointSize = 1.0;
     /** The cheap variant: contours, boundaries and creases only (no curvature). */
     bool Interactive = false;
+    /** The scene's bounds for the depth taper; invalid (the default): the renderer's props'. */
+    double SceneBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
+    /**
+     * Per actor (in the renderer's order, among those drawn): the bounds of its whole data, that
+     * the lines' thresholds are relative to (vtkStylizeFeatureLines::SetObjectBounds()); empty
+     * (the default): each dataset's own.
+     */
+    std::vector<std::array<double, 6>> ObjectBounds;
   };
 
   /**
@@ -83,6 +113,15 @@ public:
    * of strokes.
    */
   vtkIdType Build(const View& view, const Settings& settings, vtkFloatArray* linearDepth);
+
+  /**
+   * Build() for a style's frame: the lines against the style's G-buffer (its linear depth,
+   * which the frame must have rendered), in the frame's pixels (its guard band included), lengths
+   * at the frame's pixels per point, the interactive variant in an interactive frame; then
+   * Upload(). Returns the ink texture.
+   */
+  vtkTextureObject* RenderFrame(
+    vtkStylizeStylePass* style, const vtkStylizeStylePass::Frame& frame, const Settings& settings);
 
   /**
    * The strokes of the last Build() as polylines: points (x, y, 0) in the drawn pixels (row 0
@@ -96,6 +135,9 @@ public:
    * filtering.
    */
   vtkTextureObject* Upload(vtkOpenGLRenderWindow* window);
+
+  /** The texture of the last Upload() (nullptr before it). */
+  vtkTextureObject* GetTexture();
 
   /** The ink coverage on the CPU (what Upload() sends). */
   void Rasterize(std::vector<float>& coverage);
@@ -120,9 +162,8 @@ private:
   vtkStylizeFeatureStrokes(const vtkStylizeFeatureStrokes&) = delete;
   void operator=(const vtkStylizeFeatureStrokes&) = delete;
 
-  /** Sets up the visibility of the lines of `data` (a cached surface) for this frame. */
-  void SetVisibility(vtkStylizeLineVisibility* vis, vtkPolyData* data, vtkMatrix4x4* matrix,
-    const View& view, bool depthBuffer);
+  /** Uploads the coverage of the last Rasterize() into the texture. */
+  vtkTextureObject* UploadCoverage(vtkOpenGLRenderWindow* window);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -238,7 +238,7 @@ void vtkStylizeStylePass::RestorePatternAnchors()
 }
 
 //------------------------------------------------------------------------------
-int vtkStylizeStylePass::GetTranslucentLayer()
+int vtkStylizeStylePass::GetTranslucentLayer() const
 {
   return this->Internals->Layer;
 }

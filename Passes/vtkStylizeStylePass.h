@@ -220,6 +220,7 @@ public:
 
 protected:
   friend class vtkStylizeDirectionField;
+  friend class vtkStylizeFeatureStrokes;
 
   /** `lightingModel`: the style's default lighting model (vtkStylizeLightingPass::Models). */
   explicit vtkStylizeStylePass(int lightingModel);
@@ -353,7 +354,7 @@ protected:
   bool RenderScene(const vtkRenderState* s, const SceneRequest& request);
 
   /** The translucent layer RenderStyle() is stylizing: 0 for the opaque scene, 1 the nearest. */
-  int GetTranslucentLayer();
+  int GetTranslucentLayer() const;
 
   /** Ends a frame: draws what follows the stylized image (translucent geometry, volumes, the
    * overlay), then checks GL errors. */

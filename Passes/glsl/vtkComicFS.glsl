@@ -3,6 +3,7 @@
 //   COMIC_STAGE_EDGES   first stage of the colour-edge path: writes f_normal and k1, k2
 //   COMIC_STAGE_COMPOSITE the composite stage: edges, pattern and ink into the output
 //   COMIC_DEPTH_EDGES, COMIC_NORMAL_EDGES, COMIC_COLOR_EDGES   the enabled edge phases
+//   COMIC_FEATURE_LINES   the feature lines' ink (vtkStylizeFeatureStrokes) with the edges
 //   COMIC_DOTS, COMIC_HATCH, COMIC_CROSS                       the enabled patterns
 //   COMIC_OBJECT_ANCHOR   patterns anchored to the object-space position, not the screen
 //   COMIC_HATCH_PRINCIPAL hatch lines around the form, along the principal direction field
@@ -18,6 +19,7 @@
 // pixels-per-point factor on the CPU, so the shader is resolution-free.
 
 uniform sampler2D comicEdgeTexture;          // stage 1 output: luminance of f_normal, k1, k2
+uniform sampler2D comicFeatureInk;           // COMIC_FEATURE_LINES: the strokes' ink in [0, 1]
 
 uniform ivec2 comicSize;           // viewport size (pixels)
 uniform vec2 comicPixelOffset;     // this tile's offset in the full image (pixels)
@@ -247,6 +249,9 @@ void comicMain()
 #elif defined(COMIC_DEPTH_EDGES) || defined(COMIC_NORMAL_EDGES)
   vec2 k = comicGeometryEdges(p);
   e = k.x * (comicEdgeWeights.x + k.y * (comicEdgeWeights.y + comicEdgeWeights.z));
+#endif
+#ifdef COMIC_FEATURE_LINES
+  e *= 1.0 - clamp(texelFetch(comicFeatureInk, p, 0).r, 0.0, 1.0);
 #endif
 
   // ---- pattern coordinates (computed for every pixel: derivatives need uniform control flow)

@@ -29,7 +29,9 @@ void lineArtMain()
   float level = min(floor(tone * float(lineArtToneLevels)), top);
   paper *= mix(lineArtToneDarkest, 1.0, level / top);
 #endif
-  vec3 under = background ? stylizeSaturateFinite(image.rgb) : paper;
+  // Lines and points (no linear depth) are the user's own lines: drawn in ink.
+  bool surface = texelFetch(stylizeLinearDepthTexture, p, 0).r > 0.0;
+  vec3 under = background ? stylizeSaturateFinite(image.rgb) : (surface ? paper : lineArtInkColor);
 #if LINE_ART_LAYER == 1
   ink = 0.0;
 #endif

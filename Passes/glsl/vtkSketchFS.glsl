@@ -57,6 +57,7 @@ uniform vec2 sketchBright;       // t1, t2
 uniform float sketchCross;       // cross-hatching below this tone
 uniform vec3 sketchPencil;
 uniform vec3 sketchPaper;
+uniform sampler2D sketchFeatureInk; // SKETCH_FEATURE_LINES: the strokes' ink in [0, 1]
 
 // The four pixels around continuous pixel position f (taps, their field entries) and their
 // bilinear weights, a weight 0 where the pixel is not on the stroke's surface: no field there,
@@ -302,11 +303,17 @@ void sketchMain()
 #elif SKETCH_LAYER == 3
   result = surface ? vec3(tone) : colour;
 #endif
-  if (stylizeDiscardBackground == 1 && background)
+  float ink = 0.0;
+#ifdef SKETCH_FEATURE_LINES
+  // the feature lines in pencil, over the strokes and the background
+  ink = clamp(texelFetch(sketchFeatureInk, p, 0).r, 0.0, 1.0);
+  result = mix(result, sketchPencil, ink);
+#endif
+  if (stylizeDiscardBackground == 1 && background && ink <= 0.0)
   {
     discard;
   }
-  gl_FragData[0] = stylizeOutput(background, result, image.a, 0.0);
+  gl_FragData[0] = stylizeOutput(background, result, image.a, ink);
   gl_FragDepth = stylizeWindowDepth(depth);
 }
 #endif

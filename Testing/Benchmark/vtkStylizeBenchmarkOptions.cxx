@@ -29,7 +29,8 @@ const std::vector<std::string>& AllConfigs()
     "pixel-faithful-8", "sketch-2", "sketch-4", "sketch-8", "sketch-8-stage", "comic-image",
     "pixel-image", "sketch-image", "comic-nocull", "sketch-8-nocull", "comic-interactive",
     "sketch-8-interactive", "pixel-faithful-4-interactive", "plain-translucent",
-    "comic-translucent", "pixel-faithful-4-translucent", "sketch-8-translucent" };
+    "comic-translucent", "pixel-faithful-4-translucent", "sketch-8-translucent", "lines",
+    "vtk-lines", "lines-interactive" };
   return configs;
 }
 

@@ -78,6 +78,10 @@ struct Bench
       this->Renderer->SetOcclusionRatio(0.0);
     }
     this->Renderer->AddActor(actor);
+    if (this->Passes.AddProps)
+    {
+      this->Passes.AddProps(this->Renderer, actor);
+    }
     if (this->Passes.Root)
     {
       this->Renderer->SetPass(this->Passes.Root);
@@ -273,6 +277,10 @@ void RunAll(const Options& opt, const std::vector<vtkSmartPointer<vtkPolyData>>&
     for (auto& b : benches)
     {
       b->Mapper->SetInputData(mesh);
+      if (b->Passes.SetMesh)
+      {
+        b->Passes.SetMesh(mesh);
+      }
       b->Renderer->ResetCamera();
       b->Initial->DeepCopy(b->Renderer->GetActiveCamera());
     }

@@ -2,17 +2,23 @@
 
 #include "vtkStylizeBenchmarkScenes.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkComicPass.h"
 #include "vtkContourFilter.h"
 #include "vtkEDLShading.h"
+#include "vtkFeatureEdges.h"
+#include "vtkLineArtPass.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPLYReader.h"
 #include "vtkPixelArtPass.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
+#include "vtkPolyDataSilhouette.h"
+#include "vtkProperty.h"
 #include "vtkRTAnalyticSource.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
@@ -304,6 +310,61 @@ ConfigPasses MakeSketchConfig(const std::string& name)
   return c;
 }
 
+/**
+ * lines: vtkLineArtPass with its defaults. vtk-lines: VTK's own line tools on the same mesh, over
+ * VTK's default rendering: vtkPolyDataSilhouette (the contour edges for the camera, recomputed
+ * as it moves) and vtkFeatureEdges (boundaries and edges sharper than 40 degrees, as the line
+ * art's creases), drawn 2 pixels wide in black.
+ */
+ConfigPasses MakeLinesConfig(const std::string& name)
+{
+  ConfigPasses c;
+  if (name == "lines")
+  {
+    c.Root = vtkSmartPointer<vtkLineArtPass>::New();
+    c.Description = "vtkLineArtPass, defaults (every kind of line, hidden lines removed)";
+    return c;
+  }
+  auto silhouette = vtkSmartPointer<vtkPolyDataSilhouette>::New();
+  silhouette->SetDirectionToCameraOrigin();
+  silhouette->BorderEdgesOff();
+  auto edges = vtkSmartPointer<vtkFeatureEdges>::New();
+  edges->SetFeatureAngle(40.0);
+  edges->BoundaryEdgesOn();
+  edges->FeatureEdgesOn();
+  edges->NonManifoldEdgesOff();
+  edges->ManifoldEdgesOff();
+  edges->ColoringOff();
+  c.AddProps = [silhouette, edges](vtkRenderer* ren, vtkActor* surface)
+  {
+    silhouette->SetCamera(ren->GetActiveCamera());
+    silhouette->SetProp3D(surface);
+    for (vtkAlgorithm* lines :
+      { static_cast<vtkAlgorithm*>(silhouette), static_cast<vtkAlgorithm*>(edges) })
+    {
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputConnection(lines->GetOutputPort());
+      mapper->ScalarVisibilityOff();
+      // lines drawn over the surface they lie on
+      mapper->SetResolveCoincidentTopologyToPolygonOffset();
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetColor(0.0, 0.0, 0.0);
+      actor->GetProperty()->SetLineWidth(2.0);
+      actor->GetProperty()->LightingOff();
+      ren->AddActor(actor);
+    }
+  };
+  c.SetMesh = [silhouette, edges](vtkPolyData* mesh)
+  {
+    silhouette->SetInputData(mesh);
+    edges->SetInputData(mesh);
+  };
+  c.Description = "VTK's default rendering with vtkPolyDataSilhouette and vtkFeatureEdges (40 "
+                  "degrees, boundaries) drawn 2 px wide";
+  return c;
+}
+
 /** A configuration without a suffix (-nocull, -translucent, -interactive). */
 ConfigPasses MakeBaseConfig(const std::string& name, double diagonal)
 {
@@ -328,6 +389,10 @@ ConfigPasses MakeBaseConfig(const std::string& name, double diagonal)
   if (name == "comic" || name == "comic-geometric")
   {
     return MakeComicConfig(name);
+  }
+  if (name == "lines" || name == "vtk-lines")
+  {
+    return MakeLinesConfig(name);
   }
   if (name == "comic-image" || name == "pixel-image" || name == "sketch-image")
   {

@@ -11,9 +11,11 @@
 #include "vtkRenderPass.h"
 #include "vtkSmartPointer.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
+class vtkActor;
 class vtkPolyData;
 class vtkRenderer;
 
@@ -52,6 +54,10 @@ struct ConfigPasses
   vtkSmartPointer<vtkRenderPass> Root; // set on the renderer; nullptr for "plain"
   std::vector<vtkSmartPointer<vtkRenderPass>> Keep;
   std::string Description;
+  /** Props beside the mesh's actor (VTK's line tools), added once with that actor; may be null. */
+  std::function<void(vtkRenderer*, vtkActor*)> AddProps;
+  /** Gives those props each scene's mesh; may be null. */
+  std::function<void(vtkPolyData*)> SetMesh;
 };
 
 /**

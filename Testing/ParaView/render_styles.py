@@ -7,7 +7,7 @@ With HOST:PORT it connects to a pvserver (pvserver-stylize) first: "remote" forc
 rendering (the server renders and composites, the client receives the image), "local" makes
 the client render the delivered geometry itself.
 
-Writes OUTPUT_PREFIX-none.png, -comic.png, -pixel.png and -sketch.png, then -comic-subject.png
+Writes OUTPUT_PREFIX-none.png, -comic.png, -pixel.png, -sketch.png and -lines.png, then -comic-subject.png
 (comic with the display as a Stylized Surface whose own subject factor is 1: per-representation
 lighting, which every rank must apply to its piece) and -sketch-model.png (the sketch along the
 Principal Curvatures filter's directions, DirectionSource Model), and prints one line
@@ -42,7 +42,7 @@ print("ranks %d pieces %d points %d" % (servermanager.ActiveConnection.GetNumber
 
 display = show_framed(contour, view)
 
-for style, name in enumerate(["none", "comic", "pixel", "sketch"]):
+for style, name in enumerate(["none", "comic", "pixel", "sketch", "lines"]):
     view.Style = style
     Render(view)
     SaveScreenshot("%s-%s.png" % (prefix, name), view, ImageResolution=size)

@@ -129,7 +129,7 @@ def run():
     check(style is not None, "view property Style exists")
     entries = [style.GetDomain("enum").GetEntryText(i)
                for i in range(style.GetDomain("enum").GetNumberOfEntries())]
-    check(entries == ["None", "Comic", "Pixel art", "Sketch"], "Style entries %s" % entries)
+    check(entries == ["None", "Comic", "Pixel art", "Sketch", "Line art"], "Style entries %s" % entries)
     for name in ["ComicEdgeWidth", "ComicDots", "ComicHatching", "PixelArtPixelSize",
                  "SketchStepLength", "LightingSubjectFactor"]:
         check(view.GetProperty(name) is not None, "view property %s exists" % name)

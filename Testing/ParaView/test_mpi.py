@@ -17,8 +17,10 @@ and depth. With 1 rank there is no compositing. Tolerances, from what differs an
   the sketch on 1 and on 2 ranks (at least 1000 pixels beyond 16 levels). (It differed by 1.6%
   while the G-buffer blended its direction channel with what the pixel held before: a rank's piece
   is drawn in another order than the whole contour; measured 0.02% since.)
-- comic (and comic-subject), pixel art, sketch: at most 0.5% of the pixels more than 16 levels
-  apart, SSIM >= 0.99. The ranks' normals reach the style composited by depth
+- comic (and comic-subject), pixel art, sketch, line art: at most 0.5% of the pixels more than 16
+  levels apart, SSIM >= 0.99. The feature lines (line art, the comic's and the sketch's line
+  phase) of each rank's pieces are tested against the composited depth, with the whole data's
+  thresholds, and their ink combined on rank 0. The ranks' normals reach the style composited by depth
   (vtkStylizeGBufferPass::SetChannelSource), and IceT's transparent background is taken as the
   view's background by the stages that read colour across a silhouette (Canny, the sketch's
   tone blur; vtkStylizeGBufferPass::SetImageBackground), so the picture is the one rank's
@@ -75,7 +77,7 @@ if len(info2) < 4 or int(info2[3]) != 2:
 M = vtkStylizeImageMetrics
 print("| style | SSIM | max difference | pixels > 16 levels | PSNR dB |")
 print("|---|---:|---:|---:|---:|")
-for name in ["none", "comic", "pixel", "sketch", "comic-subject", "sketch-model"]:
+for name in ["none", "comic", "pixel", "sketch", "lines", "comic-subject", "sketch-model"]:
     a = read("%s-%s.png" % (one, name))
     b = read("%s-%s.png" % (two, name))
     dims = a.GetDimensions()
@@ -114,7 +116,7 @@ for prefix, ranks in [(one, 1), (two, 2)]:
                         % (ranks, model_change))
 
 if baselines:
-    for name in ["none", "comic", "pixel", "sketch"]:
+    for name in ["none", "comic", "pixel", "sketch", "lines"]:
         image = "%s-%s.png" % (one, name)
         baseline = os.path.join(baselines, "paraview.%s.png" % name)
         if not os.path.exists(baseline):

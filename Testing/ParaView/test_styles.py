@@ -4,7 +4,7 @@
 
 Checks that the view and its properties exist with their ranges and tooltips, renders each
 style and checks the images (each differs from ParaView's own, comic is gray, pixel art is made
-of whole art pixels), and that a Stylized Surface representation's subject factor changes
+of whole art pixels, line art is gray ink on white paper), and that a Stylized Surface representation's subject factor changes
 only that representation's comic lighting.
 """
 import os
@@ -27,7 +27,7 @@ view.Background = [1.0, 1.0, 1.0]
 style = view.GetProperty("Style")
 entries = [style.GetDomain("enum").GetEntryText(i)
            for i in range(style.GetDomain("enum").GetNumberOfEntries())]
-check(entries == ["None", "Comic", "Pixel art", "Sketch"], "Style entries %s" % entries)
+check(entries == ["None", "Comic", "Pixel art", "Sketch", "Line art"], "Style entries %s" % entries)
 for name, low, high in [("ComicEdgeWidth", None, None), ("PixelArtPixelSize", None, None),
                         ("SketchStepLength", None, None), ("LightingSubjectFactor", 0.0, 1.0)]:
     prop = view.GetProperty(name)
@@ -60,7 +60,7 @@ view.CameraViewUp = [0.0, 0.0, 1.0]
 view.ResetCamera()
 
 images = {}
-for index, name in enumerate(["none", "comic", "pixel", "sketch"]):
+for index, name in enumerate(["none", "comic", "pixel", "sketch", "lines"]):
     view.Style = index
     Render(view)
     path = os.path.join(out, "styles-%s.png" % name)
@@ -72,13 +72,18 @@ def mean_difference(a, b):
     return sum(abs(x - y) for p, q in zip(a, b) for x, y in zip(p, q)) / (3.0 * len(a))
 
 
-for name in ["comic", "pixel", "sketch"]:
+for name in ["comic", "pixel", "sketch", "lines"]:
     d = mean_difference(images["none"][1], images[name][1])
     check(d > 5.0, "%s differs from ParaView's image (mean %.1f levels)" % (name, d))
 # comic: black and white (gray) where the object is; the none image is coloured there
 chroma = max(max(p) - min(p) for p in images["comic"][1])
 none_chroma = max(max(p) - min(p) for p in images["none"][1])
 check(chroma <= 2 and none_chroma > 50, "comic is gray (chroma %d; none %d)" % (chroma, none_chroma))
+# line art: gray ink on white paper (lines thinner than a pixel at this size: light ink)
+lines = images["lines"][1]
+paper = sum(1 for p in lines if min(p) > 240)
+check(max(max(p) - min(p) for p in lines) <= 2 and 500 < len(lines) - paper < 0.2 * len(lines),
+      "line art is ink on paper (%d paper of %d pixels)" % (paper, len(lines)))
 # pixel art: colours change only on the art-pixel grid (4 px by default): blocks are uniform
 (w, h, _), art = images["pixel"]
 size = int(view.PixelArtPixelSize[0] if hasattr(view.PixelArtPixelSize, "__len__")

@@ -10,7 +10,9 @@ black and makes transparent what differs). Checked per style:
 - the transparent image composited over the view's background is the opaque image: at most
   0.05% of the pixels more than 16 levels apart (measured: 0, 0, 5 and 5 pixels of 120,000);
 - what became transparent is the background: the transparent pixels number the opaque image's
-  background-coloured pixels within 0.05%, and no pixel is partly transparent beyond that;
+  background-coloured pixels within 0.05%, and no background-coloured pixel is partly
+  transparent beyond that (a partly transparent pixel is ink over the background: the sketch's
+  feature lines reach half their width beyond the silhouette, anti-aliased);
 - the view is left as it was: an opaque screenshot after it equals the first exactly.
 
 Before (ParaView 5.11 renders the style over white and over black, and the style's ink followed
@@ -45,14 +47,17 @@ for name in ["comic", "pixel", "sketch", "sketch-tinted"]:
     composited = transparent[:, :, :3] * alpha + background * (1.0 - alpha)
     far = int((np.abs(composited - opaque).max(axis=2) > 16).sum())
     clear = int((alpha[:, :, 0] == 0).sum())
-    partial = int(((alpha[:, :, 0] > 0) & (alpha[:, :, 0] < 1)).sum())
-    ground = int((np.abs(opaque - background).max(axis=2) <= 1).sum())
+    ground_mask = np.abs(opaque - background).max(axis=2) <= 1
+    partial_mask = (alpha[:, :, 0] > 0) & (alpha[:, :, 0] < 1)
+    partial = int(partial_mask.sum())
+    partial_ground = int((partial_mask & ground_mask).sum())
+    ground = int(ground_mask.sum())
     print("| %s | %d | %d | %d | %d |" % (name, far, clear, ground, partial))
     if far > 0.0005 * pixels:
         failures.append("%s: %d pixels differ from the opaque screenshot" % (name, far))
-    if abs(clear - ground) > 0.0005 * pixels or partial > 0.0005 * pixels:
-        failures.append("%s: %d transparent and %d partly transparent pixels for %d background"
-                        % (name, clear, partial, ground))
+    if abs(clear - ground) > 0.0005 * pixels or partial_ground > 0.0005 * pixels:
+        failures.append("%s: %d transparent and %d partly transparent background pixels for %d "
+                        "background" % (name, clear, partial_ground, ground))
     if np.abs(after - opaque).max() > 0:
         failures.append("%s: the view did not come back to its opaque picture" % name)
 for f in failures:

@@ -6,12 +6,12 @@ the .svg and .pdf figures (vtkStylizeFigureWriter), rasterizes the figures back 
 size with Debian's rasterizers (rsvg-convert for SVG, pdftocairo for PDF) and compares them with
 the PNG. It prints one row per figure: file size, the time vtkstylize took, the rasterizer's
 time (a viewer opening it), SSIM and the pixels that differ. With --check it fails (exit 1)
-unless comic and sketch reach SSIM >= 0.95 and pixel art is identical (0 pixels differ), and
+unless comic, sketch and line art reach SSIM >= 0.95 and pixel art is identical (0 pixels differ), and
 unless the figures hold vector content (dots, hatch lines, traced outlines, rectangles) rather
-than one image.
+than one image (line art: its strokes as stroked paths from the geometry).
 
 usage: figures.py VTKSTYLIZE DATADIR OUTDIR [--check] [--meshes a,b] [--size WxH]
-                  [--styles comic,pixel,sketch] [--annotations]
+                  [--styles comic,pixel,sketch,lines] [--annotations]
 """
 import os
 import re
@@ -57,7 +57,7 @@ def vector_content(figure):
 def main():
     parser = realdata.argument_parser(__doc__)
     parser.add_argument("--meshes", default="bunny,fandisk,rotor,vessel")
-    parser.add_argument("--styles", default="comic,pixel,sketch")
+    parser.add_argument("--styles", default="comic,pixel,sketch,lines")
     parser.add_argument("--size", default="800x600")
     parser.add_argument("--annotations", action="store_true",
                         help="keep the title (vector text; compared like the rest)")
@@ -95,7 +95,7 @@ def main():
                 if style != "pixel" and ssim < SSIM_MIN:
                     failures.append("%s: SSIM %.4f < %.2f" % (name, ssim, SSIM_MIN))
                 if fmt == "svg":
-                    need = {"comic": 50, "pixel": 2, "sketch": 1}[style]
+                    need = {"comic": 50, "pixel": 2, "sketch": 1, "lines": 10}[style]
                     if paths < need:
                         failures.append("%s: %d vector paths (at least %d expected)" % (name, paths, need))
                     if style != "sketch" and images > 0:

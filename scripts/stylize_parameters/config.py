@@ -129,6 +129,7 @@ CLI_COMIC = [
      {"fixed": "FIXED", "principal": "PRINCIPAL"}),
     ("Edges", "--no-edges", None), ("Dots", "--no-dots", None), ("Hatching", "--no-hatching", None),
     ("CrossHatching", "--no-cross", None), ("Tinted", "--tinted", None),
+    ("FeatureLines", "--feature-lines", None), ("FeatureLineWidth", "--feature-line-width", "PT"),
 ]
 CLI_PIXEL = [
     ("LowThreshold", "--low-threshold", "T"), ("HighThreshold", "--high-threshold", "T"),
@@ -175,6 +176,7 @@ CLI_SKETCH = [
     ("PencilColor", "--pencil", "COLOR"), ("PaperColor", "--paper", "COLOR"),
     ("CrossHatching", "--no-cross", None), ("Tinted", "--tinted", None),
     ("ReferenceHeight", "--reference-height", "PX"),
+    ("FeatureLines", "--no-feature-lines", None), ("FeatureLineWidth", "--feature-line-width", "PT"),
 ]
 CLI_LINES = [
     ("ContourWidth", "--contour-width", "PT"), ("CreaseWidth", "--crease-width", "PT"),
