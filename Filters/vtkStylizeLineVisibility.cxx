@@ -16,6 +16,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
@@ -195,6 +196,45 @@ public:
     return occluder >= z - std::max(world, this->Tolerance * this->View.PixelSize(z));
   }
 
+  /**
+   * Whether a sample of a boundary at window position win, the boundary running along screen
+   * direction (dx, dy), lies inside the surface: the depth two pixels to each side of it is a
+   * surface within tolerance of the sample's (the seam between two pieces of one surface, not
+   * an edge of the object).
+   */
+  bool Seam(const double win[3], double dx, double dy) const
+  {
+    const double len = std::hypot(dx, dy);
+    if (!(len > 0.0))
+    {
+      return false;
+    }
+    const double nx = -dy / len, ny = dx / len;
+    const double z = this->View.EyeDepth(win[2]);
+    const double tolerance =
+      std::max(this->WorldTolerance, 2.0 * this->Tolerance * this->View.PixelSize(z));
+    for (double side : { -2.0, 2.0 })
+    {
+      const int i = static_cast<int>(std::floor(win[0] + side * nx));
+      const int j = static_cast<int>(std::floor(win[1] + side * ny));
+      if (i < 0 || j < 0 || i >= this->View.Width || j >= this->View.Height)
+      {
+        return false;
+      }
+      const double d = this->Depth[static_cast<size_t>(j) * this->View.Width + i];
+      if (this->ViewDepth ? !(d > 0.0 && d < VTK_DOUBLE_MAX) : !(d < 1.0))
+      {
+        return false; // background on that side: the object's edge
+      }
+      const double there = this->ViewDepth ? d : this->View.EyeDepth(d);
+      if (std::abs(there - z) > tolerance)
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+
 private:
   const Tester& View;
   double Tolerance;
@@ -321,19 +361,31 @@ public:
     this->CellVisibility->SetName("FeatureVisibility");
   }
 
-  /** Polyline `cell` (n points ids) sampled every `spacing` pixels of the view. */
-  template <class Visible>
-  void Split(vtkIdType cell, vtkIdType n, const vtkIdType* ids, const Tester& view, double spacing,
-    Visible visible)
+  /** Where a polyline's visibility changes: its first sample's, then each change. */
+  struct Changes
   {
+    bool First = false;
+    std::vector<std::pair<vtkIdType, double>> Cuts; // (segment, parameter along it)
+  };
+
+  /**
+   * The visibility along polyline `ids` (n points) sampled every `spacing` pixels of the view,
+   * each change located by bisection. Reads only: polylines may be traced in parallel.
+   */
+  template <class Visible>
+  Changes Trace(
+    vtkIdType n, const vtkIdType* ids, const Tester& view, double spacing, Visible visible) const
+  {
+    Changes c;
     if (n < 2)
     {
-      return;
+      return c;
     }
-    double p0[3];
+    double p0[3], p1[3];
     this->Input->GetPoint(ids[0], p0);
-    bool current = visible(p0);
-    this->Add(ids[0], ids[1], 0.0, current);
+    this->Input->GetPoint(ids[1], p1);
+    bool current = visible(p0, p0, p1);
+    c.First = current;
     for (vtkIdType s = 0; s + 1 < n; ++s)
     {
       const vtkIdType a = ids[s], b = ids[s + 1];
@@ -353,7 +405,7 @@ public:
         const double t = static_cast<double>(k) / samples;
         double p[3];
         this->At(a, b, t, p);
-        const bool vis = visible(p);
+        const bool vis = visible(p, pa, pb);
         if (vis != current)
         {
           // The change located by bisection between the two samples.
@@ -363,15 +415,36 @@ public:
             const double mid = 0.5 * (lo + hi);
             double q[3];
             this->At(a, b, mid, q);
-            (visible(q) == current ? lo : hi) = mid;
+            (visible(q, pa, pb) == current ? lo : hi) = mid;
           }
-          const double cut = 0.5 * (lo + hi);
-          this->Add(a, b, cut, current);
-          this->EndRun(cell, current);
+          c.Cuts.emplace_back(s, 0.5 * (lo + hi));
           current = vis;
-          this->Add(a, b, cut, current);
         }
         previous = t;
+      }
+    }
+    return c;
+  }
+
+  /** Polyline `cell` cut into runs at its changes, into the output. */
+  void Emit(vtkIdType cell, vtkIdType n, const vtkIdType* ids, const Changes& c)
+  {
+    if (n < 2)
+    {
+      return;
+    }
+    bool current = c.First;
+    this->Add(ids[0], ids[1], 0.0, current);
+    size_t k = 0;
+    for (vtkIdType s = 0; s + 1 < n; ++s)
+    {
+      const vtkIdType a = ids[s], b = ids[s + 1];
+      for (; k < c.Cuts.size() && c.Cuts[k].first == s; ++k)
+      {
+        this->Add(a, b, c.Cuts[k].second, current);
+        this->EndRun(cell, current);
+        current = !current;
+        this->Add(a, b, c.Cuts[k].second, current);
       }
       this->Add(a, b, 1.0, current);
     }
@@ -550,24 +623,65 @@ int vtkStylizeLineVisibility::RequestData(
   }
   // Lines without a FeatureKind count as contours (the WorldTolerance applies to them).
   vtkDataArray* kinds = input->GetCellData()->GetArray("FeatureKind");
-  bool contour = true;
-  auto visible = [&](const double p[3]) -> bool
+  auto visible = [&](const double p[3], const double a[3], const double b[3], bool contour,
+                   bool boundary) -> bool
   {
     double win[3];
     if (!view.Project(p, win) || !view.InView(win))
     {
       return false;
     }
-    return this->Method == DEPTH_BUFFER ? depth.Visible(win, contour) : rays.Visible(p, win);
+    if (this->Method == RAY_CAST)
+    {
+      return rays.Visible(p, win);
+    }
+    if (!depth.Visible(win, contour))
+    {
+      return false;
+    }
+    double wa[3], wb[3];
+    return !(boundary && this->HideSeams && view.Project(a, wa) && view.Project(b, wb) &&
+      depth.Seam(win, wb[0] - wa[0], wb[1] - wa[1]));
   };
-  Splitter splitter(input, output, this->VisibleOnly);
-  vtkIdType cell = 0, n;
-  const vtkIdType* ids;
-  vtkCellArray* lines = input->GetLines();
-  for (lines->InitTraversal(); lines->GetNextCell(n, ids); ++cell)
+  // The polylines (copied: a cell array may hand out a reused buffer), traced (in parallel
+  // against a depth image), emitted in order: the output does not depend on the thread count.
+  std::vector<vtkIdType> offsets(1, 0), ids;
   {
-    contour = !kinds || kinds->GetTuple1(cell) == 0.0;
-    splitter.Split(cell, n, ids, view, this->SampleSpacing, visible);
+    vtkIdType n;
+    const vtkIdType* cellIds;
+    vtkCellArray* lines = input->GetLines();
+    for (lines->InitTraversal(); lines->GetNextCell(n, cellIds);)
+    {
+      ids.insert(ids.end(), cellIds, cellIds + n);
+      offsets.push_back(static_cast<vtkIdType>(ids.size()));
+    }
+  }
+  const vtkIdType cells = static_cast<vtkIdType>(offsets.size()) - 1;
+  Splitter splitter(input, output, this->VisibleOnly);
+  std::vector<Splitter::Changes> changes(static_cast<size_t>(cells));
+  auto trace = [&](vtkIdType begin, vtkIdType end)
+  {
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      const double kind = kinds ? kinds->GetTuple1(c) : 0.0;
+      const bool contour = kind == 0.0, boundary = kinds && kind == 1.0;
+      changes[c] = splitter.Trace(offsets[c + 1] - offsets[c], ids.data() + offsets[c], view,
+        this->SampleSpacing,
+        [&](const double p[3], const double a[3], const double b[3])
+        { return visible(p, a, b, contour, boundary); });
+    }
+  };
+  if (this->Method == DEPTH_BUFFER)
+  {
+    vtkSMPTools::For(0, cells, trace);
+  }
+  else
+  {
+    trace(0, cells); // VTK 9.1's BSP tree is not safe to query from several threads
+  }
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    splitter.Emit(c, offsets[c + 1] - offsets[c], ids.data() + offsets[c], changes[c]);
   }
   splitter.Finish();
   return 1;
@@ -587,5 +701,6 @@ void vtkStylizeLineVisibility::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "DepthTolerance: " << this->DepthTolerance << "\n";
   os << indent << "WorldTolerance: " << this->WorldTolerance << "\n";
+  os << indent << "HideSeams: " << this->HideSeams << "\n";
   os << indent << "VisibleOnly: " << this->VisibleOnly << "\n";
 }

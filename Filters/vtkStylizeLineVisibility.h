@@ -137,6 +137,18 @@ public:
   ///@}
 
   ///@{
+  /**
+   * DEPTH_BUFFER: hide the parts of boundaries (cell FeatureKind 1) across which the depth
+   * buffer shows the surface going on at the same depth on both sides: the seam between two
+   * pieces of one surface (the ranks' pieces in ParaView, the blocks of a partitioned dataset),
+   * not an edge of the object. Default on.
+   */
+  vtkSetMacro(HideSeams, bool);
+  vtkGetMacro(HideSeams, bool);
+  vtkBooleanMacro(HideSeams, bool);
+  ///@}
+
+  ///@{
   /** Keep only the visible runs. Default off. */
   vtkSetMacro(VisibleOnly, bool);
   vtkGetMacro(VisibleOnly, bool);
@@ -161,6 +173,7 @@ protected:
   double SampleSpacing = 0.25;
   double DepthTolerance = 2.0;
   double WorldTolerance = 0.0;
+  bool HideSeams = true;
   bool VisibleOnly = false;
 
 private:

@@ -1,5 +1,6 @@
 #include "vtkLineArtPass.h"
 
+#include "vtkComicPatterns.h"
 #include "vtkFloatArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
@@ -146,6 +147,11 @@ bool vtkLineArtPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
   }
   std::string defines;
   AddDefine(defines, this->Tone == SHADES, "LINE_ART_SHADES");
+  AddDefine(defines, this->Tone == DOTS, "LINE_ART_DOTS");
+  if (this->Tone == DOTS)
+  {
+    defines += vtkComicPatterns::ShaderDefines(); // the comic's dot, shared
+  }
   defines += "#define LINE_ART_LAYER " + std::to_string(this->Layer) + "\n";
   this->SetShaderDefines(defines);
 
@@ -174,7 +180,9 @@ bool vtkLineArtPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
         .Float3("lineArtInkColor", this->InkColor[0], this->InkColor[1], this->InkColor[2])
         .Float3("lineArtPaperColor", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2])
         .Int("lineArtToneLevels", this->ToneLevels)
-        .Float("lineArtToneDarkest", this->ToneDarkest);
+        .Float("lineArtToneDarkest", this->ToneDarkest)
+        .Float("lineArtDotSpacing", this->DotSpacing * this->PointSize(frame))
+        .Float2("lineArtPixelOffset", frame.FullOffset[0], frame.FullOffset[1]);
       this->SetSceneOutputUniforms(u, frame.Renderer);
     },
     margin);
@@ -209,7 +217,10 @@ void vtkLineArtPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CreaseAngle: " << this->CreaseAngle << " deg\n";
   os << indent << "RidgeThreshold: " << this->RidgeThreshold << "\n";
   os << indent << "SuggestiveThreshold: " << this->SuggestiveThreshold << "\n";
-  os << indent << "Tone: " << (this->Tone == SHADES ? "shades" : "none") << "\n";
+  os << indent
+     << "Tone: " << (this->Tone == DOTS ? "dots" : (this->Tone == SHADES ? "shades" : "none"))
+     << "\n";
+  os << indent << "DotSpacing: " << this->DotSpacing << " pt\n";
   os << indent << "ToneLevels: " << this->ToneLevels << "\n";
   os << indent << "ToneDarkest: " << this->ToneDarkest << "\n";
   os << indent << "InkColor: " << this->InkColor[0] << " " << this->InkColor[1] << " "

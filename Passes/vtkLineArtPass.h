@@ -134,16 +134,18 @@ public:
   /** The paper under the ink. */
   enum Tones
   {
-    NONE = 0,  ///< plain paper
-    SHADES = 1 ///< the lit tone in ToneLevels flat shades
+    NONE = 0,   ///< plain paper
+    SHADES = 1, ///< the lit tone in ToneLevels flat shades
+    DOTS = 2    ///< the lit tone as the comic's halftone dots
   };
 
   ///@{
   /**
    * The paper under the ink: NONE (default), plain paper; SHADES, the lit tone in ToneLevels
-   * flat shades from the paper down to ToneDarkest.
+   * flat shades from the paper down to ToneDarkest; DOTS, the lit tone as the comic's halftone
+   * dots (vtkComicPass's, DotSpacing apart at 45 degrees, in the ink's colour).
    */
-  vtkSetClampMacro(Tone, int, NONE, SHADES);
+  vtkSetClampMacro(Tone, int, NONE, DOTS);
   vtkGetMacro(Tone, int);
   ///@}
 
@@ -160,6 +162,12 @@ public:
    */
   vtkSetClampMacro(ToneDarkest, double, 0.0, 1.0);
   vtkGetMacro(ToneDarkest, double);
+  ///@}
+
+  ///@{
+  /** Tone DOTS: the dots' spacing (the screen period), in points. Range [2, 200], default 8. */
+  vtkSetClampMacro(DotSpacing, double, 2.0, 200.0);
+  vtkGetMacro(DotSpacing, double);
   ///@}
 
   ///@{
@@ -240,6 +248,7 @@ protected:
   int Tone = NONE;
   int ToneLevels = 3;
   double ToneDarkest = 0.6;
+  double DotSpacing = 8.0;
   double InkColor[3] = { 0.0, 0.0, 0.0 };
   double PaperColor[3] = { 1.0, 1.0, 1.0 };
   double ReferenceHeight = 1080.0;

@@ -63,8 +63,10 @@ images=(
   "sketch-directions-model|$sketch --sketch-layer directions --direction-source model"
   "sketch-strokes|$sketch --sketch-layer strokes"
   "sketch-bisector|$sketch --direction bisector"
+  "lines-scene|--style lines --size 960x540"
+  "lines-shades-hexes|--style lines --tone shades --size 960x540 $cli/hexes.vtu"
 )
-for style in comic pixel sketch; do
+for style in comic pixel sketch lines; do
   for mesh in bunny fandisk cow; do
     images+=("real-$mesh-$style|--style $style --size 640x360 $real/$mesh.ply")
   done
@@ -87,11 +89,14 @@ if [ -x "$paraview" ]; then
   echo "$out/paraview-gui.png"
 fi
 
-# Feature lines with hidden lines removed (realdata.lines' drawings).
+# Feature lines with hidden lines removed (realdata.lines' drawings) and the line-art style
+# (realdata.lineart's pictures).
 for mesh in mannequin lion fandisk armadillo; do
-  lines="$build/Testing/RealData/lines/lines-$mesh.png"
-  if [ -f "$lines" ]; then
-    cp "$lines" "$out/lines-$mesh.png"
-    echo "$out/lines-$mesh.png"
-  fi
+  for kind in lines lineart; do
+    picture="$build/Testing/RealData/$kind/$kind-$mesh.png"
+    if [ -f "$picture" ]; then
+      cp "$picture" "$out/$kind-$mesh.png"
+      echo "$out/$kind-$mesh.png"
+    fi
+  done
 done

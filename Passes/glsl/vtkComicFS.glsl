@@ -165,41 +165,6 @@ void comicMain()
 
 #else
 
-// Rotates a 2D vector by the angle whose (cos, sin) is cs.
-vec2 comicRotate(vec2 v, vec2 cs)
-{
-  return vec2(cs.x * v.x - cs.y * v.y, cs.y * v.x + cs.x * v.y);
-}
-
-// Halftone dots (eq. 10): ink where the distance to the cell centre is below the radius whose
-// disc covers 1 - I of the cell (continuous in I), anti-aliased over aa cell units, keeping the
-// ink's area: the smooth edge adds 0.2 pi aa^2 to a disc, so the disc is drawn that much
-// smaller, and a dot smaller than the smooth edge is a blob of radius aa, lighter by its
-// excess (else the lightest tones would turn to gray specks where the cells are a few pixels
-// wide). 1 = paper.
-float comicDots(vec2 uv, float tone, float aa)
-{
-  vec2 f = fract(uv) - 0.5;
-  float d = length(f);
-  float coverage = clamp(1.0 - tone, 0.0, 1.0);
-  // disc area pi r^2 = coverage up to r = 0.5; then the corners fill until r = sqrt(0.5)
-  if (coverage > COMIC_DOT_DISC_COVERAGE)
-  {
-    float r = mix(COMIC_DOT_INSCRIBED_RADIUS, COMIC_DOT_CORNER_RADIUS,
-      (coverage - COMIC_DOT_DISC_COVERAGE) / COMIC_DOT_CORNER_COVERAGE);
-    return smoothstep(r - aa, r + aa, d);
-  }
-  float r2 = coverage / COMIC_PI;
-  float big = r2 - 0.2 * aa * aa;
-  if (big >= aa * aa)
-  {
-    float r = sqrt(big);
-    return smoothstep(r - aa, r + aa, d);
-  }
-  float scale = r2 / (1.2 * aa * aa);
-  return 1.0 - scale * (1.0 - smoothstep(0.0, 2.0 * aa, d));
-}
-
 // Hatch lines (eq. 11-12, reconstructed): u is the coordinate across the lines in spacing units;
 // the line is the band within half the width w (a fraction of the spacing) of an integer,
 // anti-aliased over aa spacing units; a line narrower than the smooth edge is a band of half
@@ -271,9 +236,9 @@ void comicMain()
 #endif
 #if defined(COMIC_DOTS) || defined(COMIC_HATCH)
 #ifdef COMIC_DOTS
-  vec2 dotUV = comicRotate(plane / comicDotSpacing, comicDotDirection);
+  vec2 dotUV = stylizeRotate(plane / comicDotSpacing, comicDotDirection);
   float dotAA = clamp(0.5 * max(fwidth(dotUV.x), fwidth(dotUV.y)), 1e-4, 0.5);
-  float dots = comicDots(dotUV, tone, dotAA);
+  float dots = stylizeHalftoneDots(dotUV, tone, dotAA);
 #else
   float dots = tone;
 #endif

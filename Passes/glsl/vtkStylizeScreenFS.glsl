@@ -60,6 +60,44 @@ int stylizeBayer(ivec2 q)
 }
 #endif
 
+// Rotates a 2D vector by the angle whose (cos, sin) is cs.
+vec2 stylizeRotate(vec2 v, vec2 cs)
+{
+  return vec2(cs.x * v.x - cs.y * v.y, cs.y * v.x + cs.x * v.y);
+}
+
+// Halftone dots (the comic's eq. 10; vtkComicPatterns.h holds the constants, which a style
+// that draws dots prepends as #defines): ink where the distance to the cell centre is below the
+// radius whose disc covers 1 - I of the cell (continuous in I), anti-aliased over aa cell units, keeping the
+// ink's area: the smooth edge adds 0.2 pi aa^2 to a disc, so the disc is drawn that much
+// smaller, and a dot smaller than the smooth edge is a blob of radius aa, lighter by its
+// excess (else the lightest tones would turn to gray specks where the cells are a few pixels
+// wide). 1 = paper.
+#ifdef COMIC_DOT_DISC_COVERAGE
+float stylizeHalftoneDots(vec2 uv, float tone, float aa)
+{
+  vec2 f = fract(uv) - 0.5;
+  float d = length(f);
+  float coverage = clamp(1.0 - tone, 0.0, 1.0);
+  // disc area pi r^2 = coverage up to r = 0.5; then the corners fill until r = sqrt(0.5)
+  if (coverage > COMIC_DOT_DISC_COVERAGE)
+  {
+    float r = mix(COMIC_DOT_INSCRIBED_RADIUS, COMIC_DOT_CORNER_RADIUS,
+      (coverage - COMIC_DOT_DISC_COVERAGE) / COMIC_DOT_CORNER_COVERAGE);
+    return smoothstep(r - aa, r + aa, d);
+  }
+  float r2 = coverage / COMIC_PI;
+  float big = r2 - 0.2 * aa * aa;
+  if (big >= aa * aa)
+  {
+    float r = sqrt(big);
+    return smoothstep(r - aa, r + aa, d);
+  }
+  float scale = r2 / (1.2 * aa * aa);
+  return 1.0 - scale * (1.0 - smoothstep(0.0, 2.0 * aa, d));
+}
+#endif
+
 // The G-buffer channels every style samples (vtkStylizeGBufferPass), and how a style's final
 // stage writes the background (stylizeOutputAlpha() below, stylizeDiscardBackground).
 uniform sampler2D stylizeColorTexture;       // lit colour

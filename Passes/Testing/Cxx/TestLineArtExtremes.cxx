@@ -6,17 +6,17 @@
 #include "vtkLineArtPass.h"
 #include "vtkStylizeTestUtilities.h"
 
+#include "vtkAppendFilter.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
 #include "vtkCompositePolyDataMapper2.h"
+#include "vtkDataArray.h"
 #include "vtkDataSetMapper.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPlaneSource.h"
-#include "vtkCellData.h"
-#include "vtkDataArray.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkAppendFilter.h"
-#include "vtkCallbackCommand.h"
-#include "vtkCommand.h"
 
 #include <limits>
 
@@ -109,9 +109,7 @@ int TestLineArtExtremes(int, char*[])
       true },
     { "wireframe", 240, 180, 1.0,
       [](vtkRenderer* r, P*)
-      {
-        ForEachActor(r, [](vtkActor* a) { a->GetProperty()->SetRepresentationToWireframe(); });
-      },
+      { ForEachActor(r, [](vtkActor* a) { a->GetProperty()->SetRepresentationToWireframe(); }); },
       true },
     { "a translucent actor", 240, 180, 1.0,
       [](vtkRenderer* r, P*)
@@ -177,8 +175,8 @@ int TestLineArtExtremes(int, char*[])
     const vtkIdType ink = InkPixels(image);
     std::printf("%s: %lld ink pixels, %lld strokes\n", c.Name.c_str(), static_cast<long long>(ink),
       static_cast<long long>(scene.Pass->GetStrokes()->GetNumberOfCells()));
-    STYLIZE_CHECK((ink > 0) == c.ExpectInk, "%s: %lld ink pixels", c.Name.c_str(),
-      static_cast<long long>(ink));
+    STYLIZE_CHECK(
+      (ink > 0) == c.ExpectInk, "%s: %lld ink pixels", c.Name.c_str(), static_cast<long long>(ink));
     // a surface drawn as wireframe is drawn as its edges (creases), hidden ones removed
     if (c.Name == "wireframe")
     {

@@ -7,11 +7,11 @@
 #include "vtkStylizeTestUtilities.h"
 
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkCubeSource.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkCellArray.h"
 
 #include <array>
 #include <cmath>

@@ -21,6 +21,12 @@ int TestLineArtRegression(int argc, char* argv[])
         p->SetToneLevels(4);
         p->SetToneDarkest(0.3);
       } },
+    { "dots",
+      [](vtkRenderer*, P* p)
+      {
+        p->SetTone(P::DOTS);
+        p->SetDotSpacing(6);
+      } },
     { "outline",
       [](vtkRenderer*, P* p)
       {
@@ -73,6 +79,7 @@ int TestLineArtRegression(int argc, char* argv[])
     STYLIZE_CHECK(contours, "lines.%s: no contour strokes", name.c_str());
   };
   // one point per pixel at this height: lines a few pixels wide
-  return RunStyleVariant<P>(argc, argv, "TestLineArtRegression", variants, 400, 300,
+  return RunStyleVariant<P>(
+    argc, argv, "TestLineArtRegression", variants, 400, 300,
     [](P* p) { p->SetReferenceHeight(300); }, inspect);
 }
