@@ -180,8 +180,9 @@ bool vtkLineArtPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
         .Float3("lineArtInkColor", this->InkColor[0], this->InkColor[1], this->InkColor[2])
         .Float3("lineArtPaperColor", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2])
         .Int("lineArtToneLevels", this->ToneLevels)
-        .Float("lineArtToneDarkest", this->ToneDarkest)
-        .Float("lineArtDotSpacing", this->DotSpacing * this->PointSize(frame))
+        .Float("lineArtToneDarkest", std::isfinite(this->ToneDarkest) ? this->ToneDarkest : 0.6)
+        .Float("lineArtDotSpacing",
+          (std::isfinite(this->DotSpacing) ? this->DotSpacing : 8.0) * this->PointSize(frame))
         .Float2("lineArtPixelOffset", frame.FullOffset[0], frame.FullOffset[1]);
       this->SetSceneOutputUniforms(u, frame.Renderer);
     },

@@ -445,11 +445,14 @@ private:
   /** A stroke's width in pixels at eye depth z and strength f. */
   double Width(int kind, double z, double f) const
   {
+    // (a setting that is not finite counts as 0: the clamp macros let NaN through)
+    auto share = [](double v) { return std::isfinite(v) ? std::min(1.0, std::max(0.0, v)) : 0.0; };
     const double depth = this->Range > 0.0 ? (z - this->Nearest) / this->Range : 0.0;
-    const double taper = 1.0 - this->S.DepthTaper * std::min(1.0, std::max(0.0, depth));
-    const double strength = std::isfinite(f) ? std::min(1.0, std::max(0.0, f)) : 1.0;
-    const double fade = 1.0 - this->S.StrengthTaper * (1.0 - strength);
-    return this->S.Widths[kind] * this->V.PointSize * taper * fade;
+    const double taper = 1.0 - share(this->S.DepthTaper) * share(depth);
+    const double strength = std::isfinite(f) ? share(f) : 1.0;
+    const double fade = 1.0 - share(this->S.StrengthTaper) * (1.0 - strength);
+    const double w = this->S.Widths[kind] * this->V.PointSize * taper * fade;
+    return std::isfinite(w) ? std::min(1.0e4, std::max(0.0, w)) : 0.0;
   }
 
   const View& V;
@@ -658,6 +661,12 @@ void vtkStylizeFeatureStrokes::Rasterize(std::vector<float>& coverage)
       const double ra = 0.5 * widths->GetTuple1(ids[s]);
       const double rb = 0.5 * widths->GetTuple1(ids[s + 1]);
       const double reach = std::max(ra, rb) + 1.0;
+      if (!std::isfinite(a[0] + a[1] + b[0] + b[1] + reach) ||
+        std::max(std::abs(a[0]), std::abs(b[0])) > 1.0e7 ||
+        std::max(std::abs(a[1]), std::abs(b[1])) > 1.0e7)
+      {
+        continue; // (off-screen or degenerate: nothing to draw, and no cast out of range)
+      }
       const int x0 = std::max(0, static_cast<int>(std::floor(std::min(a[0], b[0]) - reach)));
       const int x1 = std::min(W - 1, static_cast<int>(std::ceil(std::max(a[0], b[0]) + reach)));
       const int y0 = std::max(0, static_cast<int>(std::floor(std::min(a[1], b[1]) - reach)));
