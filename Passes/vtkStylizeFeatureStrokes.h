@@ -7,11 +7,12 @@
  *
  * A style that draws feature lines (vtkLineArtPass; the comic's and the sketch's line phase)
  * owns one. Per frame, Build() finds the lines of every visible opaque actor drawn as a surface
- * whose mapper's input is a surface (vtkPolyData, or the polydata leaves of composite data),
- * through the actor's matrix, tests them against the scene's depth (the G-buffer's linear depth:
- * every actor hides lines) or, with no depth, by ray casting against the same surfaces (the exact
- * path of vector figures), and turns the visible runs into strokes. What does not depend on
- * the view (curvature, creases, ridges, valleys) is kept per surface between frames.
+ * (its data through the actor's matrix: polygonal data, the leaves of composite data, other
+ * datasets through vtkDataSetSurfaceFilter; an actor drawn as wireframe gives its edges), tests
+ * them against the scene's depth (the G-buffer's linear depth: every actor hides lines) or, with
+ * no depth, by ray casting against the same surfaces (the exact path of vector figures), and
+ * turns the visible runs into strokes. What does not depend on the view (curvature, creases,
+ * ridges, valleys) is kept per dataset between frames.
  *
  * On several processes (ParaView's ranks, each with its own pieces) process 0's composited depth
  * is sent to every process, whose lines are tested against it, with thresholds and taper from
