@@ -40,29 +40,8 @@ TILE_TARGET = 0.99   # the tiled screenshot against the whole render (SSIM)
 def scene(mesh, name, size=SIZE, scale=1.0):
     """A window with the mesh framed as realdata.lines frames it, rendered by a line-art pass."""
     azimuth, elevation, up, _ = L.VIEWS[name]
-    renderer = vtk.vtkRenderer()
+    window, renderer = L.framed(mesh, azimuth, elevation, up, size, scale)
     renderer.SetBackground(1, 1, 1)
-    window = vtk.vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)
-    window.AddRenderer(renderer)
-    window.SetSize(*size)
-    mapper = vtk.vtkPolyDataMapper()
-    mapper.SetInputData(mesh)
-    actor = vtk.vtkActor()
-    actor.SetMapper(mapper)
-    actor.SetScale(scale)
-    renderer.AddActor(actor)
-    camera = renderer.GetActiveCamera()
-    if up == "z":
-        camera.SetPosition(0, -1, 0)
-        camera.SetFocalPoint(0, 0, 0)
-        camera.SetViewUp(0, 0, 1)
-    renderer.ResetCamera()
-    camera.Azimuth(azimuth)
-    camera.Elevation(elevation)
-    camera.OrthogonalizeViewUp()
-    renderer.ResetCamera()
     style = vtkLineArtPass()
     renderer.SetPass(style)
     return window, renderer, style
@@ -92,12 +71,10 @@ def copy(strokes):
     return out
 
 
-def stroke_raster(strokes, size, kinds=None):
-    """The pixels the strokes' centre lines cross (sampled every 0.5 px)."""
-    w, h = size
-    image = np.zeros((h, w), bool)
+def stroke_runs(strokes):
+    """(points x, y, kind) of each stroke."""
     if strokes.GetNumberOfPoints() == 0:
-        return image
+        return
     points = numpy_support.vtk_to_numpy(strokes.GetPoints().GetData())[:, :2]
     kind = strokes.GetCellData().GetArray("FeatureKind")
     ids = vtk.vtkIdList()
@@ -105,11 +82,17 @@ def stroke_raster(strokes, size, kinds=None):
     cells.InitTraversal()
     cell = 0
     while cells.GetNextCell(ids):
-        k = int(kind.GetValue(cell))
+        yield points[[ids.GetId(i) for i in range(ids.GetNumberOfIds())]], int(kind.GetValue(cell))
         cell += 1
-        if kinds is not None and k not in kinds:
+
+
+def stroke_raster(strokes, size, kinds=None):
+    """The pixels the strokes' centre lines cross (sampled every 0.5 px)."""
+    w, h = size
+    image = np.zeros((h, w), bool)
+    for xy, kind in stroke_runs(strokes):
+        if kinds is not None and kind not in kinds:
             continue
-        xy = points[[ids.GetId(i) for i in range(ids.GetNumberOfIds())]]
         for a, b in zip(xy[:-1], xy[1:]):
             n = max(1, int(np.ceil(np.hypot(*(b - a)) / 0.5)))
             s = a + np.linspace(0.0, 1.0, n + 1)[:, None] * (b - a)
@@ -122,18 +105,8 @@ def stroke_raster(strokes, size, kinds=None):
 def lengths(strokes):
     """Stroke length per kind, pixels."""
     out = [0.0] * len(L.KINDS)
-    if strokes.GetNumberOfPoints() == 0:
-        return out
-    points = numpy_support.vtk_to_numpy(strokes.GetPoints().GetData())[:, :2]
-    kind = strokes.GetCellData().GetArray("FeatureKind")
-    ids = vtk.vtkIdList()
-    cells = strokes.GetLines()
-    cells.InitTraversal()
-    cell = 0
-    while cells.GetNextCell(ids):
-        xy = points[[ids.GetId(i) for i in range(ids.GetNumberOfIds())]]
-        out[int(kind.GetValue(cell))] += float(np.linalg.norm(np.diff(xy, axis=0), axis=1).sum())
-        cell += 1
+    for xy, kind in stroke_runs(strokes):
+        out[kind] += float(np.linalg.norm(np.diff(xy, axis=0), axis=1).sum())
     return out
 
 

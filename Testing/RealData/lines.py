@@ -70,18 +70,20 @@ def load(path, scale=1.0):
     return mesh
 
 
-def view(mesh, azimuth, elevation, up):
-    """A window with the mesh, its camera framed like vtkstylize's, and the depth buffer."""
+def framed(mesh, azimuth, elevation, up, size=SIZE, scale=1.0):
+    """An offscreen window (no multisampling) with the mesh (its actor scaled by `scale`) and its
+    camera framed like vtkstylize's, turned by azimuth and elevation; (window, renderer)."""
     renderer = vtk.vtkRenderer()
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetMultiSamples(0)
     window.AddRenderer(renderer)
-    window.SetSize(*SIZE)
+    window.SetSize(*size)
     mapper = vtk.vtkPolyDataMapper()
     mapper.SetInputData(mesh)
     actor = vtk.vtkActor()
     actor.SetMapper(mapper)
+    actor.SetScale(scale)
     renderer.AddActor(actor)
     camera = renderer.GetActiveCamera()
     if up == "z":
@@ -93,8 +95,14 @@ def view(mesh, azimuth, elevation, up):
     camera.Elevation(elevation)
     camera.OrthogonalizeViewUp()
     renderer.ResetCamera()
+    return window, renderer
+
+
+def view(mesh, azimuth, elevation, up):
+    """A window with the mesh, its camera framed like vtkstylize's, and the depth buffer."""
+    window, renderer = framed(mesh, azimuth, elevation, up)
     window.Render()
-    return window, camera, depth_of(window)
+    return window, renderer.GetActiveCamera(), depth_of(window)
 
 
 def depth_of(window):
