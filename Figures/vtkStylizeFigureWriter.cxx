@@ -91,7 +91,8 @@ bool DrawStyle(
   }
   if (auto* sketch = vtkSketchPass::SafeDownCast(style))
   {
-    return DrawSketch(c, frame, sketch, writer->GetSketchOutlineWidth());
+    return DrawSketch(c, frame, sketch, writer->GetSketchOutlineWidth(), writer->GetPaperMode(),
+      writer->GetMaximumPaperColors());
   }
   if (auto* lines = vtkLineArtPass::SafeDownCast(style))
   {

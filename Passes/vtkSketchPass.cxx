@@ -372,6 +372,7 @@ void vtkSketchPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->SceneBounds[2] << " " << this->SceneBounds[3] << " " << this->SceneBounds[4] << " "
      << this->SceneBounds[5] << "\n";
   os << indent << "SmoothingRadius: " << this->SmoothingRadius << " pt\n";
+  os << indent << "FieldTexelSize: " << this->FieldTexelSize << " pt\n";
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
   os << indent << "FillRadius: " << this->FillRadius << " pt\n";
   os << indent << "FallbackAngle: " << this->FallbackAngle << " deg\n";
@@ -397,6 +398,7 @@ void vtkSketchPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ReferenceHeight: " << this->ReferenceHeight << " px\n";
   os << indent << "FeatureLines: " << this->FeatureLines << "\n";
   os << indent << "FeatureLineWidth: " << this->FeatureLineWidth << " pt\n";
+  os << indent << "VectorFigureStrokes: " << (this->VectorFigureStrokes ? "on" : "off") << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -594,7 +596,8 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   p.Strokes = this->Layer == SKETCH || this->Layer == STROKES;
   const bool tone = this->Layer == SKETCH || this->Layer == TONE;
   p.ObjectNoise = p.Strokes && this->NoiseSpace == OBJECT;
-  p.Contrast = tone && this->Contrast > 0.0;
+  // (the interactive variant skips the contrast's blur)
+  p.Contrast = tone && this->Contrast > 0.0 && !frame.Interactive;
   const bool cross = this->CrossHatching && this->Layer == SKETCH;
   p.Scene.Channels = vtkStylizeGBufferPass::LINEAR_DEPTH | vtkStylizeGBufferPass::NORMAL;
   // The estimate differentiates normals: half floats (3 digits) would dominate its error. The
@@ -623,6 +626,7 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   f.UmbilicTolerance = finite(this->UmbilicTolerance, self->GetUmbilicToleranceMinValue());
   f.SmoothingRadius = finite(this->SmoothingRadius, self->GetSmoothingRadiusMinValue());
   f.SmoothingIterations = this->SmoothingIterations;
+  f.TexelSize = finite(this->FieldTexelSize, self->GetFieldTexelSizeMinValue());
   f.FillRadius = finite(this->FillRadius, self->GetFillRadiusMinValue());
   f.FallbackAngle = finite(this->FallbackAngle, self->GetFallbackAngleMinValue());
   f.Direction = this->Direction;
@@ -645,8 +649,9 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   p.Steps = this->Steps;
   if (frame.Interactive)
   {
-    // The cheaper variant while the user drags: the raw directions (no smoothing, no fill),
-    // strokes in fewer, longer steps (the same length).
+    // The cheaper variant while the user drags: the raw directions on a grid twice as coarse
+    // (no smoothing, no fill), strokes in fewer, longer steps (the same length), no contrast.
+    f.TexelSize = 2.0 * std::max(1.0, f.TexelSize);
     f.SmoothingRadius = 0.0;
     f.SmoothingIterations = 0;
     f.FillRadius = 0.0;
@@ -777,7 +782,8 @@ void vtkSketchPass::RenderFinalStage(const Frame& frame, const Plan& p)
         .Float3("sketchPaper", this->PaperColor[0], this->PaperColor[1], this->PaperColor[2]);
       if (p.FeatureLines)
       {
-        u.Texture("sketchFeatureInk", this->Internals->Strokes->GetTexture());
+        u.Texture("sketchFeatureInk", this->Internals->Strokes->GetTexture())
+          .Float("sketchPointPixels", p.PointSize);
       }
       this->SetSceneOutputUniforms(u, frame.Renderer);
     },

@@ -75,17 +75,27 @@ protected:
   /** The field's stages for a frame: their tap distances and strides. */
   struct Plan
   {
-    double SpacingWorld = 0.0; // the estimate's neighbour spacing, world units
-    int MaxStride = 1;         // the estimate's largest neighbour distance, pixels
-    int GradientStride = 1;    // the lighting-gradient fallback's tap distance, pixels
-    // The smoothing and fill passes: tap distance (pixels), fill only.
+    int Scale = 1;                // pixels per texel of the estimate's and smoothing's grid
+    int GridOrigin[2] = { 0, 0 }; // the viewport's offset into its first texel, pixels
+    int GridSize[2] = { 1, 1 };   // texels
+    double SpacingWorld = 0.0;    // the estimate's neighbour spacing, world units
+    int MaxStride = 1;            // the estimate's largest neighbour distance, pixels
+    int GradientStride = 1;       // the lighting-gradient fallback's tap distance, pixels
+    // The smoothing and fill passes: tap distance (texels), fill only.
     std::vector<std::pair<int, int>> Iterations;
   };
   static Plan MakePlan(const Frame& frame, const Settings& s, double pointSize);
 
   int FirstStage = -1;
-  // The raw field's ping-pong pair and the resolved field.
-  vtkTextureObject* Textures[3] = { nullptr, nullptr, nullptr };
+  /**
+   * The G-buffer's depth on the plan's grid (each texel the depth of its centre pixel, a
+   * framebuffer blit): what the grid's stages cull the background against. nullptr (no
+   * culling) when there is no depth or culling is off.
+   */
+  vtkTextureObject* GridDepth(vtkStylizeStylePass* style, const Frame& frame, const Plan& plan);
+
+  // The raw field's ping-pong pair, the resolved field and the grid's depth.
+  vtkTextureObject* Textures[4] = { nullptr, nullptr, nullptr, nullptr };
   int Resolved = -1; // index in Textures of the last resolved field
   vtkWindow* Window = nullptr;
 

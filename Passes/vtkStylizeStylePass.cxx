@@ -569,12 +569,12 @@ void vtkStylizeStylePass::AddDefine(std::string& defines, bool on, const std::st
 
 //------------------------------------------------------------------------------
 bool vtkStylizeStylePass::RenderStage(int stage, std::initializer_list<vtkTextureObject*> targets,
-  int w, int h, const StageUniforms& uniforms, int coverage)
+  int w, int h, const StageUniforms& uniforms, int coverage, vtkTextureObject* cullDepth)
 {
   // Surface-only stages skip the background by an early depth test against the G-buffer's
-  // depth, where it has the stage's size.
+  // depth (or the one given), where it has the stage's size.
   vtkInternals& in = *this->Internals;
-  vtkTextureObject* depth = in.Scene->GetDepthTexture();
+  vtkTextureObject* depth = cullDepth ? cullDepth : in.Scene->GetDepthTexture();
   const bool cull = in.Culling && coverage == SURFACE_PIXELS && depth &&
     static_cast<int>(depth->GetWidth()) == w && static_cast<int>(depth->GetHeight()) == h;
   return in.Runner->Run(stage, targets, w, h, uniforms, cull ? depth : nullptr);

@@ -392,10 +392,13 @@ protected:
   /**
    * Runs stage `stage` into `targets` (colour attachments 0, 1, ... of the style's framebuffer),
    * over w x h pixels, without blending, for the pixels `coverage` (StageCoverage) names.
-   * Returns false when its program does not build (reported once per frame by EndFrame()).
+   * `cullDepth`: for SURFACE_PIXELS, a depth texture of the stage's size to cull against in
+   * place of the G-buffer's (a stage on a coarser grid). Returns false when its program does
+   * not build (reported once per frame by EndFrame()).
    */
   bool RenderStage(int stage, std::initializer_list<vtkTextureObject*> targets, int w, int h,
-    const StageUniforms& uniforms, int coverage = ALL_PIXELS);
+    const StageUniforms& uniforms, int coverage = ALL_PIXELS,
+    vtkTextureObject* cullDepth = nullptr);
 
   /**
    * Runs stage `stage` into the output framebuffer over the frame's viewport. `writeDepth`:
@@ -473,6 +476,7 @@ protected:
     double FallbackAngle = 45.0; ///< degrees
     int Direction = 1;           ///< 0 smaller, 1 larger |curvature|, 2 their bisector
     bool Model = false;          ///< the G-buffer's DIRECTION channel where it is defined
+    double TexelSize = 0.0;      ///< points per texel of the estimate's grid; 0: a pixel
   };
 
   /**

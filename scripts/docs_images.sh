@@ -72,12 +72,33 @@ for style in comic pixel sketch lines; do
   done
 done
 
+# The pencil on a face scan (the head's profile) and a held-out scan (issue 38).
+images+=("pencil-head|--style sketch --size 640x360 --azimuth 0 --elevation 0 $real/head.ply")
+images+=("pencil-armadillo|--style sketch --size 640x360 $real/armadillo.ply")
+
 for entry in "${images[@]}"; do
   name="${entry%%|*}"
   read -r -a options <<< "${entry#*|}"
   "$program" "${options[@]}" --output "$out/$name.png" > /dev/null
   echo "$out/$name.png"
 done
+
+# Vector figures of the fandisk (the README's and figures.md's): the sketch's embedded pencil and
+# the vector pencil (--vector-pencil), the latter also rasterized for the sketch's gallery.
+figures="$out/figures"
+mkdir -p "$figures"
+for style in sketch pencil; do
+  options=(--style sketch)
+  [ "$style" = pencil ] && options+=(--vector-pencil)
+  "$program" "${options[@]}" --size 480x360 --no-annotations \
+    --output "$figures/fandisk-$style.svg" "$real/fandisk.ply" > /dev/null
+  echo "$figures/fandisk-$style.svg"
+done
+"$program" --style sketch --vector-pencil --size 640x360 --output "$out/pencil-bunny-vector.svg" \
+  "$real/bunny.ply" > /dev/null
+rsvg-convert -b white "$out/pencil-bunny-vector.svg" -o "$out/pencil-bunny-vector.png"
+rm "$out/pencil-bunny-vector.svg"
+echo "$out/pencil-bunny-vector.png"
 
 # The ParaView GUI (when the plugin was built): paraview.gui's own run, whose window capture is
 # the manual's picture of the GUI.

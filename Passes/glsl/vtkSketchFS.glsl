@@ -58,6 +58,7 @@ uniform float sketchCross;       // cross-hatching below this tone
 uniform vec3 sketchPencil;
 uniform vec3 sketchPaper;
 uniform sampler2D sketchFeatureInk; // SKETCH_FEATURE_LINES: the strokes' ink in [0, 1]
+uniform float sketchPointPixels;    // pixels per point
 
 // The four pixels around continuous pixel position f (taps, their field entries) and their
 // bilinear weights, a weight 0 where the pixel is not on the stroke's surface: no field there,
@@ -305,8 +306,13 @@ void sketchMain()
 #endif
   float ink = 0.0;
 #ifdef SKETCH_FEATURE_LINES
-  // the feature lines in pencil, over the strokes and the background
+  // the feature lines in pencil, over the strokes and the background, with the strokes' grain:
+  // the noise, a texel per point fixed to the image, thins their ink where it is light
   ink = clamp(texelFetch(sketchFeatureInk, p, 0).r, 0.0, 1.0);
+  float grain = texture(sketchNoise,
+    vec3((vec2(p) + fieldPixelOffset + 0.5) / (sketchPointPixels * 64.0), 0.37)).r;
+  float grainZ = (grain - sketchNoiseStats.x) / max(sketchNoiseStats.y, 1e-4);
+  ink *= clamp(0.8 + 0.2 * sketchStrokeContrast * grainZ, 0.3, 1.0);
   result = mix(result, sketchPencil, ink);
 #endif
   if (stylizeDiscardBackground == 1 && background && ink <= 0.0)

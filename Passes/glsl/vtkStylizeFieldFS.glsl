@@ -6,8 +6,12 @@
 //                         and its confidence, from the G-buffer (focal surfaces or the mapped
 //                         direction attribute)
 //   FIELD_STAGE_SMOOTH    one sign-invariant smoothing or fill iteration of the raw field
-//   FIELD_STAGE_RESOLVE   fallbacks for undefined pixels, then the requested direction; writes
+//   FIELD_STAGE_RESOLVE   the smoothed field upsampled to pixels within each surface,
+//                         fallbacks for undefined pixels, then the requested direction; writes
 //                         the final field (xyz view-space unit direction, w linear depth)
+// The estimate and the smoothing run on a grid of fieldScale x fieldScale pixels per texel,
+// aligned with the full image (a tile's grid continues its neighbours'); the resolve runs at
+// the pixels.
 //   FIELD_NEIGHBORS 2|4|8, FIELD_MODEL, FIELD_DIRECTION 0|1|2 (minimum, maximum, bisector)
 // The camera helpers (view positions, projection, tangent frames) are shared with the styles'
 // own stages. Lengths arrive in pixels of this viewport or in world units, converted on the CPU.
@@ -22,6 +26,9 @@ uniform int fieldParallel;      // 1 for parallel projection
 uniform float fieldPixelWorld;  // world size of a pixel: times depth (perspective) or as is
 uniform vec4 fieldProjection;   // P00, P11, P02, P12 of the camera's projection
 uniform vec2 fieldProjOffset;   // P03, P13
+uniform int fieldScale;         // pixels per texel of the estimate's and smoothing's grid
+uniform ivec2 fieldGridOrigin;  // this viewport's offset into its first texel (pixels)
+uniform ivec2 fieldGridSize;    // the grid's size (texels)
 
 // ---- camera helpers -------------------------------------------------------------------------
 // Normalized device coordinates of continuous pixel position f (pixel centres at i + 0.5).
@@ -71,6 +78,23 @@ ivec2 fieldPixel()
   return clamp(ivec2(texCoord * vec2(fieldSize)), ivec2(0), fieldSize - 1);
 }
 
+// The pixel that grid texel t stands for (its centre pixel, clamped to the viewport).
+ivec2 fieldGridPixel(ivec2 t)
+{
+  return clamp(t * fieldScale + fieldScale / 2 - fieldGridOrigin, ivec2(0), fieldSize - 1);
+}
+
+// This stage's grid texel.
+ivec2 fieldGridTexel()
+{
+  return clamp(ivec2(texCoord * vec2(fieldGridSize)), ivec2(0), fieldGridSize - 1);
+}
+
+bool fieldGridInside(ivec2 t)
+{
+  return all(greaterThanEqual(t, ivec2(0))) && all(lessThan(t, fieldGridSize));
+}
+
 // Linear depth d and normal n of pixel p; false on the background and on lines and points.
 bool fieldSurfaceAt(ivec2 p, out float d, out vec3 n)
 {
@@ -80,11 +104,15 @@ bool fieldSurfaceAt(ivec2 p, out float d, out vec3 n)
   return d > 0.0 && n4.a >= 0.5;
 }
 
-// This stage's pixel p with its linear depth d and normal n; off the surface the stage writes
-// "no direction" (zero) and the caller returns.
+// This stage's pixel p (the estimate: its grid texel's pixel) with its linear depth d and
+// normal n; off the surface the stage writes "no direction" (zero) and the caller returns.
 bool fieldStageStart(out ivec2 p, out float d, out vec3 n)
 {
+#ifdef FIELD_STAGE_ESTIMATE
+  p = fieldGridPixel(fieldGridTexel());
+#else
   p = fieldPixel();
+#endif
   if (!fieldSurfaceAt(p, d, n))
   {
     gl_FragData[0] = vec4(0.0);
@@ -244,8 +272,9 @@ uniform int fieldFillOnly;    // 1: defined pixels keep their value (fill iterat
 
 void stylizeFieldMain()
 {
-  ivec2 p = fieldPixel();
-  vec4 c = texelFetch(fieldInput, p, 0);
+  ivec2 t = fieldGridTexel();
+  ivec2 p = fieldGridPixel(t);
+  vec4 c = texelFetch(fieldInput, t, 0);
   float d0;
   vec3 n;
   if (!fieldSurfaceAt(p, d0, n) || (fieldFillOnly == 1 && c.w != 0.0))
@@ -262,12 +291,13 @@ void stylizeFieldMain()
   {
     for (int i = -1; i <= 1; ++i)
     {
-      ivec2 q = p + ivec2(i, j) * fieldRadius;
-      if (!fieldInside(q))
+      ivec2 tq = t + ivec2(i, j) * fieldRadius;
+      if (!fieldGridInside(tq))
       {
         continue;
       }
-      vec4 e = texelFetch(fieldInput, q, 0);
+      ivec2 q = fieldGridPixel(tq);
+      vec4 e = texelFetch(fieldInput, tq, 0);
       if (e.w == 0.0)
       {
         continue;
@@ -311,10 +341,53 @@ uniform sampler2D fieldInput;
 uniform int fieldGradientStride; // Sobel tap distance of the lighting-gradient fallback
 uniform vec2 fieldScreenDirection; // the last resort: a fixed screen direction
 
+// The smoothed field at pixel p (linear depth d0, normal n): the doubled-angle average of the
+// four grid texels around it, bilinear, weighted by their confidence, those on another surface
+// (normal or tangent plane apart) left out. With one pixel per texel, the pixel's own texel.
+vec4 fieldUpsample(ivec2 p, float d0, vec3 n)
+{
+  if (fieldScale == 1)
+  {
+    return texelFetch(fieldInput, p, 0);
+  }
+  vec3 X, Y;
+  fieldFrame(n, X, Y);
+  vec3 x = fieldViewPosition(vec2(p) + 0.5, d0);
+  vec2 g = (vec2(p + fieldGridOrigin) + 0.5) / float(fieldScale) - 0.5;
+  vec2 g0 = floor(g);
+  vec2 f = g - g0;
+  vec3 acc = vec3(0.0);
+  for (int k = 0; k < 4; ++k)
+  {
+    ivec2 o = ivec2(k & 1, k >> 1);
+    ivec2 t = clamp(ivec2(g0) + o, ivec2(0), fieldGridSize - 1);
+    vec4 e = texelFetch(fieldInput, t, 0);
+    ivec2 q = fieldGridPixel(t);
+    vec4 nq = texelFetch(stylizeNormalTexture, q, 0);
+    float dq = texelFetch(stylizeLinearDepthTexture, q, 0).r;
+    vec3 dp = fieldViewPosition(vec2(q) + 0.5, dq) - x;
+    vec2 v = vec2(dot(e.xyz, X), dot(e.xyz, Y));
+    float l2 = dot(v, v);
+    if (e.w == 0.0 || !(dq > 0.0) || nq.a < 0.5 || dot(nq.xyz, n) < 0.7 ||
+      abs(dot(dp, n)) > 0.5 * length(dp) + 1e-30 || !(l2 > 1e-8))
+    {
+      continue;
+    }
+    float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y) * abs(e.w) + 1e-6;
+    acc += vec3(fieldDoubled(v) / l2, 1.0) * w;
+  }
+  if (!(acc.z > 0.0) || !(length(acc.xy) > 1e-6 * acc.z))
+  {
+    return vec4(0.0);
+  }
+  float theta = 0.5 * atan(acc.y, acc.x);
+  return vec4(X * cos(theta) + Y * sin(theta), 1.0);
+}
+
 // The stage at a surface pixel p, its linear depth d0 and normal n (stylizeFieldMain()).
 void fieldSurfaceStage(ivec2 p, float d0, vec3 n)
 {
-  vec4 c = texelFetch(fieldInput, p, 0);
+  vec4 c = fieldUpsample(p, d0, n);
   vec3 e = c.xyz - n * dot(c.xyz, n);
   bool defined = c.w != 0.0 && dot(e, e) > 1e-8;
   vec3 result;

