@@ -231,7 +231,7 @@ public:
    * strokes show at a fraction of the cost (the estimate and smoothing run on 1/k^2 of the
    * pixels); the resolve upsamples it to the pixels within each surface (the four texels
    * around a pixel, those across a fold or silhouette left out). 1: one texel per point.
-   * Range [1, 16], default 3 (docs/sketch.md, the speed trade).
+   * Range [1, 16], default 4 (docs/sketch.md, the speed trade).
    */
   vtkSetClampMacro(FieldTexelSize, double, 1.0, 16.0);
   vtkGetMacro(FieldTexelSize, double);
@@ -488,7 +488,7 @@ protected:
   double PlanarTolerance = FieldSettings().PlanarTolerance;
   double UmbilicTolerance = FieldSettings().UmbilicTolerance;
   double SmoothingRadius = FieldSettings().SmoothingRadius;
-  double FieldTexelSize = 3.0;
+  double FieldTexelSize = 4.0;
   bool VectorFigureStrokes = false;
   int SmoothingIterations = FieldSettings().SmoothingIterations;
   double FillRadius = FieldSettings().FillRadius;

@@ -42,7 +42,7 @@ BLUR_SIGMA, WINDOW, PAPER_LEVEL, INK_LEVEL = 4.0, 15, 0.9, 0.5
 OPEN = {
     ("armadillo", "pencil_tone"): 0.87,
     ("dragon", "pencil_tone"): 0.86,
-    ("dragon", "agreement"): 0.85,
+    ("dragon", "agreement"): 0.86,
     ("pinion", "pencil_tone"): 0.77,
 }
 
