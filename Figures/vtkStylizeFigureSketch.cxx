@@ -190,7 +190,11 @@ void AddPolyline(cairo_t* cr, const Polyline& line, double tolerance)
  */
 void DrawStrokes(Canvas& c, const PencilField& f, vtkSketchPass* sketch, double pixelsPerPoint)
 {
-  const double cell = SeedCell * pixelsPerPoint;
+  if (!(pixelsPerPoint > 0.0) || !std::isfinite(pixelsPerPoint))
+  {
+    pixelsPerPoint = 1.0;
+  }
+  const double cell = std::max(1.0, SeedCell * pixelsPerPoint);
   const double width = StrokeWidth * pixelsPerPoint;
   const double length = 2.0 * sketch->GetSteps() * sketch->GetStepLength() * pixelsPerPoint;
   const double step = std::max(1.0, 0.5 * pixelsPerPoint);
@@ -262,14 +266,19 @@ void DrawStrokes(Canvas& c, const PencilField& f, vtkSketchPass* sketch, double 
 //------------------------------------------------------------------------------
 bool DrawVectorSketch(Canvas& c, vtkSketchPass* sketch, int paperMode, int maximumPaperColors)
 {
-  // The layers: the paper (every tone lifted to paper, no lines), the feature lines alone on
-  // the key colour, the tone and the directions; the settings are restored after.
+  // The layers: the paper (every tone lifted to paper, flat strokes where a tone of 0 stays
+  // dark, no lines), the feature lines alone on the key colour, the tone and the directions;
+  // the settings are restored after.
   const double key[3] = { 1.0, 0.0, 1.0 };
   const bool lines = sketch->GetFeatureLines();
+  const bool crossing = sketch->GetCrossHatching();
+  const double contrast = sketch->GetStrokeContrast();
   double bright[2];
   sketch->GetBrightThresholds(bright);
   Image paper, ink, tone, directions;
   sketch->SetFeatureLines(false);
+  sketch->SetCrossHatching(false);
+  sketch->SetStrokeContrast(0.0);
   sketch->SetBrightThresholds(0.0, 1.0e-4);
   bool ok = c.Capture(vtkSketchPass::SKETCH, nullptr, paper);
   if (ok && lines)
@@ -279,6 +288,8 @@ bool DrawVectorSketch(Canvas& c, vtkSketchPass* sketch, int paperMode, int maxim
     sketch->SetFeatureLines(false);
   }
   sketch->SetBrightThresholds(bright[0], bright[1]);
+  sketch->SetStrokeContrast(contrast);
+  sketch->SetCrossHatching(crossing);
   ok = ok && c.Capture(vtkSketchPass::TONE, key, tone) &&
     c.Capture(vtkSketchPass::DIRECTIONS, key, directions);
   sketch->SetFeatureLines(lines);

@@ -100,6 +100,12 @@ rsvg-convert -b white "$out/pencil-bunny-vector.svg" -o "$out/pencil-bunny-vecto
 rm "$out/pencil-bunny-vector.svg"
 echo "$out/pencil-bunny-vector.png"
 
+# The sketch's orbit animation (the README's; the comic's and pixel art's are made alike).
+"$program" --style sketch --orbit 36 --fps 12 --size 240x180 \
+  --output "$figures/orbit-sketch.gif" "$real/bunny.ply" > /dev/null
+rm -f "$figures"/orbit-sketch-[0-9]*.png # the frames the GIF was encoded from
+echo "$figures/orbit-sketch.gif"
+
 # The ParaView GUI (when the plugin was built): paraview.gui's own run, whose window capture is
 # the manual's picture of the GUI.
 paraview="$build/paraview/bin/paraview-stylize"
