@@ -74,6 +74,7 @@ done
 
 # The pencil on a face scan (the head's profile) and a held-out scan (issue 38).
 images+=("pencil-head|--style sketch --size 640x360 --azimuth 0 --elevation 0 $real/head.ply")
+images+=("pencil-mannequin|--style sketch --size 640x360 --up +Z --azimuth -20 --elevation 10 $real/mannequin.ply")
 images+=("pencil-armadillo|--style sketch --size 640x360 $real/armadillo.ply")
 
 for entry in "${images[@]}"; do

@@ -395,7 +395,7 @@ public:
           }
         }
       });
-    o->check(OneOf(keys));
+    o->transform(OneOf(keys));
   }
 
   /** A setting of COUNT numbers, each in [lo, hi], given as a comma list. */
@@ -605,7 +605,7 @@ void AddProgramOptions(OptionTable& t)
   }
   t.Value("--style", "NAME", "style: " + StyleNames("|") + " (default: " + o.Style + ")", general,
      [](Options& opt, const std::string& v) { opt.Style = v; })
-    ->check(OneOf(styles));
+    ->transform(OneOf(styles));
   t.Value("--output", "FILE",
      "output file: .png (image), .svg or .pdf (vector figure: outlines, dots, hatch lines, art "
      "pixels and text as vector shapes); with --orbit .png (numbered frames), .gif or .mp4 "
@@ -671,6 +671,12 @@ void AddProgramOptions(OptionTable& t)
      general,
      [](Options& opt, const std::string& v) { opt.Elevation = std::strtod(v.c_str(), nullptr); })
     ->check(NumberIn(-MaxAngle, MaxAngle, false));
+  t.Value("--up", "+X|-X|+Y|-Y|+Z|-Z",
+     "the data's up axis, drawn upward (as f3d's --up): a scan stored Z-up stands with +Z; the "
+     "front view looks at the data from +X x up (+Z for the X axes), before --azimuth and "
+     "--elevation (default: +Y)",
+     general, [](Options& opt, const std::string& v) { opt.Up = v; })
+    ->transform(OneOf({ "+x", "-x", "+y", "-y", "+z", "-z" }));
   t.Value("--orbit", "N",
      "an orbit animation: N frames, the camera turned by --orbit-degrees / N about the view-up "
      "axis between frames; writes FILE-0000.png ... and, with --output FILE.gif or FILE.mp4, the "
@@ -779,7 +785,7 @@ void AddProgramOptions(OptionTable& t)
      "Lighting",
      [](Options& opt, const std::string& v)
      { opt.LightingModel = vtkStylizeLightingPass::GetModelFromName(v.c_str()); })
-    ->check(OneOf(models));
+    ->transform(OneOf(models));
 
   // --palette: the palettes, and two shortcuts that also set the levels.
   using P = vtkPixelArtPass;
@@ -811,7 +817,7 @@ void AddProgramOptions(OptionTable& t)
          }
        }
      })
-    ->check(OneOf(paletteNames));
+    ->transform(OneOf(paletteNames));
   t.Value("--colors", "LIST",
      "pixel: the custom palette: colours (R,G,B or #rrggbb) separated by spaces or ';', at most "
      "256; selects --palette custom",

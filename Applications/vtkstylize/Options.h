@@ -76,6 +76,7 @@ struct Options
   int Lights = 1;
   std::optional<double> Azimuth;
   std::optional<double> Elevation;
+  std::string Up = "+y"; // --up: the data's up axis, lower case
   double Zoom = 1.0;
   bool Parallel = false;
   double Background[3] = { 1.0, 1.0, 1.0 };

@@ -531,9 +531,20 @@ void FitView(vtkRenderer* ren, double fill)
 void SetUpCamera(vtkRenderer* ren, const Options& opt)
 {
   vtkCamera* camera = ren->GetActiveCamera();
-  camera->SetPosition(0, 0, 1);
+  // --up: the up axis u drawn upward; the front view from +X x u (+Z when u is an X axis).
+  const int axis = opt.Up.size() == 2 && opt.Up[1] >= 'x' && opt.Up[1] <= 'z' ? opt.Up[1] - 'x' : 1;
+  const double sign = opt.Up[0] == '-' ? -1.0 : 1.0;
+  double up[3] = { 0.0, 0.0, 0.0 };
+  up[axis] = sign;
+  const double x[3] = { 1.0, 0.0, 0.0 };
+  double back[3] = { 0.0, 0.0, 1.0 };
+  if (axis != 0)
+  {
+    vtkMath::Cross(x, up, back);
+  }
+  camera->SetPosition(back);
   camera->SetFocalPoint(0, 0, 0);
-  camera->SetViewUp(0, 1, 0);
+  camera->SetViewUp(up);
   camera->SetParallelProjection(opt.Parallel);
   ren->ResetCamera();
   // A three-quarter view by default, as for the built-in scene.
@@ -543,13 +554,13 @@ void SetUpCamera(vtkRenderer* ren, const Options& opt)
   camera->Elevation(opt.Elevation ? *opt.Elevation : SceneElevation);
   // Looking straight up or down: the old view-up is parallel to the view; use the old forward
   // direction instead so that the view transform stays well defined.
-  double dop[3], up[3];
+  double dop[3], viewUp[3];
   camera->GetDirectionOfProjection(dop);
-  camera->GetViewUp(up);
-  if (std::abs(vtkMath::Dot(dop, up)) > 0.999)
+  camera->GetViewUp(viewUp);
+  if (std::abs(vtkMath::Dot(dop, viewUp)) > 0.999)
   {
-    const double sign = vtkMath::Dot(dop, up) > 0 ? -1.0 : 1.0;
-    camera->SetViewUp(sign * before[0], sign * before[1], sign * before[2]);
+    const double s = vtkMath::Dot(dop, viewUp) > 0 ? -1.0 : 1.0;
+    camera->SetViewUp(s * before[0], s * before[1], s * before[2]);
   }
   camera->OrthogonalizeViewUp();
   ren->ResetCameraClippingRange();
