@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <sstream>
 
+#include <dlfcn.h>
+#include <link.h>
 #include <unistd.h>
 
 vtkStandardNewMacro(vtkStylizeOutputWindow);
@@ -173,4 +176,29 @@ void vtkStylizeOutputWindow::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "EchoDescriptor: " << this->EchoDescriptor << "\n";
   os << indent << "Messages: " << this->Messages.size() << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeOutputWindow::ReportSanitizersTo(int fd)
+{
+  dl_iterate_phdr(
+    [](dl_phdr_info* info, size_t, void* data) -> int
+    {
+      const std::string name = info->dlpi_name ? info->dlpi_name : "";
+      if (name.find("libasan") != std::string::npos || name.find("libubsan") != std::string::npos)
+      {
+        if (void* library = ::dlopen(name.c_str(), RTLD_LAZY | RTLD_NOLOAD))
+        {
+          using SetReportFd = void (*)(void*);
+          if (auto set =
+                reinterpret_cast<SetReportFd>(::dlsym(library, "__sanitizer_set_report_fd")))
+          {
+            set(reinterpret_cast<void*>(static_cast<std::intptr_t>(*static_cast<int*>(data))));
+          }
+          ::dlclose(library);
+        }
+      }
+      return 0;
+    },
+    &fd);
 }

@@ -71,6 +71,13 @@ public:
    */
   static std::string OneLine(const std::string& text, std::size_t maxLength = 240);
 
+  /**
+   * Sends the reports of every sanitizer runtime loaded in the process (AddressSanitizer's and
+   * UndefinedBehaviorSanitizer's each have their own) to the descriptor fd; nothing without
+   * them.
+   */
+  static void ReportSanitizersTo(int fd);
+
 protected:
   vtkStylizeOutputWindow() = default;
   ~vtkStylizeOutputWindow() override = default;

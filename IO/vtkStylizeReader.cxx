@@ -107,13 +107,6 @@ namespace
 {
 using namespace vtkStylizeReaderInternal;
 
-std::string Lower(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
 /**
  * Installs a vtkStylizeOutputWindow for its lifetime (keeping the echo descriptor of one already
  * installed) and restores the previous window. VTK's logger also writes errors to stderr
@@ -560,6 +553,48 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
   data->ShallowCopy(output);
   return data;
 }
+/** Checks, reads and validates the file in this process. */
+ReadResult ReadChecked(const std::string& path, int timeStep)
+{
+  ReadResult result;
+  const std::string what = "cannot read " + Quote(path);
+  CaptureScope capture;
+  CurrentWarnings = &result.Warnings;
+  try
+  {
+    vtkSmartPointer<vtkDataObject> data = ReadInput(path, timeStep);
+    if (auto* ds = vtkDataSet::SafeDownCast(data))
+    {
+      vtkSmartPointer<vtkDataSet> kept = WithoutNonFinitePoints(ds, Quote(path));
+      ValidateDataSet(kept, Quote(path));
+      data = kept;
+    }
+    else
+    {
+      ValidateBlocks(data, Quote(path));
+    }
+    result.Data = data;
+  }
+  catch (const ReadFailure& failure)
+  {
+    result.Error = failure.Message;
+  }
+  catch (const std::bad_alloc&)
+  {
+    result.Error = what + ": out of memory";
+  }
+  catch (const std::exception& e)
+  {
+    // (a library's exception, e.g. std::length_error for a size it cannot hold)
+    result.Error = what + ": " + vtkStylizeOutputWindow::OneLine(e.what());
+  }
+  CurrentWarnings = nullptr;
+  if (!result.Error.empty())
+  {
+    result.Data = nullptr;
+  }
+  return result;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -633,51 +668,39 @@ void vtkStylizeReader::Read()
   this->Warnings.clear();
   this->Data = nullptr;
   const std::string path = this->FileName ? this->FileName : "";
-  const std::string what = "cannot read " + Quote(path);
-  vtkSmartPointer<vtkDataObject> data;
+  const int timeStep = this->TimeStep;
+  ReadResult result;
+  if (path.empty())
   {
-    CaptureScope capture;
-    CurrentWarnings = &this->Warnings;
-    try
-    {
-      if (path.empty())
-      {
-        Fail("no file to read (SetFileName)");
-      }
-      data = ReadInput(path, this->TimeStep);
-      if (auto* ds = vtkDataSet::SafeDownCast(data))
-      {
-        vtkSmartPointer<vtkDataSet> kept = WithoutNonFinitePoints(ds, Quote(path));
-        ValidateDataSet(kept, Quote(path));
-        data = kept;
-      }
-      else
-      {
-        ValidateBlocks(data, Quote(path));
-      }
-    }
-    catch (const ReadFailure& failure)
-    {
-      this->ErrorMessage = failure.Message;
-    }
-    catch (const std::bad_alloc&)
-    {
-      this->ErrorMessage = what + ": out of memory";
-    }
-    catch (const std::exception& e)
-    {
-      // (a library's exception, e.g. std::length_error for a size it cannot hold)
-      this->ErrorMessage = what + ": " + vtkStylizeOutputWindow::OneLine(e.what());
-    }
-    CurrentWarnings = nullptr;
+    result.Error = "no file to read (SetFileName)";
   }
-  if (this->ErrorMessage.empty())
+  else if (this->Isolated)
   {
-    this->Data = data;
+    IsolationLimits limits = AutomaticLimits(InputBytes(path));
+    if (this->MemoryLimit > 0.0)
+    {
+      limits.MemoryMiB = this->MemoryLimit;
+    }
+    if (this->TimeLimit > 0.0)
+    {
+      limits.Seconds = this->TimeLimit;
+    }
+    CaptureScope capture; // (VTK's messages while the data is handed back)
+    result = ReadIsolated(
+      path, [&path, timeStep]() { return ReadChecked(path, timeStep); }, limits);
   }
   else
   {
-    this->ErrorMessage = vtkStylizeOutputWindow::OneLine(this->ErrorMessage, 1000);
+    result = ReadChecked(path, timeStep);
+  }
+  this->Warnings = result.Warnings;
+  if (result.Error.empty())
+  {
+    this->Data = result.Data;
+  }
+  else
+  {
+    this->ErrorMessage = vtkStylizeOutputWindow::OneLine(result.Error, 1000);
   }
 }
 
@@ -733,6 +756,9 @@ void vtkStylizeReader::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "TimeStep: " << this->TimeStep << "\n";
+  os << indent << "Isolated: " << this->Isolated << "\n";
+  os << indent << "MemoryLimit: " << this->MemoryLimit << "\n";
+  os << indent << "TimeLimit: " << this->TimeLimit << "\n";
   os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
   os << indent << "Warnings: " << this->Warnings.size() << "\n";
 }

@@ -59,6 +59,38 @@ public:
   vtkGetMacro(TimeStep, int);
   ///@}
 
+  ///@{
+  /**
+   * Whether the file is read in a child process (fork) under limits, and the data handed back
+   * through memory files: a crash, a hang or a runaway allocation of VTK's reader on a damaged
+   * file then ends the child, not the caller, and is the reader's error ("VTK's reader crashed
+   * on it (segmentation fault)..."). Off, the file is read in this process (the checks before
+   * reading still run). Default on.
+   */
+  vtkSetMacro(Isolated, bool);
+  vtkGetMacro(Isolated, bool);
+  vtkBooleanMacro(Isolated, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The memory the isolated read may take beyond what the calling process holds, in MiB; 0:
+   * automatic, 512 MiB + 16 times the size of the input (the file, or the folder of a file that
+   * names others), at most 3/4 of the machine's memory. Range [0, 1e9], default 0.
+   */
+  vtkSetClampMacro(MemoryLimit, double, 0.0, 1e9);
+  vtkGetMacro(MemoryLimit, double);
+  ///@}
+
+  ///@{
+  /**
+   * The processor time the isolated read may take, in seconds (wall-clock: twice that and 5 s);
+   * 0: automatic, 10 s + 1 s per MiB of input. Range [0, 1e6], default 0.
+   */
+  vtkSetClampMacro(TimeLimit, double, 0.0, 1e6);
+  vtkGetMacro(TimeLimit, double);
+  ///@}
+
   /** The reason of the last update's failure, one line; empty after a success. */
   const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
 
@@ -101,11 +133,15 @@ protected:
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /** Checks and reads the file: Data, or ErrorMessage; Warnings. */
+  /** Checks and reads the file (in a child process when Isolated): Data, or ErrorMessage; Warnings.
+   */
   void Read();
 
   char* FileName = nullptr;
   int TimeStep = 0;
+  bool Isolated = true;
+  double MemoryLimit = 0.0;
+  double TimeLimit = 0.0;
   std::string ErrorMessage;
   std::vector<std::string> Warnings;
   vtkSmartPointer<vtkDataObject> Data; // what the last Read() gave (null after a failure)

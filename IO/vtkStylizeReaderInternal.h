@@ -10,7 +10,9 @@
 
 #include "vtkSmartPointer.h"
 
+#include <functional>
 #include <string>
+#include <vector>
 
 class vtkDataObject;
 class vtkDataSet;
@@ -36,6 +38,50 @@ void ClearVTKErrors();
 
 /** Fails with what + ": " + the first failure VTK reported since ClearVTKErrors(). */
 void CheckVTKErrors(const std::string& what);
+
+/** text in lower case (ASCII). */
+std::string Lower(std::string text);
+
+//------------------------------------------------------------------------------
+// The isolated read (vtkStylizeReaderIsolation.cxx)
+
+/** What a read gives: the data (null after a failure), the failure, the warnings. */
+struct ReadResult
+{
+  vtkSmartPointer<vtkDataObject> Data;
+  std::string Error;
+  std::vector<std::string> Warnings;
+};
+
+/** The bounds of an isolated read: memory above what the caller holds (MiB), time (s). */
+struct IsolationLimits
+{
+  double MemoryMiB = 512.0;
+  double Seconds = 10.0;
+};
+
+/**
+ * The size of the input in bytes: the file's, or for a file that names others (.vtm, .pvt*,
+ * .pvd, .case) and an OpenFOAM case, that of the files in its folder and below.
+ */
+double InputBytes(const std::string& path);
+
+/**
+ * The automatic bounds for an input of the given size: memory 512 MiB + 16 times the input, at
+ * most 3/4 of the machine's memory; processor time 10 s + 1 s per MiB (three times both under
+ * AddressSanitizer).
+ */
+IsolationLimits AutomaticLimits(double inputBytes);
+
+/**
+ * Runs read() in a child process (fork) under the limits and returns what it gave: the data
+ * comes back through memory files in VTK's XML format. A crash, a limit or a hang of the child
+ * is the result's Error, one line naming path and the cause. The child's processor time is
+ * bounded by RLIMIT_CPU, its heap by RLIMIT_DATA (except under AddressSanitizer), its resident
+ * size and its wall-clock time by the caller, which kills it past 2 x Seconds + 5 s.
+ */
+ReadResult ReadIsolated(
+  const std::string& path, const std::function<ReadResult()>& read, const IsolationLimits& limits);
 
 //------------------------------------------------------------------------------
 // PLY (vtkStylizeReaderPLY.cxx)

@@ -17,6 +17,7 @@
 #include "vtkExtractCells.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -107,7 +108,37 @@ bool CellTypeSize(int type, CellSize& size)
   return true;
 }
 
-/** Checks the cell types of an unstructured grid and their numbers of points. */
+/** The name of a linear cell type that quadratic cells are written with by mistake. */
+const char* LinearCellName(int type)
+{
+  switch (type)
+  {
+    case VTK_LINE:
+      return "line";
+    case VTK_TRIANGLE:
+      return "triangle";
+    case VTK_QUAD:
+      return "quadrilateral";
+    case VTK_TETRA:
+      return "tetrahedron";
+    case VTK_HEXAHEDRON:
+      return "hexahedron";
+    case VTK_WEDGE:
+      return "wedge";
+    case VTK_PYRAMID:
+      return "pyramid";
+    default:
+      return nullptr;
+  }
+}
+
+/**
+ * Checks the cell types of an unstructured grid and their numbers of points. A linear cell
+ * (line, triangle, quadrilateral, tetrahedron, hexahedron, wedge, pyramid) that lists more
+ * points than its type has, as FEM solvers write quadratic cells with the linear type (a
+ * hexahedron of 20 points), keeps its first points, its corners, with a warning: VTK's and
+ * ParaView's filters draw such a cell by its corners too.
+ */
 void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
 {
   vtkCellArray* cells = ug->GetCells();
@@ -121,6 +152,7 @@ void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
   {
     Fail(what + ": the numbers of cells and cell types differ");
   }
+  vtkIdType longCells = 0, firstLong = -1;
   for (vtkIdType i = 0; i < numberOfCells; ++i)
   {
     const int type = types->GetValue(i);
@@ -131,6 +163,11 @@ void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
       Fail(what + ": cell " + std::to_string(static_cast<long long>(i)) + " has an invalid or " +
         "unsupported cell type " + std::to_string(type));
     }
+    if (!size.AtLeast && npts > size.Size && LinearCellName(type))
+    {
+      firstLong = longCells++ == 0 ? i : firstLong;
+      continue;
+    }
     if (size.AtLeast ? npts < size.Size : npts != size.Size)
     {
       Fail(what + ": cell " + std::to_string(static_cast<long long>(i)) + " of type " +
@@ -138,6 +175,46 @@ void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
         " points, expected " + (size.AtLeast ? "at least " : "") + std::to_string(size.Size));
     }
   }
+  if (longCells == 0)
+  {
+    return;
+  }
+  const int type = types->GetValue(firstLong);
+  const vtkIdType npts = cells->GetCellSize(firstLong);
+  CellSize size{ 0, false };
+  CellTypeSize(type, size);
+  // The corners only: a new cell array (the dataset is the reader's copy).
+  vtkNew<vtkCellArray> corners;
+  corners->AllocateExact(numberOfCells, cells->GetNumberOfConnectivityIds());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType i = 0; i < numberOfCells; ++i)
+  {
+    cells->GetCellAtId(i, ids);
+    CellSize cellSize{ 0, false };
+    CellTypeSize(types->GetValue(i), cellSize);
+    const bool linear = !cellSize.AtLeast && LinearCellName(types->GetValue(i));
+    corners->InsertNextCell(
+      linear ? std::min<vtkIdType>(cellSize.Size, ids->GetNumberOfIds()) : ids->GetNumberOfIds(),
+      ids->GetPointer(0));
+  }
+  vtkSmartPointer<vtkIdTypeArray> faceLocations = ug->GetFaceLocations();
+  vtkSmartPointer<vtkIdTypeArray> faces = ug->GetFaces();
+  vtkSmartPointer<vtkUnsignedCharArray> keptTypes = types;
+  if (faces)
+  {
+    ug->SetCells(keptTypes, corners, faceLocations, faces);
+  }
+  else
+  {
+    ug->SetCells(keptTypes, corners);
+  }
+  Warn(what + ": " + std::to_string(static_cast<long long>(longCells)) +
+    (longCells == 1 ? " cell lists" : " cells list") +
+    " more points than a cell of its linear type has (cell " +
+    std::to_string(static_cast<long long>(firstLong)) + ": a " + LinearCellName(type) + ", type " +
+    std::to_string(type) + ", of " + std::to_string(static_cast<long long>(npts)) +
+    " points, a quadratic cell written with the linear type): drawn by the corners (the first " +
+    std::to_string(size.Size) + " points), as VTK and ParaView draw it");
 }
 
 /** True when every component of the array is a finite number. */

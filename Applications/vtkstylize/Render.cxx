@@ -1,6 +1,7 @@
 // vtkstylize: rendering the window (tiled when magnified) and writing the PNG atomically.
 #include "Render.h"
 
+#include "VirtualDisplay.h"
 #include "vtkstylizeCommon.h"
 
 #include "vtkActor.h"
@@ -109,6 +110,10 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(vtkRenderer* ren, const Options& opt
   window->SetMultiSamples(opt.MultiSamples);
   window->SetSize(opt.Width, opt.Height);
   window->AddRenderer(ren);
+  if (window->IsA("vtkXOpenGLRenderWindow"))
+  {
+    StartVirtualDisplayIfNeeded(opt.Width, opt.Height);
+  }
   CheckDisplay(window);
   return window;
 }

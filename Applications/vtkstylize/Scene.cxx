@@ -191,7 +191,22 @@ void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations
     blackAndWhite = true;
   }
   const auto it = maps.find(info.ScalarBarArray);
-  if (!info.ScalarBarArray.empty() && it != maps.end() && (!blackAndWhite || opt.ScalarBar))
+  const auto constant = info.ConstantArrays.find(info.ScalarBarArray);
+  if (!info.ScalarBarArray.empty() && it != maps.end() && (!blackAndWhite || opt.ScalarBar) &&
+    constant != info.ConstantArrays.end())
+  {
+    vtkNew<vtkTextActor> label;
+    label->SetInput(
+      (info.ScalarBarArray + " = " + FormatNumber(constant->second) + " (constant)").c_str());
+    label->GetTextProperty()->SetFontSize(fontSize);
+    label->GetTextProperty()->SetColor(ink, ink, ink);
+    label->GetTextProperty()->SetJustificationToRight();
+    label->GetTextProperty()->SetVerticalJustificationToTop();
+    label->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    label->GetPositionCoordinate()->SetValue(0.98, 0.97);
+    ren->AddActor2D(label);
+  }
+  else if (!info.ScalarBarArray.empty() && it != maps.end() && (!blackAndWhite || opt.ScalarBar))
   {
     vtkNew<vtkScalarBarActor> bar;
     bar->SetLookupTable(it->second);
@@ -327,9 +342,11 @@ std::map<std::string, vtkSmartPointer<vtkColorTransferFunction>> MakeColorMaps(
   for (auto& r : ranges)
   {
     double lo = r.second[0], hi = r.second[1];
-    // A constant array (up to float rounding): centre it in a unit range.
+    // A constant array (up to float rounding): centre it in a unit range (one colour, the map's
+    // middle), and label it with its value instead of a bar of four equal labels.
     if (!(hi - lo > 1e-6 * std::max({ 1.0, std::abs(lo), std::abs(hi) })))
     {
+      info.ConstantArrays[r.first] = 0.5 * (lo + hi);
       lo -= 0.5;
       hi += 0.5;
     }
@@ -404,6 +421,12 @@ void AddParts(vtkRenderer* ren, const std::vector<Part>& parts, const Options& o
     FailNoSuchArray(parts, opt, what);
   }
   auto maps = MakeColorMaps(ranges, builtIn, info);
+  const auto constant = info.ConstantArrays.find(info.ScalarBarArray);
+  if (constant != info.ConstantArrays.end())
+  {
+    Note(what + ": " + Quote(constant->first) + " holds one value, " +
+      FormatNumber(constant->second) + ": drawn in one colour, labelled with its value");
+  }
   for (std::size_t i = 0; i < parts.size(); ++i)
   {
     AddActor(ren, parts[i].Surface, colorings[i], maps);

@@ -8,6 +8,7 @@
 #include "Options.h"
 #include "vtkstylizeInput.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,9 @@ namespace vtkstylize
 struct SceneAnnotations
 {
   std::string Title;
-  std::string ScalarBarArray;        // array shown by the scalar bar, empty for none
-  std::vector<std::string> Warnings; // what the caller prints after the image is written
+  std::string ScalarBarArray;                   // array shown by the scalar bar, empty for none
+  std::map<std::string, double> ConstantArrays; // arrays of one value: a label, not a bar
+  std::vector<std::string> Warnings;            // what the caller prints after the image is written
 };
 
 /**

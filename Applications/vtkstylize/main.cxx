@@ -22,6 +22,7 @@
 #include "Options.h"
 #include "Render.h"
 #include "Scene.h"
+#include "VirtualDisplay.h"
 #include "vtkstylizeCommon.h"
 #include "vtkstylizeInput.h"
 
@@ -37,6 +38,7 @@
 #include "vtkStylizeDemoScene.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
+#include "vtkStylizeOutputWindow.h"
 #include "vtkStylizeStylePass.h"
 #include "vtkVersion.h"
 
@@ -60,9 +62,6 @@
 
 #if defined(__SANITIZE_ADDRESS__)
 #define VTKSTYLIZE_SANITIZED 1
-#include <cstdint>
-#include <dlfcn.h>
-#include <link.h>
 #else
 #define VTKSTYLIZE_SANITIZED 0
 #endif
@@ -90,6 +89,7 @@ void WriteError(const std::string& message)
 extern "C" void CrashHandler(int sig)
 {
   vtkStylizeAtomicFile::RemovePendingFile();
+  StopVirtualDisplay();
   const char* text = "vtkstylize: internal error: terminated by a signal\n";
   switch (sig)
   {
@@ -121,36 +121,6 @@ extern "C" void CrashHandler(int sig)
 
 /** The smallest window side (pixels) with a title and a scalar bar: the title's font is 8 px. */
 constexpr int MinimumAnnotatedSide = 16;
-
-#if VTKSTYLIZE_SANITIZED
-/**
- * Sends the reports of every sanitizer runtime loaded (AddressSanitizer's and
- * UndefinedBehaviorSanitizer's each have their own) to fd, the real stderr.
- */
-void ReportSanitizersTo(int fd)
-{
-  dl_iterate_phdr(
-    [](dl_phdr_info* info, size_t, void* data) -> int
-    {
-      const std::string name = info->dlpi_name ? info->dlpi_name : "";
-      if (name.find("libasan") != std::string::npos || name.find("libubsan") != std::string::npos)
-      {
-        if (void* library = ::dlopen(name.c_str(), RTLD_LAZY | RTLD_NOLOAD))
-        {
-          using SetReportFd = void (*)(void*);
-          if (auto set =
-                reinterpret_cast<SetReportFd>(::dlsym(library, "__sanitizer_set_report_fd")))
-          {
-            set(reinterpret_cast<void*>(static_cast<std::intptr_t>(*static_cast<int*>(data))));
-          }
-          ::dlclose(library);
-        }
-      }
-      return 0;
-    },
-    &fd);
-}
-#endif
 
 /**
  * --orbit N: N frames, the camera turned by opt.OrbitDegrees / N about the view-up axis between
@@ -468,7 +438,7 @@ int main(int argc, char* argv[])
 #if VTKSTYLIZE_SANITIZED
   // Under the sanitizers their own handlers report a fault (with its stack) on stderr: the
   // program's one-line handler is kept for the terminating signals only.
-  ReportSanitizersTo(ErrorDescriptor);
+  vtkStylizeOutputWindow::ReportSanitizersTo(ErrorDescriptor);
   for (int sig : { SIGINT, SIGTERM, SIGHUP })
 #else
   for (int sig : { SIGSEGV, SIGBUS, SIGFPE, SIGABRT, SIGINT, SIGTERM, SIGHUP })
@@ -502,6 +472,7 @@ int main(int argc, char* argv[])
     code = ExitFailure;
   }
   std::cout.flush();
+  StopVirtualDisplay();
   RemoveMessageCapture();
   return code;
 }

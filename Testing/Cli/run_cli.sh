@@ -75,6 +75,7 @@ case "$mode" in
     [ -s "$tmp.out" ] && fail "stdout is not empty"
     [ -e "$output" ] && fail "output file $output exists"
     check_no_temporary "$output"
+    cat "$tmp.err"
     ;;
   render)
     [ "$rc" -eq 0 ] || fail "expected exit status 0"

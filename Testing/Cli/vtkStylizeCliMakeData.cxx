@@ -517,6 +517,38 @@ int main(int argc, char* argv[])
     vtkNew<vtkGenericDataObjectWriter> w;
     w->SetInputData(q);
     Write(w.Get(), "hex20.vtk");
+    // The same cell as an FEM solver writes it: 20 points with the linear hexahedron's type 12
+    // (VTK and ParaView draw it by its 8 corners).
+    std::string text = "# vtk DataFile Version 3.0\nquadratic hexahedron typed 12\nASCII\n"
+                       "DATASET UNSTRUCTURED_GRID\nPOINTS 20 double\n";
+    for (vtkIdType i = 0; i < 20; ++i)
+    {
+      double p[3];
+      points->GetPoint(i, p);
+      text += std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + "\n";
+    }
+    text += "CELLS 1 21\n20";
+    for (vtkIdType i = 0; i < 20; ++i)
+    {
+      text += " " + std::to_string(i);
+    }
+    text += "\nCELL_TYPES 1\n12\n";
+    WriteText("hex20_typed_12.vtk", text);
+  }
+  // A surface whose point array holds one value (an isosurface of that array).
+  {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->Update();
+    vtkNew<vtkPolyData> surface;
+    surface->DeepCopy(sphere->GetOutput());
+    vtkNew<vtkFloatArray> value;
+    value->SetName("temperature");
+    value->SetNumberOfTuples(surface->GetNumberOfPoints());
+    value->Fill(160.0);
+    surface->GetPointData()->SetScalars(value);
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetInputData(surface);
+    Write(w.Get(), "constant_scalars.vtp");
   }
   // EnSight Gold (ASCII): two hexahedra with a nodal scalar; a case file whose geometry file
   // is missing, and one whose geometry file is cut short.
