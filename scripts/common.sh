@@ -15,11 +15,11 @@ STYLIZE_JOBS="${STYLIZE_JOBS:-$(nproc)}"
 # (Testing/RealData). Vector figures: libcairo2-dev writes SVG and PDF, libpotrace-dev traces
 # outlines, fonts-liberation gives text VTK's Arial metrics; the tests rasterize figures back with
 # librsvg2-bin (rsvg-convert) and poppler-utils (pdftoppm); orbit animations are encoded (GIF,
-# MP4) by ffmpeg.
+# MP4) by ffmpeg. clang and libclang-rt-14-dev build the libFuzzer targets of the sanitizer stage.
 STYLIZE_PACKAGES=(cmake make g++ pkg-config libvtk9-dev python3-vtk9 python3-dev libglm-dev xvfb xauth
   x11-utils libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5 libcli11-dev
   libcgal-demo libcairo2-dev libpotrace-dev fonts-liberation librsvg2-bin poppler-utils ffmpeg
-  clang-format)
+  clang-format clang libclang-rt-14-dev)
 
 stylize_install_dependencies() {
   local missing=()

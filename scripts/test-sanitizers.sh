@@ -3,7 +3,11 @@
 # UndefinedBehaviorSanitizer (VTKSTYLIZE_SANITIZE) in build-sanitize and runs the test suite in
 # it (the ParaView plugin is left out: ParaView's processes are not instrumented), then the
 # refusals of broken input with leak detection (Testing/Sanitizers/lsan.supp suppresses leaks
-# inside libraries the project cannot fix). Any report fails its test.
+# inside libraries the project cannot fix). Any report fails its test. Last, the libFuzzer targets
+# (Testing/Fuzz, built with clang) fuzz the format checks and the isolated reader for
+# STYLIZE_FUZZ_SECONDS each (default 60), from a copy of the committed seed corpus; a crash, a
+# hang, a leak or a sanitizer report fails the stage and leaves the input in
+# build-fuzz/artifacts (add it to Testing/Fuzz/corpus once fixed).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 STYLIZE_BUILD="${STYLIZE_SANITIZE_BUILD:-$STYLIZE_ROOT/build-sanitize}"
 stylize_install_dependencies
@@ -29,3 +33,28 @@ echo "== leaks: vtkstylize refusing broken input (no window opens)"
 ASAN_OPTIONS="${ASAN_OPTIONS}:detect_leaks=1" \
   ctest --output-on-failure -j "$STYLIZE_JOBS" --timeout 1200 -R '^cli\.bad\.' \
   -E '^cli\.bad\.(no_extent_obj|spacing_zero_vti)$'
+
+echo "== fuzzing (libFuzzer, AddressSanitizer, UndefinedBehaviorSanitizer)"
+fuzz_build="$STYLIZE_ROOT/build-fuzz"
+cmake -S "$STYLIZE_ROOT/Testing/Fuzz" -B "$fuzz_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ >/dev/null
+cmake --build "$fuzz_build" -j "$STYLIZE_JOBS"
+rm -rf "$fuzz_build/artifacts" && mkdir -p "$fuzz_build/artifacts"
+for target in Checks Reader; do
+  corpus="$fuzz_build/corpus-$target"
+  rm -rf "$corpus" && mkdir -p "$corpus" && cp "$STYLIZE_ROOT"/Testing/Fuzz/corpus/* "$corpus/"
+  # (the reader's child may use up to its own limits; -rss_limit_mb bounds the caller)
+  log="$fuzz_build/fuzz-$target.log"
+  rc=0
+  ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1:detect_odr_violation=0" \
+    "$fuzz_build/vtkStylizeFuzz$target" -max_total_time="${STYLIZE_FUZZ_SECONDS:-60}" \
+    -timeout=60 -rss_limit_mb=4096 -print_final_stats=1 \
+    -artifact_prefix="$fuzz_build/artifacts/$target-" "$corpus" >"$log" 2>&1 || rc=$?
+  grep -E '^(Done|stat::number_of_executed_units|stat::average_exec_per_sec|stat::peak_rss_mb)' \
+    "$log" | sed "s/^/$target: /" || true
+  if [ "$rc" -ne 0 ]; then
+    tail -n 60 "$log"
+    echo "fuzzing $target failed (exit $rc): $(ls "$fuzz_build/artifacts")"
+    exit 1
+  fi
+done
