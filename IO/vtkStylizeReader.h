@@ -65,7 +65,7 @@ public:
    * through memory files: a crash, a hang or a runaway allocation of VTK's reader on a damaged
    * file then ends the child, not the caller, and is the reader's error ("VTK's reader crashed
    * on it (segmentation fault)..."). Off, the file is read in this process (the checks before
-   * reading still run). Default on.
+   * reading still run).
    */
   vtkSetMacro(Isolated, bool);
   vtkGetMacro(Isolated, bool);

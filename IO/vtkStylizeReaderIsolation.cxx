@@ -11,14 +11,18 @@
 //   '0' name          an empty block
 //   'L' class name    a dataset, written in VTK's XML format (raw appended binary) to a memory
 //                     file (memfd) whose descriptor travels with the record (SCM_RIGHTS)
+//   'G' class name    other data (a table), likewise in VTK's legacy binary format
 //   'D'               done: the child exits
 // A count or class is followed by a newline, the name (possibly empty) is the rest of the
 // message. The child writes nothing else: its standard error goes to /dev/null, its core dumps
 // are off, it dies with its parent.
 #include "vtkStylizeReaderInternal.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkDataObjectTypes.h"
 #include "vtkDataSet.h"
+#include "vtkGenericDataObjectReader.h"
+#include "vtkGenericDataObjectWriter.h"
 #include "vtkInformation.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkMultiPieceDataSet.h"
@@ -255,35 +259,52 @@ void SendTree(int socket, vtkDataObject* object, const std::string& name)
     return;
   }
   auto* ds = vtkDataSet::SafeDownCast(object);
-  if (!ds)
-  {
-    Fail(std::string("the reader gave data of type ") + object->GetClassName() +
-      ", which VTK Stylize does not draw");
-  }
   const int fd = ::memfd_create("vtkstylize-read", MFD_CLOEXEC);
   if (fd < 0)
   {
     Fail(std::string("cannot create a memory file: ") + std::strerror(errno));
   }
-  vtkNew<vtkXMLDataSetWriter> writer;
-  writer->SetInputData(ds);
-  writer->SetFileName(("/proc/self/fd/" + std::to_string(fd)).c_str());
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
-  writer->SetCompressorTypeToNone();
-  writer->SetHeaderTypeToUInt64();
-  writer->SetIdTypeToInt64();
+  const std::string file = "/proc/self/fd/" + std::to_string(fd);
   ClearVTKErrors();
-  if (!writer->Write())
+  int written = 0;
+  if (ds)
   {
+    // Datasets: VTK's XML format, raw binary, which keeps every class and attribute.
+    // (without its time step, which the writer would add as a field array "TimeValue")
+    vtkSmartPointer<vtkDataSet> copy;
+    copy.TakeReference(ds->NewInstance());
+    copy->ShallowCopy(ds);
+    copy->GetInformation()->Remove(vtkDataObject::DATA_TIME_STEP());
+    vtkNew<vtkXMLDataSetWriter> writer;
+    writer->SetInputData(copy);
+    writer->SetFileName(file.c_str());
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    writer->SetCompressorTypeToNone();
+    writer->SetHeaderTypeToUInt64();
+    writer->SetIdTypeToInt64();
+    written = writer->Write();
+  }
+  else
+  {
+    // Other data (a table, a graph): VTK's legacy format, binary.
+    vtkNew<vtkGenericDataObjectWriter> writer;
+    writer->SetInputData(object);
+    writer->SetFileName(file.c_str());
+    writer->SetFileTypeToBinary();
+    written = writer->Write();
+  }
+  if (!written)
+  {
+    ::close(fd);
     Fail("cannot hand the data over: writing it to memory failed");
   }
-  SendRecord(socket, 'L', std::string(ds->GetClassName()) + "\n" + name, fd);
+  SendRecord(socket, ds ? 'L' : 'G', std::string(object->GetClassName()) + "\n" + name, fd);
   ::close(fd);
 }
 
 [[noreturn]] void RunChild(int socket, const std::function<ReadResult()>& read,
-  const IsolationLimits& limits, double dataBytes)
+  const IsolationLimits& limits, double dataBytes, const std::string& what)
 {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   const int null = ::open("/dev/null", O_WRONLY);
@@ -337,15 +358,15 @@ void SendTree(int socket, vtkDataObject* object, const std::string& name)
   }
   catch (const ReadFailure& failure)
   {
-    result.Error = failure.Message;
+    result.Error = what + ": " + failure.Message;
   }
   catch (const std::bad_alloc&)
   {
-    result.Error = "out of memory";
+    result.Error = what + ": out of memory";
   }
   catch (...)
   {
-    result.Error = "the data cannot be handed over";
+    result.Error = what + ": the data cannot be handed over";
   }
   if (!result.Error.empty())
   {
@@ -419,11 +440,33 @@ void Split(const std::string& text, std::string& head, std::string& rest)
   rest = newline == std::string::npos ? std::string() : text.substr(newline + 1);
 }
 
-/** Reads a dataset the child wrote to the memory file fd (closed here). */
-vtkSmartPointer<vtkDataObject> ReadMemoryFile(int fd, const std::string& type)
+/**
+ * Reads the data the child wrote to the memory file fd (closed here): VTK's XML format, or its
+ * legacy format when legacy.
+ */
+vtkSmartPointer<vtkDataObject> ReadMemoryFile(int fd, const std::string& type, bool legacy)
 {
-  vtkNew<vtkXMLGenericDataObjectReader> reader;
-  reader->SetFileName(("/proc/self/fd/" + std::to_string(fd)).c_str());
+  vtkSmartPointer<vtkAlgorithm> reader;
+  const std::string file = "/proc/self/fd/" + std::to_string(fd);
+  if (legacy)
+  {
+    auto generic = vtkSmartPointer<vtkGenericDataObjectReader>::New();
+    generic->SetFileName(file.c_str());
+    generic->ReadAllScalarsOn();
+    generic->ReadAllVectorsOn();
+    generic->ReadAllNormalsOn();
+    generic->ReadAllTCoordsOn();
+    generic->ReadAllTensorsOn();
+    generic->ReadAllColorScalarsOn();
+    generic->ReadAllFieldsOn();
+    reader = generic;
+  }
+  else
+  {
+    auto xml = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
+    xml->SetFileName(file.c_str());
+    reader = xml;
+  }
   ClearVTKErrors();
   reader->Update();
   ::close(fd);
@@ -510,9 +553,10 @@ struct Reception
 {
   TreeBuilder Tree;
   std::vector<std::string> Warnings;
-  std::string Failure; // the child's (or the hand-over's) failure
-  std::string Killed;  // the limit the parent killed the child for
-  bool Done = false;   // 'D' received
+  std::string Failure;      // the child's failure (a whole line), or the hand-over's
+  bool ChildFailed = false; // Failure is the child's
+  std::string Killed;       // the limit the parent killed the child for
+  bool Done = false;        // 'D' received
 };
 
 /** Handles one record; throws ReadFailure on what does not follow the protocol. */
@@ -527,6 +571,7 @@ void Handle(const Record& record, Reception& in)
       break;
     case 'E':
       in.Failure = record.Text;
+      in.ChildFailed = true;
       break;
     case 'D':
       in.Done = true;
@@ -551,11 +596,12 @@ void Handle(const Record& record, Reception& in)
       break;
     }
     case 'L':
+    case 'G':
       if (record.Descriptor < 0)
       {
         Fail("the data read cannot be handed over");
       }
-      in.Tree.Add(ReadMemoryFile(record.Descriptor, head), rest, 0);
+      in.Tree.Add(ReadMemoryFile(record.Descriptor, head, record.Kind == 'G'), rest, 0);
       break;
     default:
       Fail("the data read cannot be handed over");
@@ -671,7 +717,7 @@ ReadResult ReadIsolated(
   if (pid == 0)
   {
     ::close(sockets[0]);
-    RunChild(sockets[1], read, limits, dataBytes);
+    RunChild(sockets[1], read, limits, dataBytes, what);
   }
   ::close(sockets[1]);
   Reception in;
@@ -696,8 +742,7 @@ ReadResult ReadIsolated(
   }
   else if (!in.Failure.empty())
   {
-    result.Error =
-      in.Failure.compare(0, 12, "cannot read ") == 0 ? in.Failure : what + ": " + in.Failure;
+    result.Error = in.ChildFailed ? in.Failure : what + ": " + in.Failure;
     if (in.Failure.find("out of memory") != std::string::npos)
     {
       result.Error +=

@@ -768,6 +768,14 @@ void AddProgramOptions(OptionTable& t)
                                        : std::string();
       },
       ""));
+  t.Value("--read-time-limit", "S",
+     "the most processor time reading the input may take, in seconds (wall-clock: twice that "
+     "and 5 s); a longer read is refused with one line (default: 0, automatic: 10 s + 1 s per "
+     "MiB of input)",
+     general,
+     [](Options& opt, const std::string& v)
+     { opt.ReadTimeLimit = std::strtod(v.c_str(), nullptr); })
+    ->check(NumberIn(0, 1e6, false));
   t.Flag("--quiet", "do not print the output path on success (default: off)", general,
     [](Options& opt, const std::string&) { opt.Quiet = true; });
   t.Flag("--gbuffer", "render through the shared G-buffer pass (default: the lighting pass alone)",
@@ -906,7 +914,10 @@ const char* Footer =
   "Exit status: 0 success, 1 input, rendering or output error, 2 usage error (unknown\n"
   "option, bad option value, unsupported INPUT extension).\n"
   "Environment: VTKSTYLIZE_VERBOSE=1 also shows VTK's own messages on stderr.\n"
-  "An X display (DISPLAY) is needed for OpenGL, even though rendering is offscreen.";
+  "OpenGL needs an X display, even offscreen: without DISPLAY, vtkstylize starts Xvfb on a\n"
+  "free display for the run (package xvfb).\n"
+  "The input is read in a child process under limits (memory: --memory-limit, else 512 MiB\n"
+  "+ 16 x the input; time: --read-time-limit): a reader that crashes or runs away is one line.";
 
 /** The application with every option; `input` receives the positional arguments. */
 struct CommandLine

@@ -98,7 +98,8 @@ struct Options
   bool NoScalars = false;
   bool NoAnnotations = false;
   int MultiSamples = 0;
-  double MemoryLimit = -1.0; // MiB; -1: the default (3/4 of the machine's memory), 0: none
+  double MemoryLimit = -1.0;  // MiB; -1: the default (3/4 of the machine's memory), 0: none
+  double ReadTimeLimit = 0.0; // s of processor time for reading; 0: the reader's automatic one
   bool Quiet = false;
   std::vector<std::string> Warnings; // options that do not apply, printed after a success
   bool ScalarBar = false; // --scalar-bar: the colour legend on black-and-white output too

@@ -219,7 +219,8 @@ std::vector<Part> ReadParts(
   }
   else
   {
-    vtkSmartPointer<vtkDataObject> data = ReadInput(opt.Input, opt.TimeStep);
+    vtkSmartPointer<vtkDataObject> data =
+      ReadInput(opt.Input, opt.TimeStep, opt.MemoryLimit, opt.ReadTimeLimit);
     CollectParts(data, opt.IsoValue, what, parts);
     info.Title = BaseName(opt.Input);
   }

@@ -33,11 +33,17 @@ bool IsSupportedInput(const std::string& path)
   return vtkStylizeReader::IsSupportedFile(path);
 }
 
-vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
+vtkSmartPointer<vtkDataObject> ReadInput(
+  const std::string& path, int timeStep, double memoryMiB, double seconds)
 {
   vtkNew<vtkStylizeReader> reader;
   reader->SetFileName(path.c_str());
   reader->SetTimeStep(timeStep);
+  if (memoryMiB >= 0.0)
+  {
+    reader->SetMemoryLimit(memoryMiB > 0.0 ? memoryMiB : 1e9);
+  }
+  reader->SetTimeLimit(seconds);
   ClearVTKErrors();
   reader->Update();
   ClearVTKErrors(); // (the reader's error is in its ErrorMessage, the executive's says it failed)

@@ -40,9 +40,12 @@ bool IsSupportedInput(const std::string& path);
 /**
  * Checks and reads the file at the given time step (an index into the reader's time steps, or
  * into the data set files of a .pvd collection; 0 for files without time): vtkStylizeReader,
- * its error thrown as a failure, its warnings passed to Warn().
+ * isolated in a child process, its error thrown as a failure, its warnings passed to Warn().
+ * memoryMiB: the child's memory (as --memory-limit: < 0 the reader's automatic bound, 0 none);
+ * seconds: its processor time (0: automatic).
  */
-vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep = 0);
+vtkSmartPointer<vtkDataObject> ReadInput(
+  const std::string& path, int timeStep = 0, double memoryMiB = -1.0, double seconds = 0.0);
 
 /**
  * Appends the surfaces of a dataset or of every leaf of a composite dataset to parts: polydata

@@ -29,6 +29,8 @@ UNIT_PATTERNS = [
     (r"(?:\bin |, |\()degrees\b", "degrees"),
     (r"(?:\bin |, |\()radians\b", "radians"),
     (r"(?:\bin |, |\()world units\b", "world units"),
+    (r"(?:\bin |, |\()MiB\b", "MiB"),
+    (r"(?:\bin |, |\()seconds\b", "seconds"),
     (r"\b[Tt]ones? (?:above|below)\b", "tone (lit luminance)"),
     (r"\b[Nn]umber of\b|\blevels per\b|\b(?:[Hh]ysteresis|LIC) steps\b|\biterations\b|"
      r"\bmany steps\b", "count"),
