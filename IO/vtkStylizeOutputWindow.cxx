@@ -150,9 +150,10 @@ std::string vtkStylizeOutputWindow::OneLine(const std::string& text, std::size_t
 {
   std::string out;
   bool space = false;
-  for (char c : text)
+  for (std::size_t i = 0; i < text.size(); ++i)
   {
-    if (std::isspace(static_cast<unsigned char>(c)))
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (std::isspace(c))
     {
       space = !out.empty();
       continue;
@@ -162,11 +163,34 @@ std::string vtkStylizeOutputWindow::OneLine(const std::string& text, std::size_t
       out += ' ';
       space = false;
     }
-    out += c;
+    // A well-formed UTF-8 sequence (a file name) is kept; a control character or a byte of
+    // anything else (garbage a reader quoted from a file) becomes '?'.
+    const std::size_t length = c < 0x80 ? 1
+      : (c >> 5) == 0x6                 ? 2
+      : (c >> 4) == 0xE                 ? 3
+      : (c >> 3) == 0x1E                ? 4
+                                        : 0;
+    bool valid = length > 0 && i + length <= text.size() && (length > 1 || (c >= 32 && c != 127));
+    for (std::size_t k = 1; valid && k < length; ++k)
+    {
+      valid = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+    }
+    if (!valid)
+    {
+      out += '?';
+      continue;
+    }
+    out.append(text, i, length);
+    i += length - 1;
   }
   if (maxLength >= 3 && out.size() > maxLength)
   {
-    out = out.substr(0, maxLength - 3) + "...";
+    std::size_t cut = maxLength - 3;
+    while (cut > 0 && (static_cast<unsigned char>(out[cut]) >> 6) == 0x2)
+    {
+      --cut; // (not inside a UTF-8 sequence)
+    }
+    out = out.substr(0, cut) + "...";
   }
   return out;
 }

@@ -66,8 +66,9 @@ public:
   ///@}
 
   /**
-   * Collapses white-space runs (newlines included) to single spaces and cuts the text to
-   * maxLength characters (the last three "..." when cut).
+   * Collapses white-space runs (newlines included) to single spaces, replaces control
+   * characters and bytes that are not well-formed UTF-8 (garbage a reader quoted from a file)
+   * with '?', and cuts the text to maxLength bytes (the last three "..." when cut).
    */
   static std::string OneLine(const std::string& text, std::size_t maxLength = 240);
 

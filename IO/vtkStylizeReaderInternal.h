@@ -104,7 +104,12 @@ vtkSmartPointer<vtkDataObject> ReadPLYStrips(const std::string& path, const std:
 //------------------------------------------------------------------------------
 // Validation of what was read (vtkStylizeReaderValidate.cxx)
 
-/** Rejects datasets whose structure would make the filters or the mapper read out of bounds. */
+/**
+ * Rejects datasets whose structure would make the filters or the mapper read out of bounds, and
+ * repairs, with a warning, what can still be drawn: the cells of a polydata with too few points
+ * are left out, a linear cell of an unstructured grid that lists more points than its type has
+ * keeps its corners. ds is changed in place (it is the reader's copy).
+ */
 void ValidateDataSet(vtkDataSet* ds, const std::string& what);
 
 /**

@@ -217,6 +217,83 @@ void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
     std::to_string(size.Size) + " points), as VTK and ParaView draw it");
 }
 
+/**
+ * Leaves out, with a warning, the cells of a polydata with fewer points than their kind needs
+ * (a vertex 1, a line 2, a polygon or a strip 3), and their cell data: a reader gives them for a
+ * file whose lists were shifted (a PLY face that lists 0 vertices), and VTK's filters read
+ * outside the connectivity for them (vtkPolyDataNormals crashed in vtkCellLinks::BuildLinks).
+ */
+void DropDegenerateCells(vtkPolyData* pd, const std::string& what)
+{
+  vtkCellArray* arrays[4] = { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() };
+  const vtkIdType minimum[4] = { 1, 2, 3, 3 };
+  vtkIdType dropped = 0, first = -1, firstSize = 0, offset = 0;
+  for (int k = 0; k < 4; ++k)
+  {
+    const vtkIdType cells = arrays[k] ? arrays[k]->GetNumberOfCells() : 0;
+    for (vtkIdType c = 0; c < cells; ++c)
+    {
+      const vtkIdType size = arrays[k]->GetCellSize(c);
+      if (size < minimum[k])
+      {
+        if (dropped++ == 0)
+        {
+          first = offset + c;
+          firstSize = size;
+        }
+      }
+    }
+    offset += cells;
+  }
+  if (dropped == 0)
+  {
+    return;
+  }
+  vtkNew<vtkCellData> kept;
+  kept->CopyAllocate(pd->GetCellData(), pd->GetNumberOfCells() - dropped);
+  vtkNew<vtkIdList> ids;
+  vtkIdType from = 0, to = 0;
+  for (int k = 0; k < 4; ++k)
+  {
+    if (!arrays[k] || arrays[k]->GetNumberOfCells() == 0)
+    {
+      continue;
+    }
+    vtkNew<vtkCellArray> cleaned;
+    for (vtkIdType c = 0; c < arrays[k]->GetNumberOfCells(); ++c, ++from)
+    {
+      arrays[k]->GetCellAtId(c, ids);
+      if (ids->GetNumberOfIds() >= minimum[k])
+      {
+        cleaned->InsertNextCell(ids);
+        kept->CopyData(pd->GetCellData(), from, to++);
+      }
+    }
+    vtkCellArray* replaced = cleaned;
+    switch (k)
+    {
+      case 0:
+        pd->SetVerts(replaced);
+        break;
+      case 1:
+        pd->SetLines(replaced);
+        break;
+      case 2:
+        pd->SetPolys(replaced);
+        break;
+      default:
+        pd->SetStrips(replaced);
+        break;
+    }
+  }
+  pd->GetCellData()->ShallowCopy(kept);
+  Warn(what + ": " + std::to_string(static_cast<long long>(dropped)) + " cell" +
+    (dropped == 1 ? " has" : "s have") + " fewer points than a cell of " +
+    (dropped == 1 ? "its" : "their") + " kind needs (cell " +
+    std::to_string(static_cast<long long>(first)) + " lists " +
+    std::to_string(static_cast<long long>(firstSize)) + "): left out");
+}
+
 /** True when every component of the array is a finite number. */
 bool AllFinite(vtkDataArray* array)
 {
@@ -257,6 +334,7 @@ void ValidateDataSet(vtkDataSet* ds, const std::string& what)
     CheckCells(pd->GetLines(), n, what);
     CheckCells(pd->GetPolys(), n, what);
     CheckCells(pd->GetStrips(), n, what);
+    DropDegenerateCells(pd, what);
   }
   else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds))
   {
