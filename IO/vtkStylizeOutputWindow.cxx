@@ -163,18 +163,28 @@ std::string vtkStylizeOutputWindow::OneLine(const std::string& text, std::size_t
       out += ' ';
       space = false;
     }
-    // A well-formed UTF-8 sequence (a file name) is kept; a control character or a byte of
-    // anything else (garbage a reader quoted from a file) becomes '?'.
+    // A well-formed UTF-8 sequence of a printable character (a file name) is kept; a control
+    // character (C0, DEL, C1) or a byte of anything else (garbage a reader quoted from a file:
+    // overlong forms, surrogates, code points past U+10FFFF) becomes '?'.
     const std::size_t length = c < 0x80 ? 1
       : (c >> 5) == 0x6                 ? 2
       : (c >> 4) == 0xE                 ? 3
       : (c >> 3) == 0x1E                ? 4
                                         : 0;
-    bool valid = length > 0 && i + length <= text.size() && (length > 1 || (c >= 32 && c != 127));
+    bool valid = length > 0 && i + length <= text.size();
+    unsigned long code = length == 1 ? c
+      : length == 2                  ? (c & 0x1Fu)
+      : length == 3                  ? (c & 0x0Fu)
+                                     : (c & 0x07u);
     for (std::size_t k = 1; valid && k < length; ++k)
     {
-      valid = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      valid = (next >> 6) == 0x2;
+      code = (code << 6) | (next & 0x3Fu);
     }
+    static const unsigned long smallest[5] = { 0, 0, 0x80, 0x800, 0x10000 };
+    valid = valid && code >= smallest[length] && code <= 0x10FFFF &&
+      !(code >= 0xD800 && code <= 0xDFFF) && code >= 32 && !(code >= 0x7F && code <= 0x9F);
     if (!valid)
     {
       out += '?';

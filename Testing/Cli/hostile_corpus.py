@@ -38,20 +38,20 @@ view rendered it in every style; a crash or hang fails the test (pvbatch is rest
 the case to go on with the rest).
 It prints the counts, the largest resident size (ru_maxrss) of any case, and the worst cases.
 """
-import hashlib
+import json
 import os
-import random
 import re
-import resource
 import shutil
 import signal
-import stat
 import subprocess
 import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 
-import json
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from corpus_common import (REFERRING, SUPPORTED, bounded_child, classify, copy_entry,  # noqa: E402
+                           extension, is_png, leftovers, remove, rng, run_bounded,
+                           write_parallel)
 
 arguments = sys.argv[1:]
 RUNNER = "cli"
@@ -63,72 +63,13 @@ exe, data, work = (os.path.abspath(a) for a in arguments)
 TIME_LIMIT = 60.0
 ADDRESS_SPACE = 6 << 30
 MAX_MUTATED = 2 << 20
-SUPPORTED = (".vtp .vtu .vts .vtr .vti .vtm .pvtp .pvtu .pvts .pvtr .pvti .pvd .vtk .ex2 .exo .e "
-             ".g .case .foam .stl .obj .ply").split()
-REFERRING = (".vtm", ".pvtp", ".pvtu", ".pvts", ".pvtr", ".pvti", ".pvd", ".case")
-
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 outputs = os.path.join(work, "out")
 os.makedirs(outputs)
 
 
-def rng(name):
-    return random.Random(int(hashlib.sha256(name.encode()).hexdigest()[:16], 16))
-
-
-def extension(name):
-    base = os.path.basename(name).lower()
-    return os.path.splitext(base)[1]
-
-
-# ---- the parallel XML formats ---------------------------------------------------------------
-def write_parallel(folder):
-    import vtk  # Debian's python3-vtk9
-    sphere = vtk.vtkSphereSource()
-    sphere.SetThetaResolution(24)
-    sphere.SetPhiResolution(16)
-    wavelet = vtk.vtkRTAnalyticSource()
-    wavelet.SetWholeExtent(-6, 6, -6, 6, -6, 6)
-    grid = vtk.vtkStructuredGrid()
-    grid.SetDimensions(6, 5, 4)
-    points = vtk.vtkPoints()
-    for k in range(4):
-        for j in range(5):
-            for i in range(6):
-                points.InsertNextPoint(i, j + 0.2 * i, k + 0.1 * j * j)
-    grid.SetPoints(points)
-    rect = vtk.vtkRectilinearGrid()
-    rect.SetDimensions(5, 4, 3)
-    for axis, n in zip("XYZ", (5, 4, 3)):
-        coords = vtk.vtkDoubleArray()
-        for i in range(n):
-            coords.InsertNextValue(i * 0.7 + 0.05 * i * i)
-        getattr(rect, "Set%sCoordinates" % axis)(coords)
-    for writer, source, name in ((vtk.vtkXMLPPolyDataWriter(), sphere, "parallel.pvtp"),
-                                 (vtk.vtkXMLPImageDataWriter(), wavelet, "parallel.pvti"),
-                                 (vtk.vtkXMLPStructuredGridWriter(), grid, "parallel.pvts"),
-                                 (vtk.vtkXMLPRectilinearGridWriter(), rect, "parallel.pvtr")):
-        if isinstance(source, vtk.vtkAlgorithm):
-            writer.SetInputConnection(source.GetOutputPort())
-        else:
-            writer.SetInputData(source)
-        writer.SetNumberOfPieces(2)
-        writer.SetStartPiece(0)
-        writer.SetEndPiece(1)
-        writer.SetFileName(os.path.join(folder, name))
-        writer.Write()
-
-
 bases = os.path.join(work, "base")
-
-def copy_entry(source, target):
-    """Copies a file, keeps a link, and makes a FIFO anew (copytree would read it forever)."""
-    if stat.S_ISFIFO(os.lstat(source).st_mode):
-        os.mkfifo(target)
-    else:
-        shutil.copy2(source, target, follow_symlinks=False)
-
 
 shutil.copytree(data, bases, symlinks=True, copy_function=copy_entry,
                 ignore=lambda d, names: [n for n in names if n == "out"])
@@ -218,38 +159,7 @@ for entry in sorted(os.listdir(special)):
 
 
 # ---- running ------------------------------------------------------------------------------------
-SANITIZED = "ASAN_OPTIONS" in os.environ  # (AddressSanitizer reserves terabytes of address space)
-
-
-def limits():
-    if not SANITIZED:
-        resource.setrlimit(resource.RLIMIT_AS, (ADDRESS_SPACE, ADDRESS_SPACE))
-    resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
-    os.setsid()
-
-
-def leftovers(folder, out):
-    """Files a run left beside its output or its input: an output, a temporary file."""
-    found = []
-    if os.path.exists(out):
-        found.append(out)
-    stem = "." + os.path.basename(out) + "."
-    found += [os.path.join(outputs, f) for f in os.listdir(outputs) if f.startswith(stem)]
-    return found
-
-
-def wait_bounded(process, start):
-    """Waits for the process with wait4 (its own peak resident size), killing its process group
-    after TIME_LIMIT seconds: (status, usage, hung)."""
-    while True:
-        pid, status, usage = os.wait4(process.pid, os.WNOHANG)
-        if pid:
-            return status, usage, False
-        if time.monotonic() - start > TIME_LIMIT:
-            os.killpg(process.pid, signal.SIGKILL)
-            pid, status, usage = os.wait4(process.pid, 0)
-            return status, usage, True
-        time.sleep(0.01)
+limits = bounded_child(ADDRESS_SPACE)
 
 
 def run(index_case):
@@ -262,49 +172,19 @@ def run(index_case):
         out = os.path.join(outputs, "case%04d" % index)
         command = [sys.executable, exe, file, "-o", out, "--size", "64x48"]
         program = "stylize_dataset.py: "
-    start = time.monotonic()
     log = os.path.join(outputs, "case%04d.log" % index)
-    with open(log, "wb") as err_file:
-        process = subprocess.Popen(command, cwd=folder, stdout=subprocess.DEVNULL,
-                                   stderr=err_file, preexec_fn=limits)
-    status, usage, hung = wait_bounded(process, start)
-    process.returncode = os.waitstatus_to_exitcode(status)
-    stderr = open(log, "rb").read()
-    os.remove(log)
-    seconds = time.monotonic() - start
-    rc = process.returncode
-    err = stderr.decode(errors="replace")
-    # (under AddressSanitizer with allocator_may_return_null, an allocation too large is refused
-    # as without it, with a warning of its own: not a line of the program's)
-    lines = [line for line in err.splitlines() if line.strip() and
-             not (SANITIZED and "WARNING: AddressSanitizer failed to allocate" in line)]
-    if hung:
-        kind = "hang"
-    elif rc < 0 or rc >= 128 or "internal error" in err or "Traceback" in err:
-        kind = "crash"
-    elif rc == 0:
-        kind = "render" if rendered(out) else "bad render"
-    else:
-        left = leftovers(folder, out)
-        if left:
-            kind = "partial file"
-        elif len(lines) == 1 and lines[0].startswith(program) and rc in (1, 2):
-            kind = "refusal"
-        else:
-            kind = "bad refusal"
-    for f in leftovers(folder, out):
-        shutil.rmtree(f) if os.path.isdir(f) else os.remove(f)
+    rc, err, usage, hung, _, seconds = run_bounded(command, folder, log, TIME_LIMIT, limits)
+    left = leftovers(outputs, out)
+    kind, lines = classify(rc, err, hung, rendered(out), left, program)
+    remove(left)
     return name, kind, rc, seconds, (lines[-1] if lines else ""), usage.ru_maxrss
-
-
-PNG = b"\x89PNG\r\n\x1a\n"
 
 
 def rendered(out):
     """The run's images are there: the PNG (cli) or the four of the example's styles."""
     files = [out] if RUNNER == "cli" else [os.path.join(out, s + ".png")
                                            for s in ("none", "comic", "pixel", "sketch")]
-    return all(os.path.isfile(f) and open(f, "rb").read(8) == PNG for f in files)
+    return all(is_png(f) for f in files)
 
 
 def run_paraview():
