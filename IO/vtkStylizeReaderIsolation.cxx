@@ -160,7 +160,7 @@ double InputBytes(const std::string& path)
     ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) ? static_cast<double>(st.st_size) : 0.0;
   // A file that names others (or an OpenFOAM case) counts the files beside and below it.
   const auto dot = path.find_last_of('.');
-  const std::string extension = dot == std::string::npos ? std::string() : path.substr(dot);
+  const std::string extension = dot == std::string::npos ? std::string() : Lower(path.substr(dot));
   if (extension == ".vtm" || extension.compare(0, 4, ".pvt") == 0 || extension == ".pvd" ||
     extension == ".case" || extension == ".foam")
   {
