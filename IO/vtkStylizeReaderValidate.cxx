@@ -18,6 +18,7 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -340,6 +341,29 @@ void ValidateDataSet(vtkDataSet* ds, const std::string& what)
   {
     CheckCells(ug->GetCells(), n, what);
     CheckCellTypes(ug, what);
+  }
+  else if (auto* image = vtkImageData::SafeDownCast(ds))
+  {
+    // An inverted extent (a header number made huge) gives a negative number of points, with
+    // which the surface filter reads far outside the arrays.
+    int extent[6];
+    image->GetExtent(extent);
+    double count = 1.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double size = static_cast<double>(extent[2 * a + 1]) - extent[2 * a] + 1.0;
+      if (size < 0.0)
+      {
+        Fail(what + ": the image's extent along " + std::string(1, static_cast<char>('x' + a)) +
+          " runs backwards (from " + std::to_string(extent[2 * a]) + " to " +
+          std::to_string(extent[2 * a + 1]) + ")");
+      }
+      count *= size;
+    }
+    if (count != static_cast<double>(n))
+    {
+      Fail(what + ": the image's extent does not give its number of points");
+    }
   }
   else if (auto* sg = vtkStructuredGrid::SafeDownCast(ds))
   {

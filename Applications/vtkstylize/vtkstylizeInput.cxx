@@ -50,6 +50,15 @@ vtkSmartPointer<vtkDataObject> ReadInput(
   const std::string error = reader->GetErrorMessage();
   if (!error.empty())
   {
+    // The reading process's own limits name the option that raises them.
+    if (error.find("(the reader's time limit)") != std::string::npos)
+    {
+      Fail(error + "; raise it with --read-time-limit");
+    }
+    if (error.find("the reader's limit") != std::string::npos)
+    {
+      Fail(error + "; raise it with --memory-limit");
+    }
     Fail(error + (SaysOutOfMemory(error) ? MemoryLimitText() : std::string()));
   }
   for (int i = 0; i < reader->GetNumberOfWarnings(); ++i)
