@@ -109,6 +109,50 @@ bool CellTypeSize(int type, CellSize& size)
   return true;
 }
 
+/**
+ * Whether npts is a number of points a Lagrange or Bezier cell of the type has at some order
+ * (VTK infers the order from it; a count no order gives, say an 11-point wedge, made
+ * vtkUnstructuredGridGeometryFilter read outside its arrays). Types that are not higher-order
+ * pass.
+ */
+bool HigherOrderSizeValid(int type, vtkIdType npts)
+{
+  const bool curve = type == VTK_LAGRANGE_CURVE || type == VTK_BEZIER_CURVE;
+  const bool triangle = type == VTK_LAGRANGE_TRIANGLE || type == VTK_BEZIER_TRIANGLE;
+  const bool quad = type == VTK_LAGRANGE_QUADRILATERAL || type == VTK_BEZIER_QUADRILATERAL;
+  const bool tetra = type == VTK_LAGRANGE_TETRAHEDRON || type == VTK_BEZIER_TETRAHEDRON;
+  const bool hexahedron = type == VTK_LAGRANGE_HEXAHEDRON || type == VTK_BEZIER_HEXAHEDRON;
+  const bool wedge = type == VTK_LAGRANGE_WEDGE || type == VTK_BEZIER_WEDGE;
+  const bool pyramid = type == VTK_LAGRANGE_PYRAMID || type == VTK_BEZIER_PYRAMID;
+  if (curve || !(triangle || quad || tetra || hexahedron || wedge || pyramid))
+  {
+    return true; // (a curve of n points is of order n - 1)
+  }
+  // VTK's special cases: a quadratic triangle, tetrahedron or wedge with face (and body) points.
+  if ((triangle && npts == 7) || (tetra && npts == 15) || (wedge && npts == 21))
+  {
+    return true;
+  }
+  for (vtkIdType p = 1; p <= 64; ++p)
+  {
+    const vtkIdType count = triangle ? (p + 1) * (p + 2) / 2
+      : quad                         ? (p + 1) * (p + 1)
+      : tetra                        ? (p + 1) * (p + 2) * (p + 3) / 6
+      : hexahedron                   ? (p + 1) * (p + 1) * (p + 1)
+      : wedge                        ? (p + 1) * (p + 1) * (p + 2) / 2
+                                     : (p + 1) * (p + 2) * (2 * p + 3) / 6;
+    if (count == npts)
+    {
+      return true;
+    }
+    if (count > npts)
+    {
+      return false;
+    }
+  }
+  return false;
+}
+
 /** The name of a linear cell type that quadratic cells are written with by mistake. */
 const char* LinearCellName(int type)
 {
@@ -153,6 +197,7 @@ void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
   {
     Fail(what + ": the numbers of cells and cell types differ");
   }
+  const bool degrees = ug->GetCellData()->GetArray("HigherOrderDegrees") != nullptr;
   vtkIdType longCells = 0, firstLong = -1;
   for (vtkIdType i = 0; i < numberOfCells; ++i)
   {
@@ -169,11 +214,17 @@ void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
       firstLong = longCells++ == 0 ? i : firstLong;
       continue;
     }
-    if (size.AtLeast ? npts < size.Size : npts != size.Size)
+    // (a cell array "HigherOrderDegrees" gives the orders instead: VTK reads them from it)
+    if ((size.AtLeast ? npts < size.Size : npts != size.Size) ||
+      (!degrees && !HigherOrderSizeValid(type, npts)))
     {
+      const bool tooFew = size.AtLeast ? npts < size.Size : npts != size.Size;
       Fail(what + ": cell " + std::to_string(static_cast<long long>(i)) + " of type " +
         std::to_string(type) + " has " + std::to_string(static_cast<long long>(npts)) +
-        " points, expected " + (size.AtLeast ? "at least " : "") + std::to_string(size.Size));
+        " points, " +
+        (tooFew
+            ? "expected " + std::string(size.AtLeast ? "at least " : "") + std::to_string(size.Size)
+            : std::string("a number no order of a cell of its type has")));
     }
   }
   if (longCells == 0)

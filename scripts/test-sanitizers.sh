@@ -4,7 +4,8 @@
 # it (the ParaView plugin is left out: ParaView's processes are not instrumented), then the
 # refusals of broken input with leak detection (Testing/Sanitizers/lsan.supp suppresses leaks
 # inside libraries the project cannot fix). Any report fails its test. Last, the libFuzzer targets
-# (Testing/Fuzz, built with clang) fuzz the format checks and the isolated reader for
+# (Testing/Fuzz, built with clang) fuzz the format checks, the isolated reader and the validation
+# of what a reader gave for
 # STYLIZE_FUZZ_SECONDS each (default 60), from a copy of the committed seed corpus; a crash, a
 # hang, a leak or a sanitizer report fails the stage and leaves the input in
 # build-fuzz/artifacts (add it to Testing/Fuzz/corpus once fixed).
@@ -40,13 +41,16 @@ cmake -S "$STYLIZE_ROOT/Testing/Fuzz" -B "$fuzz_build" -DCMAKE_BUILD_TYPE=RelWit
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ >/dev/null
 cmake --build "$fuzz_build" -j "$STYLIZE_JOBS"
 rm -rf "$fuzz_build/artifacts" && mkdir -p "$fuzz_build/artifacts"
-for target in Checks Reader; do
+for target in Checks Reader Validate; do
   corpus="$fuzz_build/corpus-$target"
-  rm -rf "$corpus" && mkdir -p "$corpus" && cp "$STYLIZE_ROOT"/Testing/Fuzz/corpus/* "$corpus/"
+  seeds="$STYLIZE_ROOT/Testing/Fuzz/corpus"
+  [ "$target" = Validate ] && seeds="$STYLIZE_ROOT/Testing/Fuzz/corpus-validate"
+  rm -rf "$corpus" && mkdir -p "$corpus" && cp "$seeds"/* "$corpus/"
   # (the reader's child may use up to its own limits; -rss_limit_mb bounds the caller)
   log="$fuzz_build/fuzz-$target.log"
   rc=0
   ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1:detect_odr_violation=0" \
+    LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0" \
     "$fuzz_build/vtkStylizeFuzz$target" -max_total_time="${STYLIZE_FUZZ_SECONDS:-60}" \
     -timeout=60 -rss_limit_mb=4096 -print_final_stats=1 \
     -artifact_prefix="$fuzz_build/artifacts/$target-" "$corpus" >"$log" 2>&1 || rc=$?

@@ -535,6 +535,22 @@ int main(int argc, char* argv[])
     text += "\nCELL_TYPES 1\n12\n";
     WriteText("hex20_typed_12.vtk", text);
   }
+  // A Lagrange wedge of 11 points, a number no order of a wedge has (6, 18, 21, 40...): VTK's
+  // geometry filter read outside its arrays for it (found by vtkStylizeFuzzValidate).
+  {
+    vtkNew<vtkUnstructuredGrid> ug;
+    vtkNew<vtkPoints> points;
+    for (int i = 0; i < 11; ++i)
+    {
+      points->InsertNextPoint(0.1 * i, 0.05 * (i % 3), 0.07 * (i % 4));
+    }
+    ug->SetPoints(points);
+    vtkIdType ids[11] = { 1, 0, 2, 3, 4, 5, 6, 7, 8, 9, 10 };
+    ug->InsertNextCell(VTK_LAGRANGE_WEDGE, 11, ids);
+    vtkNew<vtkXMLUnstructuredGridWriter> w;
+    w->SetInputData(ug);
+    Write(w.Get(), "lagrange_wedge_11.vtu");
+  }
   // A surface whose point array holds one value (an isosurface of that array).
   {
     vtkNew<vtkSphereSource> sphere;
