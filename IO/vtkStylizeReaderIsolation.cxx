@@ -580,19 +580,23 @@ void Handle(const Record& record, Reception& in)
       in.Tree.Add(nullptr, record.Text, 0);
       break;
     case 'M':
-    {
-      const unsigned int count = static_cast<unsigned int>(std::stoul(head));
-      vtkNew<vtkMultiBlockDataSet> node;
-      node->SetNumberOfBlocks(count);
-      in.Tree.Add(node.Get(), rest, count);
-      break;
-    }
     case 'P':
     {
       const unsigned int count = static_cast<unsigned int>(std::stoul(head));
-      vtkNew<vtkMultiPieceDataSet> node;
-      node->SetNumberOfPieces(count);
-      in.Tree.Add(node.Get(), rest, count);
+      vtkSmartPointer<vtkCompositeDataSet> node;
+      if (record.Kind == 'M')
+      {
+        auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+        blocks->SetNumberOfBlocks(count);
+        node = blocks;
+      }
+      else
+      {
+        auto pieces = vtkSmartPointer<vtkMultiPieceDataSet>::New();
+        pieces->SetNumberOfPieces(count);
+        node = pieces;
+      }
+      in.Tree.Add(node, rest, count);
       break;
     }
     case 'L':

@@ -161,15 +161,20 @@ void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations
   const int magnify = std::max(1, opt.Magnify);
   const int fontSize = std::max(8, std::min(opt.Width, opt.Height) / 28) * magnify;
 
-  vtkNew<vtkTextActor> title;
-  title->SetInput(info.Title.c_str());
-  title->GetTextProperty()->SetFontSize(fontSize);
-  title->GetTextProperty()->SetColor(ink, ink, ink);
-  title->GetTextProperty()->SetJustificationToLeft();
-  title->GetTextProperty()->SetVerticalJustificationToTop();
-  title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  title->GetPositionCoordinate()->SetValue(0.02, 0.97);
-  ren->AddActor2D(title);
+  // A line of text in the ink, its top at 97% of the height, from the left or the right edge.
+  auto addText = [&](const std::string& text, bool right)
+  {
+    vtkNew<vtkTextActor> actor;
+    actor->SetInput(text.c_str());
+    actor->GetTextProperty()->SetFontSize(fontSize);
+    actor->GetTextProperty()->SetColor(ink, ink, ink);
+    actor->GetTextProperty()->SetJustification(right ? VTK_TEXT_RIGHT : VTK_TEXT_LEFT);
+    actor->GetTextProperty()->SetVerticalJustificationToTop();
+    actor->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    actor->GetPositionCoordinate()->SetValue(right ? 0.98 : 0.02, 0.97);
+    ren->AddActor2D(actor);
+  };
+  addText(info.Title, false);
 
   // Black-and-white output (comic or sketch, not tinted; line art) shows no colours: no colour
   // legend unless --scalar-bar asks for one.
@@ -195,16 +200,7 @@ void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations
   if (!info.ScalarBarArray.empty() && it != maps.end() && (!blackAndWhite || opt.ScalarBar) &&
     constant != info.ConstantArrays.end())
   {
-    vtkNew<vtkTextActor> label;
-    label->SetInput(
-      (info.ScalarBarArray + " = " + FormatNumber(constant->second) + " (constant)").c_str());
-    label->GetTextProperty()->SetFontSize(fontSize);
-    label->GetTextProperty()->SetColor(ink, ink, ink);
-    label->GetTextProperty()->SetJustificationToRight();
-    label->GetTextProperty()->SetVerticalJustificationToTop();
-    label->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    label->GetPositionCoordinate()->SetValue(0.98, 0.97);
-    ren->AddActor2D(label);
+    addText(info.ScalarBarArray + " = " + FormatNumber(constant->second) + " (constant)", true);
   }
   else if (!info.ScalarBarArray.empty() && it != maps.end() && (!blackAndWhite || opt.ScalarBar))
   {
