@@ -91,7 +91,12 @@ double StatusBytes(const char* name)
   return 0.0;
 }
 
-/** The resident size of process pid in bytes (0 when it cannot be read). */
+/**
+ * The anonymous resident size of process pid in bytes (0 when it cannot be read): resident less
+ * shared (file and shared-memory pages). A forked child has the parent's anonymous pages from its
+ * start but maps the parent's files again as it touches them, so only the anonymous part compares
+ * with what the parent had.
+ */
 double ResidentBytes(pid_t pid)
 {
   char path[64];
@@ -104,12 +109,13 @@ double ResidentBytes(pid_t pid)
   char text[128] = { 0 };
   const ssize_t n = ::read(fd, text, sizeof(text) - 1);
   ::close(fd);
-  unsigned long size = 0, resident = 0;
-  if (n <= 0 || std::sscanf(text, "%lu %lu", &size, &resident) != 2)
+  unsigned long size = 0, resident = 0, shared = 0;
+  if (n <= 0 || std::sscanf(text, "%lu %lu %lu", &size, &resident, &shared) != 3)
   {
     return 0.0;
   }
-  return static_cast<double>(resident) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+  return static_cast<double>(resident > shared ? resident - shared : 0) *
+    static_cast<double>(::sysconf(_SC_PAGESIZE));
 }
 
 /** The total size of the regular files under folder (at most depth levels, 100000 entries). */
