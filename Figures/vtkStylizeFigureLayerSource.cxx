@@ -49,6 +49,27 @@ vtkStylizeStylePass* vtkStylizeFigureLayerSource::FindStylePass()
 }
 
 //------------------------------------------------------------------------------
+vtkRenderer* vtkStylizeFigureLayerSource::FindStyleRenderer()
+{
+  vtkStylizeStylePass* style = this->FindStylePass();
+  vtkRendererCollection* renderers =
+    this->RenderWindow ? this->RenderWindow->GetRenderers() : nullptr;
+  if (!style || !renderers)
+  {
+    return nullptr;
+  }
+  renderers->InitTraversal();
+  while (vtkRenderer* ren = renderers->GetNextItem())
+  {
+    if (ren->GetPass() == style)
+    {
+      return ren;
+    }
+  }
+  return nullptr;
+}
+
+//------------------------------------------------------------------------------
 void vtkStylizeFigureLayerSource::RenderFrame()
 {
   if (this->RenderWindow)

@@ -19,6 +19,7 @@ class vtkContext2D;
 class vtkImageData;
 class vtkProp;
 class vtkRenderWindow;
+class vtkRenderer;
 class vtkStylizeStylePass;
 class vtkViewport;
 
@@ -37,6 +38,13 @@ public:
 
   /** The style pass to draw: the first renderer's of the window that renders with one. */
   virtual vtkStylizeStylePass* FindStylePass();
+
+  /**
+   * The renderer the style draws: the one whose pass it is. The window's other renderers (an
+   * orientation marker's, ParaView's annotation renderer) render over it unstylized: a figure
+   * leaves them out of the style's layers and draws what their 3D props show as an image.
+   */
+  virtual vtkRenderer* FindStyleRenderer();
 
   /**
    * Renders the window once as it is, so that the 2D actors lay themselves out before they are

@@ -7,6 +7,7 @@
 #include "vtkCoordinate.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
+#include "vtkProp3D.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -20,6 +21,8 @@
 #include "vtkViewport.h"
 #include "vtkWindow.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -104,26 +107,45 @@ void DrawText(Canvas& c, vtkTextActor* text, vtkViewport* viewport, int magnific
   cairo_font_extents_t fe;
   cairo_font_extents(c.Cr, &fe);
   const double height = (fe.ascent + fe.descent) * (1.0 + (lines.size() - 1) * spacing);
-  // centred vertically in VTK's box (whose padding differs slightly from cairo's extents)
-  const double top = c.H - 0.5 * (y0 + y1) - 0.5 * height;
-  double* rgb = tp->GetColor();
-  cairo_set_source_rgba(c.Cr, rgb[0], rgb[1], rgb[2], tp->GetOpacity());
-  double baseline = top + fe.ascent;
+  // VTK's box starts at the top of the first line's ink (its top row is y1, whose upper edge
+  // is y1 + 1): the baseline goes where that ink top meets the box's (centred in the box when
+  // the first line has no ink)
+  cairo_text_extents_t first;
+  cairo_text_extents(c.Cr, lines[0].c_str(), &first);
+  double baseline = first.height > 0.0 ? c.H - (y1 + 1.0) - first.y_bearing
+                                       : c.H - 0.5 * (y0 + y1) - 0.5 * height + fe.ascent;
+  // FreeType's hinted advances make VTK's lines a little wider or narrower than cairo's
+  // unhinted ones: the lines are stretched to VTK's box width (by at most 10%)
+  double widest = 0.0;
   for (const std::string& line : lines)
   {
     cairo_text_extents_t te;
     cairo_text_extents(c.Cr, line.c_str(), &te);
+    widest = std::max(widest, te.x_advance);
+  }
+  const double stretch = widest > 0.0 ? std::max(0.9, std::min(1.1, (x1 - x0) / widest)) : 1.0;
+  double* rgb = tp->GetColor();
+  cairo_set_source_rgba(c.Cr, rgb[0], rgb[1], rgb[2], tp->GetOpacity());
+  for (const std::string& line : lines)
+  {
+    cairo_text_extents_t te;
+    cairo_text_extents(c.Cr, line.c_str(), &te);
+    const double w = te.x_advance * stretch;
     double x = x0;
     if (hj == VTK_TEXT_CENTERED)
     {
-      x = 0.5 * (x0 + x1 - te.x_advance);
+      x = 0.5 * (x0 + x1 - w);
     }
     else if (hj == VTK_TEXT_RIGHT)
     {
-      x = x1 - te.x_advance;
+      x = x1 - w;
     }
-    cairo_move_to(c.Cr, x, baseline);
+    cairo_save(c.Cr);
+    cairo_translate(c.Cr, x, baseline);
+    cairo_scale(c.Cr, stretch, 1.0);
+    cairo_move_to(c.Cr, 0.0, 0.0);
     cairo_show_text(c.Cr, line.c_str());
+    cairo_restore(c.Cr);
     baseline += (fe.ascent + fe.descent) * spacing;
   }
   cairo_new_path(c.Cr);
@@ -187,6 +209,82 @@ void DrawScalarBar(Canvas& c, vtkScalarBarActor* bar, vtkViewport* viewport, int
     }
   }
 }
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkRenderer*> SceneOverlayRenderers(vtkRenderWindow* window, vtkRenderer* styleRenderer)
+{
+  std::vector<vtkRenderer*> out;
+  vtkRendererCollection* renderers = window->GetRenderers();
+  renderers->InitTraversal();
+  while (vtkRenderer* ren = renderers->GetNextItem())
+  {
+    if (ren == styleRenderer || !ren->GetDraw())
+    {
+      continue;
+    }
+    vtkPropCollection* props = ren->GetViewProps();
+    props->InitTraversal();
+    while (vtkProp* prop = props->GetNextProp())
+    {
+      if (prop->GetVisibility() && vtkProp3D::SafeDownCast(prop))
+      {
+        out.push_back(ren);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+void DrawOverlayPixels(Canvas& c, const Image& with, const Image& without)
+{
+  if (with.W != without.W || with.H != without.H || with.W <= 0 || with.H <= 0)
+  {
+    return;
+  }
+  int x0 = with.W, y0 = with.H, x1 = -1, y1 = -1;
+  for (int y = 0; y < with.H; ++y)
+  {
+    for (int x = 0; x < with.W; ++x)
+    {
+      if (with.Key(x, y) != without.Key(x, y))
+      {
+        x0 = std::min(x0, x);
+        x1 = std::max(x1, x);
+        y0 = std::min(y0, y);
+        y1 = std::max(y1, y);
+      }
+    }
+  }
+  if (x1 < 0)
+  {
+    return;
+  }
+  // (rows top to bottom in cairo; the images' row 0 is the bottom)
+  const int w = x1 - x0 + 1, h = y1 - y0 + 1;
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
+  cairo_surface_flush(surface);
+  unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  for (int y = y0; y <= y1; ++y)
+  {
+    auto* row = reinterpret_cast<uint32_t*>(data + static_cast<size_t>(y1 - y) * stride);
+    for (int x = x0; x <= x1; ++x)
+    {
+      const unsigned key = with.Key(x, y);
+      row[x - x0] = key != without.Key(x, y) ? (0xff000000u | key) : 0u;
+    }
+  }
+  cairo_surface_mark_dirty(surface);
+  cairo_save(c.Cr);
+  cairo_set_source_surface(c.Cr, surface, x0, c.H - 1 - y1);
+  cairo_pattern_set_filter(cairo_get_source(c.Cr), CAIRO_FILTER_NEAREST);
+  cairo_paint(c.Cr);
+  cairo_restore(c.Cr);
+  cairo_surface_destroy(surface);
+  ++c.Images;
 }
 
 //------------------------------------------------------------------------------

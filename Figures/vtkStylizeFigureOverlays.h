@@ -46,6 +46,21 @@ std::vector<Overlay> HideOverlays(
   vtkRenderWindow* window, std::vector<std::pair<vtkProp*, int>>& hidden);
 
 /**
+ * The renderers of `window` other than `styleRenderer` that draw visible 3D props (an
+ * orientation marker's axes, ParaView's orientation axes): they render unstylized over the
+ * style's renderer, so the layers are captured without them and their pixels drawn apart.
+ */
+std::vector<vtkRenderer*> SceneOverlayRenderers(
+  vtkRenderWindow* window, vtkRenderer* styleRenderer);
+
+/**
+ * Draws the pixels of `with` (the frame with the scene overlays' renderers) that differ from
+ * `without` (the frame without them) as one image clipped to those pixels: 3D overlays as the
+ * screen shows them (an image: they are geometry the figure has no vector drawer for).
+ */
+void DrawOverlayPixels(Canvas& c, const Image& with, const Image& without);
+
+/**
  * Draws `overlays` on `c` in their order, each shown only while it is drawn; `paint` paints
  * those that draw through vtkContext2D.
  */

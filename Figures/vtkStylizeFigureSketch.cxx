@@ -327,6 +327,42 @@ bool DrawVectorSketch(Canvas& c, vtkSketchPass* sketch, int paperMode, int maxim
   return true;
 }
 
+namespace
+{
+/** The mask's maximum (Dilated) or minimum (Eroded) over each pixel's 3 x 3 neighbourhood. */
+std::vector<float> Filtered3x3(const std::vector<float>& m, int W, int H, bool maximum)
+{
+  std::vector<float> out(m.size());
+  for (int y = 0; y < H; ++y)
+  {
+    for (int x = 0; x < W; ++x)
+    {
+      float v = m[static_cast<size_t>(y) * W + x];
+      for (int j = std::max(0, y - 1); j <= std::min(H - 1, y + 1); ++j)
+      {
+        for (int i = std::max(0, x - 1); i <= std::min(W - 1, x + 1); ++i)
+        {
+          const float q = m[static_cast<size_t>(j) * W + i];
+          v = maximum ? std::max(v, q) : std::min(v, q);
+        }
+      }
+      out[static_cast<size_t>(y) * W + x] = v;
+    }
+  }
+  return out;
+}
+
+std::vector<float> Dilated(const std::vector<float>& m, int W, int H)
+{
+  return Filtered3x3(m, W, H, true);
+}
+
+std::vector<float> Eroded(const std::vector<float>& m, int W, int H)
+{
+  return Filtered3x3(m, W, H, false);
+}
+}
+
 //------------------------------------------------------------------------------
 bool DrawSketch(Canvas& c, const Image& frame, vtkSketchPass* sketch, double outlineWidth,
   int paperMode, int maximumPaperColors)
@@ -357,6 +393,10 @@ bool DrawSketch(Canvas& c, const Image& frame, vtkSketchPass* sketch, double out
       background[static_cast<size_t>(y) * W + x] = keyed.Key(x, y) == 0xff00ffu ? 1.0f : 0.0f;
     }
   }
+  // the surfaces' outline: lines and points (an axes grid, a wireframe) drawn one or two pixels
+  // wide are opened away (the background dilated, then eroded, by a 3 x 3 square) so that the
+  // pencil does not outline them as shapes
+  background = Eroded(Dilated(background, W, H), W, H);
   cairo_new_path(c.Cr);
   c.Paths += TraceInto(c.Cr, background, W, H, 0.5f, 1);
   double* pencil = sketch->GetPencilColor();

@@ -194,15 +194,18 @@ int vtkStylizeFigureWriter::Write()
 
   // ---- capture: the 2D actors hidden while the layers render, drawn as vectors afterwards
   std::vector<Overlay> overlays;
+  std::vector<vtkRenderer*> sceneOverlays;
   if (vtkRenderWindow* window = source->GetRenderWindow())
   {
     // one render with the 2D actors in place, so that they lay themselves out
     source->RenderFrame();
     overlays = HideOverlays(window, this->Internal->Hidden);
+    sceneOverlays = SceneOverlayRenderers(window, source->FindStyleRenderer());
   }
   struct Restore
   {
     Internals* I;
+    std::vector<vtkRenderer*>& Renderers;
     ~Restore()
     {
       for (auto& h : I->Hidden)
@@ -210,8 +213,12 @@ int vtkStylizeFigureWriter::Write()
         h.first->SetVisibility(h.second);
       }
       I->Hidden.clear();
+      for (vtkRenderer* ren : this->Renderers)
+      {
+        ren->DrawOn();
+      }
     }
-  } restore{ this->Internal };
+  } restore{ this->Internal, sceneOverlays };
 
   Canvas c;
   const int magnification = this->Magnification;
@@ -221,11 +228,20 @@ int vtkStylizeFigureWriter::Write()
     return source->CaptureLayer(layer, key, magnification, data) && ToImage(data, image);
   };
   // the frame as the PNG shows it (without the 2D actors)
-  Image frame;
+  Image frame, withSceneOverlays;
   const int frameLayer = comic ? static_cast<int>(vtkComicPass::COMIC)
     : pixelArt                 ? static_cast<int>(vtkPixelArtPass::PIXEL_ART)
     : sketch                   ? static_cast<int>(vtkSketchPass::SKETCH)
                                : static_cast<int>(vtkLineArtPass::LINE_ART);
+  // the unstylized renderers' 3D props (orientation axes) out of the style's layers
+  if (!sceneOverlays.empty() && !c.Capture(frameLayer, nullptr, withSceneOverlays))
+  {
+    return fail("rendering the figure's layers failed");
+  }
+  for (vtkRenderer* ren : sceneOverlays)
+  {
+    ren->DrawOff();
+  }
   if (!c.Capture(frameLayer, nullptr, frame))
   {
     return fail("rendering the figure's layers failed");
@@ -239,6 +255,10 @@ int vtkStylizeFigureWriter::Write()
   c.Magnification = this->Magnification;
   c.Supersampling = BoundedSupersampling(this->TraceSupersampling, c.W, c.H);
   const bool ok = DrawStyle(c, frame, style, this);
+  if (!sceneOverlays.empty())
+  {
+    DrawOverlayPixels(c, withSceneOverlays, frame);
+  }
   DrawOverlays(c, overlays,
     [source](vtkProp* actor, vtkViewport* viewport, vtkContext2D* painter)
     { return source->PaintContextOverlay(actor, viewport, painter); });
