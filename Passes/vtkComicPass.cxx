@@ -126,7 +126,7 @@ void vtkComicPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent
      << "HatchOrientation: " << (this->HatchOrientation == PRINCIPAL ? "principal" : "fixed")
      << "\n";
-  os << indent << "Tinted: " << this->Tinted << "\n";
+  os << indent << "Tint: " << this->Tint << "\n";
   os << indent << "Anchor: " << (this->Anchor == OBJECT ? "object" : "screen") << "\n";
   os << indent << "Layer: "
      << (this->Layer == EDGES ? "edges" : (this->Layer == PATTERN ? "pattern" : "comic")) << "\n";
@@ -134,10 +134,15 @@ void vtkComicPass::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
+void vtkComicPass::ConfigureLightingColors(vtkStylizeLightingPass* lighting)
+{
+  lighting->SetColorMode(ColorModeForTint(this->Tint));
+  lighting->SetSolidColorTones(false);
+}
+
+//------------------------------------------------------------------------------
 bool vtkComicPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
 {
-  // Black and white: the tone is the light alone; tinted: the lit colour keeps the data's hue.
-  this->GetLightingPass()->SetMonochrome(!this->Tinted);
   const Plan plan = this->PlanFrame(frame.Interactive);
   if (!this->RenderScene(s, plan.Scene))
   {
@@ -218,7 +223,7 @@ vtkComicPass::Plan vtkComicPass::PlanFrame(bool interactive) const
   define(this->Hatching, "COMIC_HATCH");
   define(this->Hatching && this->CrossHatching, "COMIC_CROSS");
   define(p.ObjectAnchor, "COMIC_OBJECT_ANCHOR");
-  define(this->Tinted, "COMIC_TINTED");
+  define(this->Tint != BLACK_AND_WHITE, "COMIC_TINTED");
   p.Defines += "#define COMIC_LAYER " + std::to_string(this->Layer) + "\n";
   // the pattern's constants, shared with the vector figure
   p.Defines += vtkComicPatterns::ShaderDefines();

@@ -7,9 +7,9 @@
  * render pass. Use it like any VTK pass: `renderer->SetPass(comic)`; it needs no delegate.
  * The opaque geometry is rendered once into the shared G-buffer (vtkStylizeGBufferPass) with
  * the Comic lighting model (vtkStylizeLightingPass). Edges come from Sobel filters on the
- * linear depth (scale-free), the normals and the colour; the lit tone is drawn as halftone dots
- * above BrightThreshold and hatch lines below DarkThreshold, in black ink, or under the lit
- * colour's hue with Tinted on.
+ * linear depth (scale-free), the normals and the colour; the light's tone is drawn as halftone
+ * dots above BrightThreshold and hatch lines below DarkThreshold, in black ink, on white paper
+ * or, where the data is coloured by an array, on paper of the colour map's hue (Tint).
  *
  * Lengths are in points (one pixel of an image ReferenceHeight pixels tall), so the picture is
  * the same at any resolution and in a magnified screenshot. Patterns are anchored to the screen
@@ -57,7 +57,7 @@ public:
     EDGES = 1,         ///< the edge factor e alone (white = no edge, black = full edge), gray
     PATTERN = 2,       ///< the dots and hatching alone, without edges
     FIGURE_INPUTS = 3, ///< red the tone, green the hatch direction's step / 255, blue the surface
-    PAPER = 4          ///< the paper under the ink: the tint (Tinted) or white; the background
+    PAPER = 4          ///< the paper under the ink (tint or white), lines and points; background
   };
 
   ///@{
@@ -66,7 +66,8 @@ public:
    * Values: COMIC, the pattern times the edges (the comic image); EDGES, the edge factor e alone
    * (white = no edge, black = full edge), gray; PATTERN, the dots and hatching alone, without
    * edges; FIGURE_INPUTS, red the tone, green the hatch direction's step / 255, blue the surface;
-   * PAPER, the paper under the ink: the tint (Tinted) or white; the background.
+   * PAPER, the paper under the ink: the tint (Tint) or white; lines and points as drawn; the
+   * background.
    */
   vtkSetClampMacro(Layer, int, COMIC, PAPER);
   vtkGetMacro(Layer, int);
@@ -267,12 +268,15 @@ public:
 
   ///@{
   /**
-   * Keep the data's colours: the paper takes the hue and saturation of the lit colour (scalar
-   * colormaps stay readable), the ink stays black. Default off: black and white.
+   * Which surfaces keep their colours: BLACK_AND_WHITE, DATA_COLORS (default) or ALL_COLORS.
+   * Values: BLACK_AND_WHITE, none: black ink on white paper; DATA_COLORS, surfaces coloured by an
+   * array: the paper takes the hue and saturation of the colour map at full value, so the data
+   * reads under the ink, solid colours stay white; ALL_COLORS, every surface, solid colours
+   * included. The tone (dots, hatching) comes from the light alone in all three: a surface
+   * coloured by a dark or mid-luminance map is not hatched all over.
    */
-  vtkSetMacro(Tinted, bool);
-  vtkGetMacro(Tinted, bool);
-  vtkBooleanMacro(Tinted, bool);
+  vtkSetClampMacro(Tint, int, BLACK_AND_WHITE, ALL_COLORS);
+  vtkGetMacro(Tint, int);
   ///@}
 
   ///@{
@@ -301,6 +305,9 @@ public:
 
   /** Sets Layer and returns the one it had (vtkStylizeStylePass::SwapLayer()). */
   int SwapLayer(int layer) override;
+  bool GetTinted() override { return this->Tint != BLACK_AND_WHITE; }
+  /** The tone of the light alone, on paper of the data's hue as Tint says. */
+  void ConfigureLightingColors(vtkStylizeLightingPass* lighting) override;
 
 protected:
   /**
@@ -337,7 +344,7 @@ protected:
   double CrossThreshold = 0.12;
   double BrightThreshold = 0.5;
   double DarkThreshold = 0.4;
-  bool Tinted = false;
+  int Tint = DATA_COLORS;
   int Anchor = SCREEN;
   int Layer = COMIC;
   double ReferenceHeight = 1080.0;

@@ -136,9 +136,17 @@ double vtkLineArtPass::GetReach(const Frame& frame)
 }
 
 //------------------------------------------------------------------------------
+void vtkLineArtPass::ConfigureLightingColors(vtkStylizeLightingPass* lighting)
+{
+  // gray on white paper: the light's tone, darkened by a solid colour's lightness (as the
+  // sketch's), not by a colour map's
+  lighting->SetColorMode(vtkStylizeLightingPass::LIGHT_TONE);
+  lighting->SetSolidColorTones(true);
+}
+
+//------------------------------------------------------------------------------
 bool vtkLineArtPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
 {
-  this->GetLightingPass()->SetMonochrome(true);
   SceneRequest scene;
   scene.Channels = vtkStylizeGBufferPass::LINEAR_DEPTH;
   if (!this->RenderScene(s, scene))

@@ -207,6 +207,8 @@ public:
 
   /** Sets Layer and returns the one it had (vtkStylizeStylePass::SwapLayer()). */
   int SwapLayer(int layer) override;
+  /** Gray: the light's tone, darkened by a solid colour's lightness (not a colour map's). */
+  void ConfigureLightingColors(vtkStylizeLightingPass* lighting) override;
   ///@}
 
   /**

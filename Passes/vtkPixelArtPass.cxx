@@ -152,6 +152,14 @@ void vtkPixelArtPass::RestoreAnchors()
 }
 
 //------------------------------------------------------------------------------
+void vtkPixelArtPass::ConfigureLightingColors(vtkStylizeLightingPass* lighting)
+{
+  lighting->SetColorMode(this->ColoredLights ? vtkStylizeLightingPass::LIT_COLORS
+                                             : vtkStylizeLightingPass::NEUTRAL_LIGHTS);
+  lighting->SetSolidColorTones(false);
+}
+
+//------------------------------------------------------------------------------
 int vtkPixelArtPass::SwapLayer(int layer)
 {
   const int previous = this->Layer;
@@ -278,6 +286,7 @@ void vtkPixelArtPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DitherSize: " << this->DitherSize << "\n";
   os << indent << "DitherAnchor: " << anchors[this->DitherAnchor] << "\n";
   os << indent << "SnapToGrid: " << this->SnapToGrid << "\n";
+  os << indent << "ColoredLights: " << this->ColoredLights << "\n";
   os << indent << "StylizeBackground: " << this->StylizeBackground << "\n";
   os << indent << "Layer: " << layers[this->Layer] << "\n";
   os << indent << "DepthOutput: " << (this->DepthOutput == DEPTH_ALWAYS ? "always" : "auto")

@@ -297,6 +297,18 @@ public:
   vtkBooleanMacro(StylizeBackground, bool);
   ///@}
 
+  ///@{
+  /**
+   * Light with the lights' own colours. Off (default): the lights shade by their luminance
+   * alone, so a gray or white surface stays gray under a coloured light kit (ParaView's warm key
+   * and cool fill lights), where the lights' faint tint would dither into coloured dots the data
+   * does not have; coloured surfaces keep their colours. On: VTK's coloured lights.
+   */
+  vtkSetMacro(ColoredLights, bool);
+  vtkGetMacro(ColoredLights, bool);
+  vtkBooleanMacro(ColoredLights, bool);
+  ///@}
+
   /** When the pass writes the scene's depth into the output's depth buffer. */
   enum DepthOutputs
   {
@@ -329,6 +341,8 @@ public:
 
   /** Sets Layer and returns the one it had (vtkStylizeStylePass::SwapLayer()). */
   int SwapLayer(int layer) override;
+  /** The surface's colours under neutral lights, or the lights' colours (ColoredLights). */
+  void ConfigureLightingColors(vtkStylizeLightingPass* lighting) override;
   ///@}
 
   /**
@@ -381,6 +395,7 @@ protected:
   int DitherAnchor = GRID;
   bool SnapToGrid = true;
   bool StylizeBackground = false;
+  bool ColoredLights = false;
   int Layer = PIXEL_ART;
   int DepthOutput = DEPTH_AUTO;
 

@@ -150,6 +150,13 @@ void vtkSketchPass::RestoreAnchors()
 }
 
 //------------------------------------------------------------------------------
+void vtkSketchPass::ConfigureLightingColors(vtkStylizeLightingPass* lighting)
+{
+  lighting->SetColorMode(ColorModeForTint(this->Tint));
+  lighting->SetSolidColorTones(true);
+}
+
+//------------------------------------------------------------------------------
 int vtkSketchPass::SwapLayer(int layer)
 {
   const int previous = this->Layer;
@@ -394,7 +401,7 @@ void vtkSketchPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->PencilColor[2] << "\n";
   os << indent << "PaperColor: " << this->PaperColor[0] << " " << this->PaperColor[1] << " "
      << this->PaperColor[2] << "\n";
-  os << indent << "Tinted: " << this->Tinted << "\n";
+  os << indent << "Tint: " << this->Tint << "\n";
   os << indent << "ReferenceHeight: " << this->ReferenceHeight << " px\n";
   os << indent << "FeatureLines: " << this->FeatureLines << "\n";
   os << indent << "FeatureLineWidth: " << this->FeatureLineWidth << " pt\n";
@@ -639,7 +646,7 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   define(this->LicMode == SCREEN_2D, "SKETCH_SCREEN_LIC");
   define(cross, "SKETCH_CROSS");
   define(p.Contrast, "SKETCH_CONTRAST");
-  define(this->Tinted, "SKETCH_TINTED");
+  define(this->Tint != BLACK_AND_WHITE, "SKETCH_TINTED");
   define(true, "SKETCH_LAYER " + std::to_string(this->Layer));
   p.FeatureLines = this->FeatureLines && this->FeatureLineWidth > 0.0 && this->Layer == SKETCH &&
     this->GetTranslucentLayer() == 0;

@@ -98,6 +98,12 @@ public:
 
   /** Sets Layer and returns the one it had (vtkStylizeStylePass::SwapLayer()). */
   int SwapLayer(int layer) override;
+  bool GetTinted() override { return this->Tint != BLACK_AND_WHITE; }
+  /**
+   * The tone of the light, darkened by a solid colour's lightness (not by a colour map's), on
+   * paper of the data's hue as Tint says.
+   */
+  void ConfigureLightingColors(vtkStylizeLightingPass* lighting) override;
   ///@}
 
   ///@{
@@ -424,10 +430,15 @@ public:
   ///@}
 
   ///@{
-  /** Paper tinted by the lit colour's hue (the data's colours under the pencil). Default off. */
-  vtkSetMacro(Tinted, bool);
-  vtkGetMacro(Tinted, bool);
-  vtkBooleanMacro(Tinted, bool);
+  /**
+   * Which surfaces keep their colours: BLACK_AND_WHITE, DATA_COLORS (default) or ALL_COLORS.
+   * Values: BLACK_AND_WHITE, none: the pencil on PaperColor; DATA_COLORS, surfaces coloured by an
+   * array: the paper takes the hue and saturation of the colour map at full value (times
+   * PaperColor), solid colours stay PaperColor; ALL_COLORS, every surface, solid colours
+   * included. The strokes' tone comes from the light alone in all three.
+   */
+  vtkSetClampMacro(Tint, int, BLACK_AND_WHITE, ALL_COLORS);
+  vtkGetMacro(Tint, int);
   ///@}
 
   ///@{
@@ -508,7 +519,7 @@ protected:
   double BrightThresholds[2] = { 0.45, 0.62 };
   double PencilColor[3] = { 0.12, 0.12, 0.14 };
   double PaperColor[3] = { 1.0, 1.0, 1.0 };
-  bool Tinted = false;
+  int Tint = DATA_COLORS;
   double ReferenceHeight = 1080.0;
   bool FeatureLines = true;
   double FeatureLineWidth = 1.5;

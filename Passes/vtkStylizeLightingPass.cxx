@@ -103,7 +103,8 @@ void vtkStylizeLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GrayLevelsNear: " << this->GrayLevelsNear << "\n";
   os << indent << "GrayLevelsFar: " << this->GrayLevelsFar << "\n";
   os << indent << "SpecularGain: " << this->SpecularGain << "\n";
-  os << indent << "Monochrome: " << this->Monochrome << "\n";
+  os << indent << "ColorMode: " << this->ColorMode << "\n";
+  os << indent << "SolidColorTones: " << this->SolidColorTones << "\n";
   os << indent << "Scattering: " << this->Scattering << "\n";
   os << indent << "SpecularOcclusion: " << this->SpecularOcclusion << "\n";
   os << indent << "NumberOfLights: " << this->NumberOfLights << "\n";
@@ -487,9 +488,14 @@ bool vtkStylizeLightingPass::PostReplaceShaderValues(
   if (lit)
   {
     vtkStylizeShaderUtilities::InjectCommon(fragmentShader);
+    // (the colour comes from an array: point colours, or a colour map's texture or buffer, which
+    // VTK 9.1's mapper reads into texColor)
+    const bool dataColors = fragmentShader.find("vertexColorVSOutput") != std::string::npos ||
+      fragmentShader.find("vec4 texColor =") != std::string::npos;
     vtkShaderProgram::Substitute(fragmentShader, LightDecTag,
       "#define STYLIZE_MODEL " + std::to_string(this->Model) + "\n" +
-        (this->HeadlightOnly ? "#define STYLIZE_HEADLIGHT_ONLY\n" : "") + vtkStylizeLightingDec,
+        (this->HeadlightOnly ? "#define STYLIZE_HEADLIGHT_ONLY\n" : "") +
+        (dataColors ? "#define STYLIZE_DATA_COLORS\n" : "") + vtkStylizeLightingDec,
       false);
     vtkShaderProgram::Substitute(fragmentShader, LightImplTag,
       std::string(vtkStylizeLightingImpl) + "\n  //VTK::Light::Impl", false);
@@ -521,7 +527,8 @@ bool vtkStylizeLightingPass::SetShaderParameters(
     static_cast<float>(ActorValue(prop, GRAY_LEVELS_NEAR(), this->GrayLevelsNear, 0.0, 100.0)));
   program->SetUniformf("stylizeLevelsFar",
     static_cast<float>(ActorValue(prop, GRAY_LEVELS_FAR(), this->GrayLevelsFar, 0.0, 100.0)));
-  program->SetUniformi("stylizeMonochrome", this->Monochrome ? 1 : 0);
+  program->SetUniformi("stylizeColorMode", this->ColorMode);
+  program->SetUniformi("stylizeSolidColorTones", this->SolidColorTones ? 1 : 0);
   program->SetUniformf("stylizeSpecularGain",
     static_cast<float>(ActorValue(prop, SPECULAR_GAIN(), this->SpecularGain, 0.0, 100.0)));
   const float range[2] = { static_cast<float>(this->DepthRange[0]),

@@ -119,16 +119,47 @@ public:
   vtkGetMacro(SpecularGain, double);
   ///@}
 
+  /** What the lit colour is made of (ColorMode). */
+  enum ColorModes
+  {
+    LIT_COLORS = 0,     ///< the surface's colours times the lights' (VTK's lighting)
+    NEUTRAL_LIGHTS = 1, ///< the surface's colours times the lights' luminance
+    LIGHT_TONE = 2,     ///< gray: the tone of a white surface under neutral lights
+    DATA_HUES = 3,      ///< surfaces coloured by an array: their hue times the tone; others gray
+    ALL_HUES = 4        ///< every surface: its colour's hue times the tone
+  };
+
   ///@{
   /**
-   * Comic: compute the tone from the light alone: the ambient and diffuse colours are taken as
-   * white (the property's ambient and diffuse coefficients still apply), so a black-and-white
-   * style draws the shading, not the data's colours as grays. vtkComicPass turns it on for its
-   * black-and-white output and off when tinted. Default off.
+   * What the lit colour is made of: LIT_COLORS (default), NEUTRAL_LIGHTS, LIGHT_TONE, DATA_HUES
+   * or ALL_HUES. Values: LIT_COLORS, the surface's colours times the lights' (VTK's lighting);
+   * NEUTRAL_LIGHTS, the surface's colours times the lights' luminance: a gray surface stays gray
+   * under a coloured light kit (ParaView's); LIGHT_TONE, gray: the tone of a white surface under
+   * neutral lights (the property's ambient and diffuse coefficients still apply), so a
+   * black-and-white style draws the shading, not the data's colours as grays; DATA_HUES, on
+   * surfaces coloured by an array (point or cell scalars through a colour map, or direct
+   * colours) the colour's hue and saturation at full value times that tone, other surfaces
+   * gray; ALL_HUES, the same on every surface. In the last three the tone comes from the light
+   * alone, so a surface coloured by a dark or mid-luminance colour map is not drawn as shadow;
+   * the largest channel of the lit colour is the tone. The style passes set it for their
+   * lighting pass every frame (vtkStylizeStylePass::ConfigureLightingColors()).
    */
-  vtkSetMacro(Monochrome, bool);
-  vtkGetMacro(Monochrome, bool);
-  vtkBooleanMacro(Monochrome, bool);
+  vtkSetClampMacro(ColorMode, int, LIT_COLORS, ALL_HUES);
+  vtkGetMacro(ColorMode, int);
+  ///@}
+
+  ///@{
+  /**
+   * In the colour modes LIGHT_TONE, DATA_HUES and ALL_HUES: whether a solid colour's lightness
+   * darkens the tone. On: a dark gray actor is drawn darker than a white one under the same
+   * light (the sketch: the pencil renders the material's value); off (default): every solid
+   * colour is lit as white (the comic's halftone is the light's). A colour from an array is
+   * lit as white either way: a colour map's lightness is not the surface's. The style passes
+   * set it with ColorMode.
+   */
+  vtkSetMacro(SolidColorTones, bool);
+  vtkGetMacro(SolidColorTones, bool);
+  vtkBooleanMacro(SolidColorTones, bool);
   ///@}
 
   ///@{
@@ -223,7 +254,8 @@ protected:
   double GrayLevelsNear = 6.0;
   double GrayLevelsFar = 6.0;
   double SpecularGain = 1.5;
-  bool Monochrome = false;
+  int ColorMode = LIT_COLORS;
+  bool SolidColorTones = false;
   double Scattering = 1.0;
   double SpecularOcclusion = 1.0;
 

@@ -1,5 +1,6 @@
 #include "vtkStylizeStageRunner.h"
 
+#include "vtkFloatArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -232,4 +233,27 @@ void vtkStylizeStageRunner::ReleaseGraphicsResources(vtkWindow* w)
     quad->Release(w);
   }
   FreeFramebuffer(this->Framebuffer, w);
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStageRunner::Download(vtkTextureObject* tex, vtkFloatArray* out)
+{
+  vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
+  if (!tex || !out || !fbo)
+  {
+    return false;
+  }
+  const int w = static_cast<int>(tex->GetWidth());
+  const int h = static_cast<int>(tex->GetHeight());
+  out->SetNumberOfComponents(4);
+  out->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  fbo->SaveCurrentBindingsAndBuffers(GL_READ_FRAMEBUFFER);
+  fbo->Bind(GL_READ_FRAMEBUFFER);
+  fbo->AddColorAttachment(0, tex);
+  fbo->GetContext()->GetState()->vtkglReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, out->GetPointer(0));
+  fbo->RemoveColorAttachments(1);
+  fbo->UnBind(GL_READ_FRAMEBUFFER);
+  fbo->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
+  return true;
 }

@@ -21,6 +21,7 @@
 #include <string>           // for std::string
 #include <vector>           // for std::vector
 
+class vtkFloatArray;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -67,6 +68,9 @@ public:
 
   /** The stages' framebuffer (created on first use), for reading a texture back. */
   vtkOpenGLFramebufferObject* GetFramebuffer() const { return this->Framebuffer; }
+
+  /** Reads texture `tex` back into `out`, RGBA floats; false without a framebuffer. */
+  bool Download(vtkTextureObject* tex, vtkFloatArray* out);
 
   /**
    * Makes `fbo` (created on first use) the draw framebuffer, the current bindings saved for

@@ -136,6 +136,21 @@ vtkStylizeLightingPass* vtkStylizeStylePass::GetLightingPass()
 }
 
 //------------------------------------------------------------------------------
+void vtkStylizeStylePass::ConfigureLightingColors(vtkStylizeLightingPass* lighting)
+{
+  lighting->SetColorMode(vtkStylizeLightingPass::LIT_COLORS);
+  lighting->SetSolidColorTones(false);
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeStylePass::ColorModeForTint(int tint)
+{
+  return tint == ALL_COLORS ? vtkStylizeLightingPass::ALL_HUES
+                            : (tint == DATA_COLORS ? vtkStylizeLightingPass::DATA_HUES
+                                                   : vtkStylizeLightingPass::LIGHT_TONE);
+}
+
+//------------------------------------------------------------------------------
 vtkStylizeGBufferPass* vtkStylizeStylePass::GetGBufferPass()
 {
   return this->Internals->GBuffer;
@@ -381,6 +396,7 @@ bool vtkStylizeStylePass::RenderScene(const vtkRenderState* s, const SceneReques
 {
   vtkStylizeGBufferPass* gbuffer = this->Internals->Scene;
   const int layer = this->Internals->Layer;
+  this->ConfigureLightingColors(this->Internals->Lighting);
   if (layer > 0)
   {
     // A translucent layer: the opaque G-buffer's user settings too, and the lighting of the
@@ -839,24 +855,7 @@ void vtkStylizeStylePass::FreeTexture(int slot)
 //------------------------------------------------------------------------------
 bool vtkStylizeStylePass::DownloadTexture(vtkTextureObject* tex, vtkFloatArray* out)
 {
-  vtkOpenGLFramebufferObject* fbo = this->Internals->Runner->GetFramebuffer();
-  if (!tex || !out || !fbo)
-  {
-    return false;
-  }
-  const int w = static_cast<int>(tex->GetWidth());
-  const int h = static_cast<int>(tex->GetHeight());
-  out->SetNumberOfComponents(4);
-  out->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
-  fbo->SaveCurrentBindingsAndBuffers(GL_READ_FRAMEBUFFER);
-  fbo->Bind(GL_READ_FRAMEBUFFER);
-  fbo->AddColorAttachment(0, tex);
-  fbo->GetContext()->GetState()->vtkglReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, out->GetPointer(0));
-  fbo->RemoveColorAttachments(1);
-  fbo->UnBind(GL_READ_FRAMEBUFFER);
-  fbo->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
-  return true;
+  return this->Internals->Runner->Download(tex, out);
 }
 
 //------------------------------------------------------------------------------

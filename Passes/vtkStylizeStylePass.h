@@ -83,6 +83,22 @@ public:
    */
   vtkStylizeLightingPass* GetLightingPass();
 
+  /** Which surfaces keep their colours under a black-and-white style's ink (Tint). */
+  enum Tints
+  {
+    BLACK_AND_WHITE = 0, ///< none: the paper is white
+    DATA_COLORS = 1,     ///< surfaces coloured by an array (a colour map); solid colours white
+    ALL_COLORS = 2       ///< every surface, solid colours included
+  };
+
+  /**
+   * Sets what the lit colour must be made of for this style, from its settings, on `lighting`
+   * (vtkStylizeLightingPass's ColorMode and SolidColorTones): the style does so on its own
+   * lighting pass at every frame, and a view that lights the scene with a pass of its own
+   * (ParaView's, before compositing) calls it for that one. The base: VTK's colours.
+   */
+  virtual void ConfigureLightingColors(vtkStylizeLightingPass* lighting);
+
   /**
    * The style's G-buffer (owned by the style), for reading the last frame back
    * (vtkStylizeGBufferPass::DownloadChannel()) and for its user settings (Precision,
@@ -197,8 +213,8 @@ public:
    * - GetPixelsPerPoint(height, tiles): pixels per point in an image `height` pixels tall
    *   rendered in `tiles` x `tiles` tiles (a magnified screenshot; 1 otherwise), with the
    *   style's ReferenceHeight and the WindowScale: what the style multiplies its lengths by;
-   * - GetTinted(): whether the paper keeps the data's colours (false for a style without the
-   *   setting).
+   * - GetTinted(): whether the paper may keep the data's colours (Tint is not BLACK_AND_WHITE;
+   *   false for a style without the setting).
    */
   virtual int SwapLayer(int) { return -1; }
   double GetPixelsPerPoint(int height, int tiles);
@@ -224,6 +240,9 @@ protected:
 
   /** `lightingModel`: the style's default lighting model (vtkStylizeLightingPass::Models). */
   explicit vtkStylizeStylePass(int lightingModel);
+
+  /** The lighting colour mode of a Tint: LIGHT_TONE, DATA_HUES or ALL_HUES. */
+  static int ColorModeForTint(int tint);
   ~vtkStylizeStylePass() override;
 
 #ifndef __VTK_WRAP__

@@ -18,7 +18,7 @@ for model in standard comic pixelart; do
 done
 "$STYLIZE" --style comic --size 1280x720 --output "$OUT/demo-comic.png"
 "$STYLIZE" --style none --lighting comic --lights 8 --size 1280x720 --output "$OUT/demo-none-comic-8lights.png"
-"$STYLIZE" --style comic --tinted --size 1280x720 --output "$OUT/demo-comic-tinted.png"
+"$STYLIZE" --style comic --tint all --size 1280x720 --output "$OUT/demo-comic-tinted.png"
 "$STYLIZE" --style pixel --size 1280x720 --output "$OUT/demo-pixel.png"
 "$STYLIZE" --style pixel --mode fast --palette 16 --size 1280x720 --output "$OUT/demo-pixel-16.png"
 "$STYLIZE" --style pixel --palette 1bit --size 1280x720 --output "$OUT/demo-pixel-1bit.png"

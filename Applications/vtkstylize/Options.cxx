@@ -747,8 +747,8 @@ void AddProgramOptions(OptionTable& t)
   t.Flag("--no-annotations", "no title and no scalar bar (default: both are drawn)", general,
     [](Options& opt, const std::string&) { opt.NoAnnotations = true; });
   t.Flag("--scalar-bar",
-    "draw the colour legend on black-and-white output too (default: comic and sketch draw it "
-    "only with --tinted)",
+    "draw the colour legend on black-and-white output too (default: drawn where the style "
+    "shows the data's colours: not for comic and sketch with --tint off, nor for lines)",
     general, [](Options& opt, const std::string&) { opt.ScalarBar = true; });
   t.Value("--multisamples", "N", "multisample anti-aliasing samples (default: 0)", general,
      [](Options& opt, const std::string& v) { opt.MultiSamples = std::atoi(v.c_str()); })

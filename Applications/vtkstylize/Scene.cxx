@@ -176,8 +176,8 @@ void AddAnnotations(vtkRenderer* ren, const Options& opt, const SceneAnnotations
   };
   addText(info.Title, false);
 
-  // Black-and-white output (comic or sketch, not tinted; line art) shows no colours: no colour
-  // legend unless --scalar-bar asks for one.
+  // Black-and-white output (comic or sketch with --tint off; line art) shows no colours: no
+  // colour legend unless --scalar-bar asks for one (ParaView's view hides it there too).
   bool blackAndWhite = false;
   if (opt.Style == "comic")
   {

@@ -220,7 +220,7 @@ void comicMain()
 #endif
 
   // ---- pattern coordinates (computed for every pixel: derivatives need uniform control flow)
-  float tone = comicLuminance(colour);
+  float tone = surface ? stylizeTone(colour) : comicLuminance(colour); // (lines keep theirs)
   vec2 pixel = vec2(p) + 0.5 + comicPixelOffset;
 #ifdef COMIC_OBJECT_ANCHOR
   // Triplanar projection of the object-space position on the plane facing its geometric normal
@@ -346,10 +346,11 @@ void comicMain()
   // direction's step (COMIC_FIXED_ANGLE_STEP: HatchAngle), 1 on surfaces
   result = vec3(surface ? tone : 1.0, angleStep / 255.0, surface ? 1.0 : 0.0);
 #elif COMIC_LAYER == 4
+  // (lines and points, which carry no pattern, as the comic draws them)
 #ifdef COMIC_TINTED
-  result = background ? colour : paper;
+  result = background ? colour : (surface ? paper : paper * pattern);
 #else
-  result = background ? colour : vec3(1.0);
+  result = background ? colour : vec3(surface ? 1.0 : pattern);
 #endif
 #endif
   if (stylizeDiscardBackground == 1 && background && e >= 1.0)

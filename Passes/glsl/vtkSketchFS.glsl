@@ -29,7 +29,7 @@ void sketchMain()
 #ifdef SKETCH_STAGE_BLUR_X
     ivec2 q = clamp(p * sketchBlurStride + sketchBlurStride / 2 + ivec2(t * sketchBlurStride, 0),
       ivec2(0), fieldSize - 1);
-    float v = fieldLuminance(texelFetch(stylizeColorTexture, q, 0).rgb);
+    float v = stylizeTone(texelFetch(stylizeColorTexture, q, 0).rgb);
 #else
     ivec2 q = clamp(p + ivec2(0, t), ivec2(0), sketchBlurSize - 1);
     float v = texelFetch(sketchInput, q, 0).r;
@@ -242,9 +242,9 @@ void sketchMain()
   bool background = !(depth < 1.0);
   bool surface = field.w > 0.0;
 
-  // Tone: the lit luminance, bright faces lifted to white between t1 and t2, then contrast
-  // against the blurred image, o + c (o - b).
-  float tone = fieldLuminance(colour);
+  // Tone: the light's (stylizeTone), bright faces lifted to white between t1 and t2, then
+  // contrast against the blurred image, o + c (o - b).
+  float tone = stylizeTone(colour);
   tone = mix(tone, 1.0, smoothstep(sketchBright.x, sketchBright.y, tone));
 #ifdef SKETCH_CONTRAST
   vec2 blurUV = (vec2(p) + 0.5) / sketchBlurExtent;
@@ -285,7 +285,7 @@ void sketchMain()
 
 #ifdef SKETCH_TINTED
   float m = max(colour.r, max(colour.g, colour.b));
-  vec3 paper = m > 1e-4 ? colour / m : sketchPaper;
+  vec3 paper = m > 1e-4 ? colour / m * sketchPaper : sketchPaper;
 #else
   vec3 paper = sketchPaper;
 #endif

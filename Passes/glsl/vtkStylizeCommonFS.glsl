@@ -51,6 +51,14 @@ vec3 stylizeShadingNormal(vec3 n, vec3 faceNormal, vec3 toViewer)
 }
 
 // Replaces NaN by 0 and clamps to [0, 1]: what an 8-bit framebuffer would show, in float.
+// The light's tone in a lit surface colour: its largest channel. vtkStylizeLightingPass's colour
+// modes 2 to 4 (the black-and-white styles' and the tinted ones') make that colour the tone
+// times white or a hue at full value, so the tone does not depend on the data's colours.
+float stylizeTone(vec3 c)
+{
+  return max(c.r, max(c.g, c.b));
+}
+
 vec3 stylizeSaturateFinite(vec3 c)
 {
   c.r = stylizeIsFinite(c.r) ? c.r : (isinf(c.r) && c.r > 0.0 ? 1.0 : 0.0);

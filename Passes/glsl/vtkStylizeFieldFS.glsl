@@ -68,11 +68,6 @@ void fieldFrame(vec3 n, out vec3 x, out vec3 y)
   y = cross(n, x);
 }
 
-float fieldLuminance(vec3 c)
-{
-  return dot(c, vec3(0.2126, 0.7152, 0.0722));
-}
-
 ivec2 fieldPixel()
 {
   return clamp(ivec2(texCoord * vec2(fieldSize)), ivec2(0), fieldSize - 1);
@@ -412,7 +407,7 @@ void fieldSurfaceStage(ivec2 p, float d0, vec3 n)
     for (int b = 0; b < 9; ++b)
     {
       ivec2 t = clamp(p + ivec2(b % 3 - 1, b / 3 - 1) * s, ivec2(0), fieldSize - 1);
-      l[b] = b == 4 ? 0.0 : fieldLuminance(texelFetch(stylizeColorTexture, t, 0).rgb);
+      l[b] = b == 4 ? 0.0 : stylizeTone(texelFetch(stylizeColorTexture, t, 0).rgb);
     }
     vec2 g = stylizeSobel(l);
     vec2 screen = dot(g, g) > 1e-10 ? normalize(vec2(-g.y, g.x)) : fieldScreenDirection;

@@ -15,12 +15,23 @@ uniform int stylizeLightCount;      // number of enabled lights, >= 0
 uniform float stylizeSubjectFactor; // p1 in [0, 1]
 uniform float stylizeLevelsNear;    // gray levels at the near end of the depth range, [0, 100]
 uniform float stylizeLevelsFar;     // gray levels at the far end, [0, 100]
-uniform int stylizeMonochrome;      // 1: comic tone from the light alone (white colours)
 uniform float stylizeSpecularGain;  // specular multiplier, [0, 100]
 uniform vec2 stylizeDepthRange;     // view depth mapped to 0 and 1 for the level interpolation
+// What the lit colour is made of (vtkStylizeLightingPass::ColorModes): 0 the surface's colours
+// times the lights', 1 times the lights' luminance, 2 gray (the tone of a white surface), 3 the
+// hue of colours from an array times the tone (STYLIZE_DATA_COLORS: this program's colours come
+// from one), 4 every colour's hue times the tone. 1 to 4 light with neutral lights.
+uniform int stylizeColorMode;
+uniform int stylizeSolidColorTones; // 1: in modes 2 to 4 a solid colour's lightness darkens the tone
 // Pixel art (docs/algorithms.md section 1)
 uniform float stylizeScattering;    // s in [0, 1]; diffuse scaled by sqrt(s)
 uniform float stylizeOcclusion;     // M in [0, 1]; specular occlusion factor
+
+// A light's colour times intensity, or its luminance (Rec. 709) as gray under neutral lights.
+vec3 stylizeLightColor(vec3 c)
+{
+  return stylizeColorMode == 0 ? c : vec3(dot(c, vec3(0.2126, 0.7152, 0.0722)));
+}
 
 struct stylizeLight
 {
@@ -39,7 +50,7 @@ struct stylizeLight
 stylizeLight stylizeFetchLight(int i, vec3 P)
 {
   stylizeLight l;
-  l.color = texelFetch(stylizeLights, 0).rgb;
+  l.color = stylizeLightColor(texelFetch(stylizeLights, 0).rgb);
   l.incident = texelFetch(stylizeLights, 1).xyz;
   l.atten = 1.0;
   l.L = -l.incident;
@@ -52,7 +63,7 @@ stylizeLight stylizeFetchLight(int i, vec3 P)
   vec4 t0 = texelFetch(stylizeLights, 4 * i);
   vec4 t1 = texelFetch(stylizeLights, 4 * i + 1);
   stylizeLight l;
-  l.color = t0.rgb;
+  l.color = stylizeLightColor(t0.rgb);
   l.atten = 1.0;
   if (t0.a < 0.5)
   {
@@ -84,7 +95,7 @@ vec3 stylizeStandard(vec3 N, vec3 P, vec3 ambientC, vec3 diffuseC, vec3 specular
 {
 #ifdef STYLIZE_HEADLIGHT_ONLY
   // VTK's shortcut for a single headlight (lighting complexity 1)
-  vec3 lc = texelFetch(stylizeLights, 0).rgb;
+  vec3 lc = stylizeLightColor(texelFetch(stylizeLights, 0).rgb);
   float df = max(0.0, N.z);
   float sf = stylizeSafePow(df, specPow);
   return ambientC + df * diffuseC * lc + sf * specularC * lc;
@@ -134,11 +145,6 @@ vec3 stylizeComic(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 spe
   float La = p1 + I - 2.0 * p1 * I;
   vec3 diffuseBase = kd > 1e-6 ? diffuseC / kd : vec3(0.0);
   vec3 ambientBase = ka > 1e-6 ? ambientC / ka : diffuseBase;
-  if (stylizeMonochrome == 1)
-  {
-    diffuseBase = vec3(1.0);
-    ambientBase = vec3(1.0);
-  }
 
   float span = stylizeDepthRange.y - stylizeDepthRange.x;
   float t = span > 0.0 ? clamp((-P.z - stylizeDepthRange.x) / span, 0.0, 1.0) : 0.0;
@@ -161,4 +167,21 @@ vec3 stylizePixelArt(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 
   vec3 D, S;
   stylizeBlinnPhongSums(N, P, V, specPow, D, S);
   return ambientC + sqrt(stylizeScattering) * D * diffuseC + stylizeOcclusion * S * specularC;
+}
+
+// The colour of the lit surface for the colour modes 2 to 4: the surface's hue and saturation at
+// full value (modes 3 and 4) or white, times the tone (the luminance of `lit`, the surface lit as
+// white, or in its solid colour under stylizeSolidColorTones).
+vec3 stylizeToned(vec3 lit, vec3 ambientC, vec3 diffuseC, float ka, float kd)
+{
+  float tone = dot(lit, vec3(0.2126, 0.7152, 0.0722));
+#ifdef STYLIZE_DATA_COLORS
+  bool hue = stylizeColorMode >= 3;
+#else
+  bool hue = stylizeColorMode == 4;
+#endif
+  vec3 base = kd > 1e-6 ? diffuseC / kd : (ka > 1e-6 ? ambientC / ka : vec3(1.0));
+  float m = max(base.r, max(base.g, base.b));
+  vec3 paper = hue && m > 1e-4 ? base / m : vec3(1.0);
+  return paper * tone;
 }

@@ -10,6 +10,7 @@
 #include "vtkPVDefaultPass.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkPixelArtPass.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSketchPass.h"
@@ -21,6 +22,7 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
+#include <vector>
 
 vtkStandardNewMacro(vtkPVStylizeView);
 
@@ -38,6 +40,8 @@ public:
   vtkPVStylizeView* View = nullptr;
 
   vtkStylizeStylePass* FindStylePass() override { return this->View->GetActiveStylePass(); }
+
+  vtkRenderer* FindStyleRenderer() override { return this->View->GetRenderer(); }
 
   void RenderFrame() override { this->View->StillRender(); }
 
@@ -350,6 +354,15 @@ void vtkPVStylizeView::ConfigurePasses()
                                                              : vtkStylizeLightingPass::STANDARD);
   }
   this->LightingPass->SetModel(model);
+  // The style's colours (black and white, the data's hues, neutral lights) on each rank too.
+  if (style)
+  {
+    style->ConfigureLightingColors(this->LightingPass);
+  }
+  else
+  {
+    this->LightingPass->SetColorMode(vtkStylizeLightingPass::LIT_COLORS);
+  }
   const bool lighting = style || this->LightingModel != STYLE_DEFAULT;
   this->Superclass::SetUseFXAA(this->RequestedFXAA && !style);
   // Per rank: under a style the G-buffer (lit by the lighting pass), otherwise the lighting
@@ -428,8 +441,36 @@ void vtkPVStylizeView::Render(bool interactive, bool skip_rendering)
   // volumes) blends the ranks' images without their depth, and a style needs the composited
   // depth: under a style the ranks are composited by depth, translucent surfaces by the style's
   // layers.
-  this->NeedsOrderedCompositing = this->DataNeedsOrderedCompositing && !this->GetActiveStylePass();
+  vtkStylizeStylePass* style = this->GetActiveStylePass();
+  this->NeedsOrderedCompositing = this->DataNeedsOrderedCompositing && !style;
+  // A colour legend only where the style shows the colours it explains (as vtkstylize does):
+  // not over black and white (comic or sketch with Tint BLACK_AND_WHITE, line art).
+  const bool colours = !style || style == this->PixelArtPass.GetPointer() || style->GetTinted();
+  std::vector<vtkProp*> hidden;
+  for (vtkRenderer* ren : { this->GetRenderer(), this->GetNonCompositedRenderer() })
+  {
+    if (colours || !ren)
+    {
+      continue;
+    }
+    vtkPropCollection* props = ren->GetViewProps();
+    vtkCollectionSimpleIterator it;
+    vtkProp* prop;
+    for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
+    {
+      if (prop->GetVisibility() &&
+        (prop->IsA("vtkContext2DScalarBarActor") || prop->IsA("vtkScalarBarActor")))
+      {
+        prop->SetVisibility(0);
+        hidden.push_back(prop);
+      }
+    }
+  }
   this->Superclass::Render(interactive, skip_rendering);
+  for (vtkProp* prop : hidden)
+  {
+    prop->SetVisibility(1);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -73,7 +73,7 @@ folder on ``PYTHONPATH`` and use the interpreter VTK's Python is built for (``/u
 with Debian's python3-vtk9)::
 
     import vtkstylize
-    comic = vtkstylize.apply_style(renderer, "comic", EdgeWidth=2.0, Tinted=True)
+    comic = vtkstylize.apply_style(renderer, "comic", EdgeWidth=2.0, Tint="ALL_COLORS")
     vtkstylize.configure(comic.GetLightingPass(), SubjectFactor=0.5)
 
     from vtkstylize import vtkPixelArtPass          # the wrapped classes, as before

@@ -18,7 +18,7 @@ make_view(view, size)
 show_framed(make_contour(), view)
 for style, name in [(1, "comic"), (2, "pixel"), (3, "sketch"), (3, "sketch-tinted")]:
     view.Style = style
-    view.SketchTinted = 1 if name == "sketch-tinted" else 0
+    view.SketchTint = 2 if name == "sketch-tinted" else 0
     Render(view)
     SaveScreenshot("%s-%s-opaque.png" % (prefix, name), view, ImageResolution=size)
     SaveScreenshot("%s-%s-transparent.png" % (prefix, name), view, ImageResolution=size,

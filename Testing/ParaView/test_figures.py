@@ -11,7 +11,7 @@ sketch, identical for pixel art; the comic SVG holds vector dots or hatch lines 
 outlines and no embedded image; the orbit's frames differ from each other (the camera turned)
 and the GIF holds 3 frames (ffprobe); bad calls are refused with a Python exception. ParaView's
 colour legend (vtkContext2DScalarBarActor) is in the comic figure as vectors: SSIM >= 0.95 over
-the image and over the legend's corner, no embedded image.
+the image and over the legend's corner, no embedded image but the tinted paper's.
 """
 import os
 import subprocess
@@ -87,9 +87,12 @@ for ext in ("svg", "pdf"):
     if ssim < SSIM_MIN or corner_ssim < SSIM_MIN:
         failures.append("%s: SSIM %.4f, legend's corner %.4f (< %.2f)" % (
             figure, ssim, corner_ssim, SSIM_MIN))
+# (coloured by an array, the comic's paper takes the colour map's hues: a gradient embedded as
+# one image under the vector ink; the legend, drawn after the layers, is vectors)
 paths, images = vector_content(prefix + "-bar.svg")
-if images:
-    failures.append("comic SVG with the legend: %d embedded images (vectors expected)" % images)
+if images > 1:
+    failures.append("comic SVG with the legend: %d embedded images (the tinted paper's only "
+                    "expected)" % images)
 paths, images = vector_content(prefix + "-comic.svg")
 if images or paths < 10:
     failures.append("comic SVG: %d paths, %d embedded images (vectors expected)" % (paths, images))

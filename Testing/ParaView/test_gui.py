@@ -14,6 +14,7 @@ widgets and call capture_window() (below) to save the whole window as gui-window
 import ctypes
 import ctypes.util
 import os
+import re
 import struct
 import zlib
 
@@ -157,7 +158,41 @@ def run():
     focal, position = list(view.CameraFocalPoint), list(view.CameraPosition)
     view.CameraPosition = [f + (p - f) / 1.3 for f, p in zip(focal, position)]  # closer
 
-    # --- the style None, then Comic: the comic image is gray and differs from None's
+    # --- the panel (issue 40): what 0 means in the label, a number field where a range spans
+    # more than three decades (a domain without a maximum: no slider), each range said once in
+    # the tooltip and the paper an equation comes from named, no Lighting section under None
+    for name, label in [("ComicHatchWidth", "Hatch Width (0 = Auto)"),
+                        ("ComicHatchDirections", "Hatch Directions (0 = Hatch Angle)"),
+                        ("PixelArtArtPixelsAcross", "Art Pixels Across (0 = Auto)")]:
+        shown = view.GetProperty(name).SMProperty.GetXMLLabel()
+        check(shown == label, "%s's label is %r (%r expected)" % (name, shown, label))
+    for name, slider in [("PixelArtArtPixelsAcross", False), ("PixelArtPixelSize", False),
+                         ("ComicReferenceHeight", False), ("ComicEdgeWidth", True),
+                         ("ComicHatchWidth", True)]:
+        domain = view.GetProperty(name).SMProperty.GetDomain("range")
+        has_max = bool(domain and domain.GetMaximumExists(0))
+        check(has_max == slider, "%s: %s" % (name, "a slider" if slider else "a number field"))
+    repeated, unsourced = [], []
+    for name in view.ListProperties():
+        documentation = view.GetProperty(name).SMProperty.GetDocumentation()
+        text = " ".join((documentation.GetDescription() if documentation else "").split())
+        if text.count("Range [") > 1:
+            repeated.append(name)
+        if re.search(r"\b[Ee]q\. ?\d", text) and "Source:" not in text:
+            unsourced.append(name)
+    check(not repeated, "tooltips that state a range twice: %s" % repeated)
+    check(not unsourced, "tooltips citing an equation without its source: %s" % unsourced)
+    lighting = [view.SMProxy.GetPropertyGroup(i)
+                for i in range(view.SMProxy.GetNumberOfPropertyGroups())
+                if view.SMProxy.GetPropertyGroup(i).GetXMLLabel() == "Lighting"]
+    hint = lighting[0].GetHints().FindNestedElementByName("PropertyWidgetDecorator") \
+        if lighting and lighting[0].GetHints() else None
+    check(hint is not None and hint.GetAttribute("property") == "Style" and
+          hint.GetAttribute("value") == "0" and hint.GetAttribute("inverse") == "1",
+          "the Lighting section is hidden under Style None")
+
+    # --- the style None, then Comic: the comic image keeps the contour's colours (Tint Data
+    # colors) and differs from None's
     images = {}
     for index, name in [(0, "none"), (1, "comic")]:
         view.Style = index
@@ -171,7 +206,9 @@ def run():
             for x, y in zip(p, q)) / (3.0 * max(1, len(images["none"])))
     check(d > 5.0, "the comic image differs from the style None's (mean %.1f levels)" % d)
     chroma = max(max(p) - min(p) for p in images["comic"])
-    check(chroma <= 2, "the comic image is gray (chroma %d)" % chroma)
+    none_chroma = max(max(p) - min(p) for p in images["none"])
+    check(chroma > 50 or none_chroma <= 50, "the comic image keeps the contour's colours "
+          "(chroma %d, None's %d)" % (chroma, none_chroma))
     # the contour stays the active source, so the panel shows its display and the view
     SetActiveSource(contour)
 

@@ -3,7 +3,8 @@
     pvbatch-stylize test_styles.py OUTPUT_DIR
 
 Checks that the view and its properties exist with their ranges and tooltips, renders each
-style and checks the images (each differs from ParaView's own, comic is gray, pixel art is made
+style and checks the images (each differs from ParaView's own, comic keeps the data's colours
+and is gray in black and white, pixel art is made
 of whole art pixels, line art is gray ink on white paper), and that a Stylized Surface representation's subject factor changes
 only that representation's comic lighting.
 """
@@ -75,10 +76,20 @@ def mean_difference(a, b):
 for name in ["comic", "pixel", "sketch", "lines"]:
     d = mean_difference(images["none"][1], images[name][1])
     check(d > 5.0, "%s differs from ParaView's image (mean %.1f levels)" % (name, d))
-# comic: black and white (gray) where the object is; the none image is coloured there
+# comic: the elevation's colours under the ink (Tint Data colors, the default); black and white
+# (gray) with Tint Black and white; the none image is coloured there
 chroma = max(max(p) - min(p) for p in images["comic"][1])
 none_chroma = max(max(p) - min(p) for p in images["none"][1])
-check(chroma <= 2 and none_chroma > 50, "comic is gray (chroma %d; none %d)" % (chroma, none_chroma))
+check(chroma > 50 and none_chroma > 50,
+      "comic keeps the data's colours (chroma %d; none %d)" % (chroma, none_chroma))
+view.Style = 1
+view.ComicTint = 0
+Render(view)
+path = os.path.join(out, "styles-comic-black-and-white.png")
+SaveScreenshot(path, view, ImageResolution=[320, 240])
+gray = max(max(p) - min(p) for p in pixels(path)[1])
+check(gray <= 2, "comic with Tint Black and white is gray (chroma %d)" % gray)
+view.ComicTint = 1
 # line art: gray ink on white paper (lines thinner than a pixel at this size: light ink)
 lines = images["lines"][1]
 paper = sum(1 for p in lines if min(p) > 240)

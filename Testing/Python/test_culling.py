@@ -140,7 +140,8 @@ def render(case, make_pass, culling):
 STYLES = {
     "comic": style_maker("vtkComicPass"),
     "comic-principal-tinted": style_maker(
-        "vtkComicPass", HatchOrientation=vtkstylize.vtkComicPass.PRINCIPAL, Tinted=True),
+        "vtkComicPass", HatchOrientation=vtkstylize.vtkComicPass.PRINCIPAL,
+        Tint=vtkstylize.vtkComicPass.ALL_COLORS),
     "comic-color-edges": style_maker("vtkComicPass", EdgeWeights=(0.3, 0.3, 0.4)),
     "sketch": style_maker("vtkSketchPass"),
     "sketch-directions": style_maker("vtkSketchPass", Layer=vtkstylize.vtkSketchPass.DIRECTIONS),

@@ -71,13 +71,13 @@ for style, cls in classes.items():
 
 # Settings: applied, clamped, strings, tuples, booleans.
 c = vtkstylize.create_pass("comic", EdgeWidth=2.0, DotSpacing=0.5, HatchSpacing=1e9,
-                           Dots=False, Tinted=True, EdgeWeights=(1, 0, 0), Anchor="Object")
+                           Dots=False, Tint="ALL_COLORS", EdgeWeights=(1, 0, 0), Anchor="Object")
 check(c.GetEdgeWidth() == 2.0, "comic EdgeWidth: %g" % c.GetEdgeWidth())
 check(c.GetDotSpacing() == c.GetDotSpacingMinValue() == 2.0,
       "comic DotSpacing 0.5 not clamped to the minimum: %g" % c.GetDotSpacing())
 check(c.GetHatchSpacing() == c.GetHatchSpacingMaxValue() == 200.0,
       "comic HatchSpacing 1e9 not clamped to the maximum: %g" % c.GetHatchSpacing())
-check(not c.GetDots() and c.GetTinted(), "comic Dots/Tinted not applied")
+check(not c.GetDots() and c.GetTint() == vtkComicPass.ALL_COLORS, "comic Dots/Tint not applied")
 check(tuple(c.GetEdgeWeights()) == (1.0, 0.0, 0.0), "comic EdgeWeights: %r" % (c.GetEdgeWeights(),))
 check(c.GetAnchor() == vtkComicPass.OBJECT, "comic Anchor='Object': %d" % c.GetAnchor())
 

@@ -9,7 +9,9 @@ converts them from OFF (which VTK 9.1 has no reader for) to binary PLY with VTK'
 It also writes simulation output of its own, as an Exodus II file (VTK's writer): vessel.ex2, a
 hexahedral mesh of a thick-walled vessel whose wall bulges in three lobes (the kind of curved
 surface a solver's mesh has: quadrilateral faces, coarse around, fine along), with a nodal
-temperature. The geometry is defined here, so it carries no licence of others.
+temperature; and plate.ex2, a plate with a hole under tension whose nodal stress is Kirsch's
+solution (a stress field over a notched part). The geometry is defined here, so it carries no
+licence of others.
 
 usage: prepare.py OUTDIR [--archive data.tar.gz]
 """
@@ -122,6 +124,63 @@ def write_vessel(path):
     print(path, grid.GetNumberOfPoints(), "points", grid.GetNumberOfCells(), "hexahedra")
 
 
+def write_plate(path):
+    """A plate with a central hole under tension along x, of hexahedra, as Exodus II: the
+    nodal stress is Kirsch's solution (the elastic stress around a circular hole in a plate
+    pulled by a remote stress of 1), the stress field of a notched plate that a solver would
+    give: sigma_xx from -1 beside the hole on the pulling axis to 3 across it, von Mises."""
+    a, half, thick = 1.0, 4.0, 0.4
+    nr, nt, nz = 24, 96, 2
+    points = vtk.vtkPoints()
+    sxx = vtk.vtkDoubleArray()
+    sxx.SetName("StressXX")
+    mises = vtk.vtkDoubleArray()
+    mises.SetName("VonMises")
+    for k in range(nz + 1):
+        z = thick * k / nz
+        for j in range(nt):
+            theta = 2.0 * math.pi * j / nt
+            c, s = math.cos(theta), math.sin(theta)
+            edge = half / max(abs(c), abs(s))  # the ray's exit through the square's side
+            for i in range(nr + 1):
+                t = (i / nr) ** 1.6  # graded towards the hole, as a solver's mesh is
+                r = a + (edge - a) * t
+                points.InsertNextPoint(r * c, r * s, z)
+                q2, q4 = (a / r) ** 2, (a / r) ** 4
+                c2, s2 = math.cos(2.0 * theta), math.sin(2.0 * theta)
+                srr = 0.5 * (1.0 - q2) + 0.5 * (1.0 - 4.0 * q2 + 3.0 * q4) * c2
+                stt = 0.5 * (1.0 + q2) - 0.5 * (1.0 + 3.0 * q4) * c2
+                srt = -0.5 * (1.0 + 2.0 * q2 - 3.0 * q4) * s2
+                xx = srr * c * c + stt * s * s - 2.0 * srt * s * c
+                yy = srr * s * s + stt * c * c + 2.0 * srt * s * c
+                xy = (srr - stt) * s * c + srt * (c * c - s * s)
+                sxx.InsertNextValue(xx)
+                mises.InsertNextValue(math.sqrt(xx * xx - xx * yy + yy * yy + 3.0 * xy * xy))
+    grid = vtk.vtkUnstructuredGrid()
+    grid.SetPoints(points)
+    grid.GetPointData().AddArray(sxx)
+    grid.GetPointData().AddArray(mises)
+
+    def pid(i, j, k):
+        return (k * nt + j % nt) * (nr + 1) + i
+    for k in range(nz):
+        for j in range(nt):
+            for i in range(nr):
+                ids = [pid(i, j, k), pid(i + 1, j, k), pid(i + 1, j + 1, k), pid(i, j + 1, k),
+                       pid(i, j, k + 1), pid(i + 1, j, k + 1), pid(i + 1, j + 1, k + 1),
+                       pid(i, j + 1, k + 1)]
+                grid.InsertNextCell(vtk.VTK_HEXAHEDRON, 8, ids)
+    blocks = vtk.vtkIntArray()
+    blocks.SetName("ElementBlockIds")
+    blocks.SetNumberOfTuples(grid.GetNumberOfCells())
+    blocks.Fill(1)
+    grid.GetCellData().AddArray(blocks)
+    writer = vtk.vtkExodusIIWriter()
+    writer.WriteAllTimeStepsOff()
+    write(writer, grid, path)
+    print(path, grid.GetNumberOfPoints(), "points", grid.GetNumberOfCells(), "hexahedra")
+
+
 def write(writer, data, path):
     """Writes data with writer to a temporary name next to path, then renames it: an interrupted
     run leaves no partial file that a later run would take as done."""
@@ -157,6 +216,9 @@ def main():
     vessel = os.path.join(args.outdir, "vessel.ex2")
     if not os.path.exists(vessel):
         write_vessel(vessel)
+    plate = os.path.join(args.outdir, "plate.ex2")
+    if not os.path.exists(plate):
+        write_plate(plate)
 
 
 if __name__ == "__main__":

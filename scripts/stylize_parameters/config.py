@@ -57,18 +57,43 @@ RENDERING_PLUMBING = {"WindowScale"}
 XML_PASSES = "Plugin/View/StylizePasses.xml"
 XML_VIEW = "Plugin/View/StylizeView.xml"
 XML_GROUP = "stylize_passes"
-# (proxy name, class, label, exposed-name prefix, values of the view's Style that show it; None:
-# every style, no decorator)
+# (proxy name, class, label, exposed-name prefix, values of the view's Style that show it: one
+# value, or "!V" for every value but V; None: every style, no decorator)
 XML_PROXIES = [
     ("ComicPass", "vtkComicPass", "Comic", "Comic", "1"),
     ("PixelArtPass", "vtkPixelArtPass", "Pixel art", "PixelArt", "2"),
     ("SketchPass", "vtkSketchPass", "Sketch", "Sketch", "3"),
     ("LineArtPass", "vtkLineArtPass", "Line art", "LineArt", "4"),
-    ("LightingPass", "vtkStylizeLightingPass", "Lighting", "Lighting", None),
+    ("LightingPass", "vtkStylizeLightingPass", "Lighting", "Lighting", "!0"),
 ]
 XML_ALL_STYLES = "1 2 3 4"
+# Where a setting's 0 stands for a choice made for the user, the panel's label says so (a bare 0
+# in the field reads as zero): (class, parameter) -> what 0 means, as the label's suffix shows it.
+# The generator warns of a setting whose default is 0 and whose comment explains a 0 ("0:",
+# "0 (default)") without an entry here.
+XML_ZERO_MEANS = {("vtkComicPass", "HatchWidth"): "Auto",
+                  ("vtkComicPass", "HatchDirections"): "Hatch Angle",
+                  ("vtkPixelArtPass", "ArtPixelsAcross"): "Auto",
+                  ("vtkStylizeReader", "MemoryLimit"): "Auto",
+                  ("vtkStylizeReader", "TimeLimit"): "Auto"}
+# A range wider than this ratio (max / min, or max - min from 0 or below) is a text field, not
+# a slider: a slider over [0, 16384] cannot set a small value. The class still clamps.
+XML_SLIDER_RATIO = 1000.0
+# The papers the comments cite ("eq. 12", "the paper"), named in the tooltips: class -> source;
+# the lighting pass's settings name their model first ("Comic:", "PixelArt:").
+XML_SOURCES = {
+    "vtkComicPass": "Hu et al., Real-time non-photorealistic rendering method for black-and-white "
+                    "comic style in games and animation, J. System Simulation 36(7), 2024",
+    "vtkPixelArtPass": "the pixel-art paper, A high-performance real-time pixelated "
+                       "non-photorealistic rendering method",
+    "vtkSketchPass": "Zhang & Gong, Sketch rendering based on real-time principal direction "
+                     "estimation, 2020",
+}
+XML_MODEL_SOURCES = {"Comic:": "vtkComicPass", "PixelArt:": "vtkPixelArtPass"}
 # Parameters the view sets itself, so not exposed: (class, parameter) -> why.
 XML_SKIP = {("vtkStylizeLightingPass", "Model"): "set by the view",
+            ("vtkStylizeLightingPass", "ColorMode"): "set by the style (its Tint, ColoredLights)",
+            ("vtkStylizeLightingPass", "SolidColorTones"): "set by the style with ColorMode",
             ("vtkSketchPass", "SceneBounds"): "set by the view (the data's bounds on all ranks)",
             ("vtkSketchPass", "DirectionArrayName"):
                 "ParaView's data is composite: Model reads its tangents, which the Principal "
@@ -130,7 +155,9 @@ CLI_COMIC = [
     ("HatchOrientation", "--hatch-orientation", "fixed|principal",
      {"fixed": "FIXED", "principal": "PRINCIPAL"}),
     ("Edges", "--no-edges", None), ("Dots", "--no-dots", None), ("Hatching", "--no-hatching", None),
-    ("CrossHatching", "--no-cross", None), ("Tinted", "--tinted", None),
+    ("CrossHatching", "--no-cross", None),
+    ("Tint", "--tint", "off|data|all",
+     {"off": "BLACK_AND_WHITE", "data": "DATA_COLORS", "all": "ALL_COLORS"}),
     ("FeatureLines", "--feature-lines", None), ("FeatureLineWidth", "--feature-line-width", "PT"),
 ]
 CLI_PIXEL = [
@@ -150,6 +177,7 @@ CLI_PIXEL = [
     ("OutlineColor", "--outline", "COLOR"),
     ("DepthEdges", "--no-depth-edges", None), ("NormalEdges", "--normal-edges", None),
     ("SnapToGrid", "--no-snap", None), ("StylizeBackground", "--stylize-background", None),
+    ("ColoredLights", "--colored-lights", None),
 ]
 CLI_SKETCH = [
     ("Neighbors", "--neighbors", "2|4|8", {"2": "2", "4": "4", "8": "8"}),
@@ -176,7 +204,9 @@ CLI_SKETCH = [
      {"sketch": "SKETCH", "directions": "DIRECTIONS", "strokes": "STROKES", "tone": "TONE"}),
     ("BrightThresholds", "--bright-thresholds", "T1,T2"), ("CrossThreshold", "--cross-threshold", "T"),
     ("PencilColor", "--pencil", "COLOR"), ("PaperColor", "--paper", "COLOR"),
-    ("CrossHatching", "--no-cross", None), ("Tinted", "--tinted", None),
+    ("CrossHatching", "--no-cross", None),
+    ("Tint", "--tint", "off|data|all",
+     {"off": "BLACK_AND_WHITE", "data": "DATA_COLORS", "all": "ALL_COLORS"}),
     ("ReferenceHeight", "--reference-height", "PX"),
     ("FeatureLines", "--no-feature-lines", None), ("FeatureLineWidth", "--feature-line-width", "PT"),
     ("VectorFigureStrokes", "--vector-pencil", None),

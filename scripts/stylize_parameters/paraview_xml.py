@@ -8,8 +8,9 @@ import textwrap
 from xml.sax.saxutils import escape
 
 from .config import (XML_ADVANCED_NAME, XML_ADVANCED_RULE, XML_ADVANCED_TEXT, XML_FILTER_PROXIES,
-                     XML_GROUP, XML_INT_TYPES, XML_PROXIES, XML_SKIP, XML_SOURCE_PROXIES,
-                     XML_VIEW, XML_WIDTH)
+                     XML_GROUP, XML_INT_TYPES, XML_MODEL_SOURCES, XML_PROXIES, XML_SKIP,
+                     XML_SLIDER_RATIO, XML_SOURCE_PROXIES, XML_SOURCES, XML_VIEW, XML_WIDTH,
+                     XML_ZERO_MEANS)
 from .values import enum_symbol, fmt_num, plain
 
 
@@ -82,7 +83,21 @@ def xml_skip_reason(cls, p):
     return None
 
 
-def xml_documentation(p, kind):
+def xml_source(cls, text):
+    """The paper a comment cites with "eq. N" or "the paper", named: the class's, or for the
+    lighting pass the one of the model the comment starts with."""
+    # ("paper" alone is often the drawing's paper)
+    if not re.search(r"\b[Ee]q\.\s*\d|\b(?:of|in|by) the paper\b|"
+                     r"\bthe paper(?:'s| finds| says| uses| writes)\b", text):
+        return ""
+    owner = cls
+    for prefix, model_class in XML_MODEL_SOURCES.items():
+        if text.startswith(prefix):
+            owner = model_class
+    return "Source: %s." % XML_SOURCES[owner] if owner in XML_SOURCES else ""
+
+
+def xml_documentation(p, kind, cls=""):
     parts = [plain(p.meaning_full)]
     if kind == "enum" and p.kind == "enum":
         entries = [(readable_enum(n), plain(d)) for n, _, d in p.enum_entries]
@@ -106,12 +121,16 @@ def xml_documentation(p, kind):
             sentence = "Range %s, default %s." % (rng, default)
         else:
             sentence = "Default %s." % default
-        # (the comment often ends with the same sentence: not said twice)
+        # (the comment often states the range, or ends with the same sentence: not said twice)
         if sentence.lower() in parts[0].lower():
             sentence = ""
+        elif rng and re.search(r"\bRange \[", parts[0]):
+            sentence = "" if re.search(r"\bdefault\b", parts[0], re.I) else \
+                "Default %s." % default
         if unit.strip() and unit.strip().lower() in parts[0].lower():
             unit = ""
         parts.append(unit + sentence)
+    parts.append(xml_source(cls, parts[0]))
     return " ".join(t.strip() for t in parts if t.strip())
 
 
@@ -160,7 +179,7 @@ def xml_property(d, p, errors):
     L = xml_open(element, xml_property_attrs(p, kind, size, loc, errors), "      ")
     L.extend(xml_domain(d, p, kind, size, loc, errors))
     L.append("        <Documentation>")
-    L.append(wrap_xml_text(xml_text(xml_documentation(p, kind)), "          "))
+    L.append(wrap_xml_text(xml_text(xml_documentation(p, kind, d.cls)), "          "))
     L.append("        </Documentation>")
     if kind == "string" and p.name == "FileName":
         L.append("        <Hints>")
@@ -186,6 +205,16 @@ def xml_property_attrs(p, kind, size, loc, errors):
         defaults = " ".join(xml_num(v, loc, errors) for v in values)
     attrs = [("name", p.name), ("command", p.setter), ("number_of_elements", str(size)),
              ("default_values", defaults)]
+    # a 0 that stands for a choice made for the user says so in the label
+    cls = loc.split("::")[0]
+    zero = XML_ZERO_MEANS.get((cls, p.name))
+    if zero:
+        words = re.sub(r"(?<=[a-z])(?=[A-Z])", " ", p.name)
+        attrs.append(("label", "%s (0 = %s)" % (words, zero)))
+    elif kind in ("int", "double") and size == 1 and p.default == 0 and \
+            re.search(r"(?:^|[.;] )0(?: \(default\))?:|\b0 \(default\) ", p.doc):
+        errors.append("%s: its comment explains what 0 means, its default: add it to "
+                      "XML_ZERO_MEANS so that the panel's label says so" % loc)
     if xml_advanced(p):
         attrs.append(("panel_visibility", "advanced"))
     is_color = (kind == "double" and size == 3
@@ -218,8 +247,12 @@ def xml_domain(d, p, kind, size, loc, errors):
         if rng is not None:
             lo = " ".join([xml_num(int(rng[0]) if kind == "int" else rng[0], loc, errors)] * size)
             hi = " ".join([xml_num(int(rng[1]) if kind == "int" else rng[1], loc, errors)] * size)
-            L.append('        <%sRangeDomain name="range" min="%s" max="%s"/>' % (
-                "Int" if kind == "int" else "Double", lo, hi))
+            # a range over more than three decades gets a text field: the domain without its
+            # maximum (ParaView draws a slider only between a minimum and a maximum)
+            ratio = rng[1] / rng[0] if rng[0] > 0 else rng[1] - rng[0]
+            top = "" if ratio > XML_SLIDER_RATIO else ' max="%s"' % hi
+            L.append('        <%sRangeDomain name="range" min="%s"%s/>' % (
+                "Int" if kind == "int" else "Double", lo, top))
     elif kind == "string" and p.name == "FileName":
         L.append('        <FileListDomain name="files"/>')
     return L
@@ -371,8 +404,10 @@ def render_xml_view(view_xml, exposed, errors):
         for p, _ in exposed[name]:
             L.append('    <Property name="%s" exposed_name="%s%s" />' % (p.name, prefix, p.name))
         if style:
+            inverse = ' inverse="1"' if style.startswith("!") else ""
             L.append('    <Hints><PropertyWidgetDecorator type="GenericDecorator" '
-                     'mode="visibility" property="Style" value="%s" /></Hints>' % style)
+                     'mode="visibility" property="Style" value="%s"%s /></Hints>'
+                     % (style.lstrip("!"), inverse))
         L.append("  </PropertyGroup>")
         L.append("</ExposedProperties>")
         return m.group(1) + "".join(indent + line + "\n" for line in L) + m.group(4)

@@ -54,7 +54,7 @@ int TestComicExtremes(int, char*[])
       [](vtkRenderer*, vtkComicPass* c)
       {
         c->SetAnchorToObject();
-        c->TintedOn();
+        c->SetTint(vtkStylizeStylePass::ALL_COLORS);
       },
       true },
   };

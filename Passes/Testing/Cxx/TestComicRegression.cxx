@@ -15,7 +15,8 @@ int TestComicRegression(int argc, char* argv[])
     { "standard-lighting",
       [](vtkRenderer*, vtkComicPass* c)
       { c->GetLightingPass()->SetModel(vtkStylizeLightingPass::STANDARD); } },
-    { "tinted", [](vtkRenderer*, vtkComicPass* c) { c->TintedOn(); } },
+    { "tinted",
+      [](vtkRenderer*, vtkComicPass* c) { c->SetTint(vtkStylizeStylePass::ALL_COLORS); } },
     { "object-anchor", [](vtkRenderer*, vtkComicPass* c) { c->SetAnchorToObject(); } },
     { "edges", [](vtkRenderer*, vtkComicPass* c) { c->SetLayer(vtkComicPass::EDGES); } },
     { "three-phase-edges", // the paper's depth, normal and colour phases (eq. 9)

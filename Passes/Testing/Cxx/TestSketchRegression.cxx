@@ -73,7 +73,7 @@ int TestSketchRegression(int argc, char* argv[])
     { "tinted",
       [](vtkRenderer*, P* p)
       {
-        p->TintedOn();
+        p->SetTint(vtkStylizeStylePass::ALL_COLORS);
         p->SetPencilColor(0.2, 0.1, 0.3);
       } },
     { "kit-lights", [](vtkRenderer* r, P*) { SetupLights(r, "kit"); } },
