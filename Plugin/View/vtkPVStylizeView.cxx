@@ -6,6 +6,7 @@
 #include "vtkImageData.h"
 #include "vtkLineArtPass.h"
 #include "vtkMultiProcessController.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
 #include "vtkPVSynchronizedRenderer.h"
@@ -453,13 +454,21 @@ void vtkPVStylizeView::Render(bool interactive, bool skip_rendering)
     {
       continue;
     }
+    // (a legend is a widget representation among the view's props: its actors are 2D)
+    vtkNew<vtkPropCollection> actors;
     vtkPropCollection* props = ren->GetViewProps();
     vtkCollectionSimpleIterator it;
     vtkProp* prop;
     for (props->InitTraversal(it); (prop = props->GetNextProp(it));)
     {
-      if (prop->GetVisibility() &&
-        (prop->IsA("vtkContext2DScalarBarActor") || prop->IsA("vtkScalarBarActor")))
+      if (prop->GetVisibility())
+      {
+        prop->GetActors2D(actors);
+      }
+    }
+    for (actors->InitTraversal(it); (prop = actors->GetNextProp(it));)
+    {
+      if (prop->GetVisibility() && prop->IsA("vtkScalarBarActor"))
       {
         prop->SetVisibility(0);
         hidden.push_back(prop);

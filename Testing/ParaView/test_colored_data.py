@@ -13,8 +13,9 @@ surface's pixels of images blurred by a Gaussian (sigma 4 pixels, the patterns' 
              data's colours are there;
   ink        the share of surface pixels whose largest channel is below 0.5, inked more than
              half (a mid-luminance map must not be drawn as shadow all over: at most 0.5).
-Pixel art of the uncoloured bunny scan under the same light kit must stay neutral (max CIELAB
-chroma <= 10 over the surface). Further files (EXTRA.ex2:ARRAY, e.g. ParaView's
+Colour legends: shown over the comic and the sketch of coloured data, left out over black and
+white (Tint Black and white, line art), as vtkstylize does. Pixel art of the uncoloured bunny
+scan under the same light kit must stay neutral (max CIELAB chroma <= 10 over the surface). Further files (EXTRA.ex2:ARRAY, e.g. ParaView's
 disk_out_ref.ex2:Pres) are measured and printed, not checked: the held-out data.
 Writes OUTDIR/<name>-<style>.png; prints one line per measure and FAIL lines.
 """
@@ -129,6 +130,27 @@ measure("plate", os.path.join(data, "plate.ex2"), "StressXX", True)
 for item in extra:
     path, array = item.rsplit(":", 1)
     measure(os.path.splitext(os.path.basename(path))[0], path, array, False)
+
+# One rule for colour legends: shown where the style shows the colours (as vtkstylize draws
+# them), left out over black and white (Tint Black and white; line art).
+vessel = ExtractSurface(Input=IOSSReader(FileName=os.path.join(data, "vessel.ex2")))
+display = Show(vessel, view)
+ColorBy(display, ("POINTS", "Temp"))
+display.SetScalarBarVisibility(view, True)
+view.ResetCamera()
+for style, tint, legend in [(1, 1, True), (1, 0, False), (3, 1, True), (4, 1, False)]:
+    view.Style = style
+    view.ComicTint = tint
+    path = os.path.join(out, "legend-%d-%d.png" % (style, tint))
+    SaveScreenshot(path, view, ImageResolution=SIZE)
+    a = image(path)
+    red = int(((a[..., 0] - a[..., 2]) > 60 / 255.0).sum())
+    print("legend   style %d tint %d: %d red pixels" % (style, tint, red))
+    check((red > 50) == legend, "style %d, tint %d: the legend is %s" % (
+        style, tint, "shown" if legend else "left out"))
+view.ComicTint = 1
+display.SetScalarBarVisibility(view, False)
+Hide(vessel, view)
 
 # Pixel art of a neutral surface under ParaView's light kit stays neutral.
 bunny = PLYReader(FileNames=[os.path.join(data, "bunny.ply")])
