@@ -136,18 +136,20 @@ for item in extra:
 vessel = ExtractSurface(Input=IOSSReader(FileName=os.path.join(data, "vessel.ex2")))
 display = Show(vessel, view)
 ColorBy(display, ("POINTS", "Temp"))
-display.SetScalarBarVisibility(view, True)
 view.ResetCamera()
 for style, tint, legend in [(1, 1, True), (1, 0, False), (3, 1, True), (4, 1, False)]:
     view.Style = style
     view.ComicTint = tint
-    path = os.path.join(out, "legend-%d-%d.png" % (style, tint))
-    SaveScreenshot(path, view, ImageResolution=SIZE)
-    a = image(path)
-    red = int(((a[..., 0] - a[..., 2]) > 60 / 255.0).sum())
-    print("legend   style %d tint %d: %d red pixels" % (style, tint, red))
-    check((red > 50) == legend, "style %d, tint %d: the legend is %s" % (
-        style, tint, "shown" if legend else "left out"))
+    shots = []
+    for visible in (True, False):  # the legend's pixels: what its visibility changes
+        display.SetScalarBarVisibility(view, visible)
+        path = os.path.join(out, "legend-%d-%d-%d.png" % (style, tint, visible))
+        SaveScreenshot(path, view, ImageResolution=SIZE)
+        shots.append(image(path))
+    changed = int((numpy.abs(shots[0] - shots[1]).max(axis=2) > 0).sum())
+    print("legend   style %d tint %d: %d pixels" % (style, tint, changed))
+    check((changed > 100) == legend, "style %d, tint %d: the legend is %s (%d pixels)" % (
+        style, tint, "shown" if legend else "left out", changed))
 view.ComicTint = 1
 display.SetScalarBarVisibility(view, False)
 Hide(vessel, view)
