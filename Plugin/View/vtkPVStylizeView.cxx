@@ -89,6 +89,10 @@ public:
   {
     if (auto* bar = vtkContext2DScalarBarActor::SafeDownCast(actor))
     {
+      if (!this->View->ShowsColorLegends())
+      {
+        return true; // (left out, as on the screen)
+      }
       // only the first rank writes the figure (and lays the legend out: the others' legends
       // may never have rendered, and would paint with no viewport)
       vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
@@ -435,22 +439,19 @@ void vtkPVStylizeView::Update()
 }
 
 //------------------------------------------------------------------------------
-void vtkPVStylizeView::Render(bool interactive, bool skip_rendering)
+bool vtkPVStylizeView::ShowsColorLegends()
 {
-  this->ConfigurePasses();
-  // Ordered compositing (what ParaView does on several ranks for translucent geometry and
-  // volumes) blends the ranks' images without their depth, and a style needs the composited
-  // depth: under a style the ranks are composited by depth, translucent surfaces by the style's
-  // layers.
   vtkStylizeStylePass* style = this->GetActiveStylePass();
-  this->NeedsOrderedCompositing = this->DataNeedsOrderedCompositing && !style;
-  // A colour legend only where the style shows the colours it explains (as vtkstylize does):
-  // not over black and white (comic or sketch with Tint BLACK_AND_WHITE, line art).
-  const bool colours = !style || style == this->PixelArtPass.GetPointer() || style->GetTinted();
+  return !style || style == this->PixelArtPass.GetPointer() || style->GetTinted();
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkProp*> vtkPVStylizeView::HideColorLegends()
+{
   std::vector<vtkProp*> hidden;
   for (vtkRenderer* ren : { this->GetRenderer(), this->GetNonCompositedRenderer() })
   {
-    if (colours || !ren)
+    if (!ren)
     {
       continue;
     }
@@ -475,6 +476,20 @@ void vtkPVStylizeView::Render(bool interactive, bool skip_rendering)
       }
     }
   }
+  return hidden;
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::Render(bool interactive, bool skip_rendering)
+{
+  this->ConfigurePasses();
+  // Ordered compositing (what ParaView does on several ranks for translucent geometry and
+  // volumes) blends the ranks' images without their depth, and a style needs the composited
+  // depth: under a style the ranks are composited by depth, translucent surfaces by the style's
+  // layers.
+  this->NeedsOrderedCompositing = this->DataNeedsOrderedCompositing && !this->GetActiveStylePass();
+  const std::vector<vtkProp*> hidden =
+    this->ShowsColorLegends() ? std::vector<vtkProp*>() : this->HideColorLegends();
   this->Superclass::Render(interactive, skip_rendering);
   for (vtkProp* prop : hidden)
   {

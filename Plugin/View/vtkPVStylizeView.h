@@ -40,10 +40,12 @@
 #include "vtkStylizeParaViewViewModule.h" // for export macro
 
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkComicPass;
 class vtkImageData;
 class vtkPixelArtPass;
+class vtkProp;
 class vtkSketchPass;
 class vtkLineArtPass;
 class vtkStylizeGBufferPass;
@@ -188,6 +190,16 @@ protected:
 
   /** Puts the lighting pass and the style pass into ParaView's render and image slots. */
   void ConfigurePasses();
+
+  /**
+   * Whether the colour legends are drawn: only where the style shows the colours they explain
+   * (as vtkstylize does), not over black and white (comic or sketch with Tint BLACK_AND_WHITE,
+   * line art); the view's renders and its vector figures leave them out there.
+   */
+  bool ShowsColorLegends();
+
+  /** Hides the visible scalar bars of the view's renderers, returned to be shown again. */
+  std::vector<vtkProp*> HideColorLegends();
 
   /**
    * The view's background as ParaView will paint it (vtkPVRenderView::UpdateBackground()), when
