@@ -50,7 +50,6 @@ vec3 stylizeShadingNormal(vec3 n, vec3 faceNormal, vec3 toViewer)
   return stylizeSafeNormalize(n, fn);
 }
 
-// Replaces NaN by 0 and clamps to [0, 1]: what an 8-bit framebuffer would show, in float.
 // The light's tone in a lit surface colour: its largest channel. vtkStylizeLightingPass's colour
 // modes 2 to 4 (the black-and-white styles' and the tinted ones') make that colour the tone
 // times white or a hue at full value, so the tone does not depend on the data's colours.
@@ -59,6 +58,7 @@ float stylizeTone(vec3 c)
   return max(c.r, max(c.g, c.b));
 }
 
+// Replaces NaN by 0 and clamps to [0, 1]: what an 8-bit framebuffer would show, in float.
 vec3 stylizeSaturateFinite(vec3 c)
 {
   c.r = stylizeIsFinite(c.r) ? c.r : (isinf(c.r) && c.r > 0.0 ? 1.0 : 0.0);
