@@ -14,6 +14,7 @@ import subprocess
 import sys
 
 import vtkstylize
+from stylize_test_scene import check, failures
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkLightKit, vtkPolyDataMapper, vtkRenderer,
@@ -22,13 +23,6 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkLightKit, vtkPolyDataMappe
 exe, data, out = sys.argv[1:4]
 os.makedirs(out, exist_ok=True)
 BACKGROUND = (0.32, 0.34, 0.43)
-failures = []
-
-
-def check(condition, message):
-    print(("ok   " if condition else "FAIL ") + message, flush=True)
-    if not condition:
-        failures.append(message)
 
 
 def lab_chroma(rgb):

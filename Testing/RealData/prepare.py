@@ -100,28 +100,7 @@ def write_vessel(path):
                 r = (0.5 + 1.5 * i / nr) * lobe
                 points.InsertNextPoint(r * math.cos(theta), r * math.sin(theta), z)
                 temperature.InsertNextValue(300.0 + 50.0 * z + 20.0 * r)
-    grid = vtk.vtkUnstructuredGrid()
-    grid.SetPoints(points)
-    grid.GetPointData().AddArray(temperature)
-
-    def pid(i, j, k):
-        return (k * nt + j % nt) * (nr + 1) + i
-    for k in range(nz):
-        for j in range(nt):
-            for i in range(nr):
-                ids = [pid(i, j, k), pid(i + 1, j, k), pid(i + 1, j + 1, k), pid(i, j + 1, k),
-                       pid(i, j, k + 1), pid(i + 1, j, k + 1), pid(i + 1, j + 1, k + 1),
-                       pid(i, j + 1, k + 1)]
-                grid.InsertNextCell(vtk.VTK_HEXAHEDRON, 8, ids)
-    blocks = vtk.vtkIntArray()
-    blocks.SetName("ElementBlockIds")
-    blocks.SetNumberOfTuples(grid.GetNumberOfCells())
-    blocks.Fill(1)
-    grid.GetCellData().AddArray(blocks)
-    writer = vtk.vtkExodusIIWriter()
-    writer.WriteAllTimeStepsOff()
-    write(writer, grid, path)
-    print(path, grid.GetNumberOfPoints(), "points", grid.GetNumberOfCells(), "hexahedra")
+    write_ring_grid(path, points, [temperature], nr, nt, nz)
 
 
 def write_plate(path):
@@ -156,10 +135,16 @@ def write_plate(path):
                 xy = (srr - stt) * s * c + srt * (c * c - s * s)
                 sxx.InsertNextValue(xx)
                 mises.InsertNextValue(math.sqrt(xx * xx - xx * yy + yy * yy + 3.0 * xy * xy))
+    write_ring_grid(path, points, [sxx, mises], nr, nt, nz)
+
+
+def write_ring_grid(path, points, arrays, nr, nt, nz):
+    """Writes as Exodus II the hexahedra of a grid of points laid out (k, j, i): nz + 1 layers,
+    nt around (closed: j wraps), nr + 1 along, with the point arrays, one element block."""
     grid = vtk.vtkUnstructuredGrid()
     grid.SetPoints(points)
-    grid.GetPointData().AddArray(sxx)
-    grid.GetPointData().AddArray(mises)
+    for array in arrays:
+        grid.GetPointData().AddArray(array)
 
     def pid(i, j, k):
         return (k * nt + j % nt) * (nr + 1) + i
