@@ -10,8 +10,29 @@ Embedded in the VTKStylize plugin; importable once the plugin is loaded::
     stylize.SaveStylizedFigure("figure.svg", view)           # or figure.pdf
     stylize.SaveStylizedOrbit("orbit.gif", view, frames=36)  # frames orbit-0000.png ... too
 
-Both render as the view renders (under MPI every rank takes part; the first writes).
+Both render as the view renders (under MPI every rank takes part; the first writes). The GUI's
+File menu offers both ("Export Stylized Figure...", "Save Stylized Orbit...",
+Plugin/pqStylizeFigureActions.cxx): they call the functions below through _gui_call, and the orbit
+dialog's fields are ORBIT_OPTIONS with the function's defaults.
 """
+
+# The orbit's options as the GUI's dialog shows them and as SaveStylizedOrbit checks them:
+# (keyword, label, minimum, maximum, help); the defaults are SaveStylizedOrbit's own. A bool
+# option has no range. The ranges are vtkstylize's (--orbit, --orbit-degrees, --orbit-elevation,
+# --fps).
+ORBIT_OPTIONS = (
+    ("frames", "Frames", 1, 3600, "Number of frames (images) of the orbit."),
+    ("degrees", "Degrees", -3600.0, 3600.0,
+     "Angle the camera turns about the view-up axis over the whole orbit, in degrees; "
+     "negative turns the other way."),
+    ("elevation", "Elevation", -89.0, 89.0,
+     "Angle the camera is raised (negative: lowered) before the orbit, in degrees."),
+    ("fps", "Frame rate", 1, 100, "Frames per second of the GIF or MP4 (unused for .png frames)."),
+    ("surface_anchor", "Anchor patterns to the surface", None, None,
+     "Anchor the style's pattern (comic dots and hatching, pixel-art texels, sketch noise) to "
+     "the surface for the orbit, so that it does not swim."),
+)
+
 
 def _element(view, name):
     return view.SMProxy.GetProperty(name).GetElement(0)
@@ -46,6 +67,14 @@ def _push(view, name, values):
     return result
 
 
+def _checked(name, value):
+    """`value` when it lies in ORBIT_OPTIONS' range for `name`; ValueError otherwise."""
+    low, high = next((o[2], o[3]) for o in ORBIT_OPTIONS if o[0] == name)
+    if not low <= value <= high:
+        raise ValueError("%s must be in [%s, %s], got %r" % (name, low, high, value))
+    return value
+
+
 def SaveStylizedFigure(filename, view=None):
     """Writes the view as a vector figure: SVG or PDF, from the extension of `filename`
     (vtkStylizeFigureWriter: comic outlines traced, dots and hatch lines exact, pixel art as
@@ -74,9 +103,10 @@ def SaveStylizedOrbit(output, view=None, frames=36, degrees=360.0, elevation=0.0
     import os
     from paraview import simple
     view = _view(view)
-    frames = int(frames)
-    if frames < 1 or frames > 100000:
-        raise ValueError("frames must be in [1, 100000], got %r" % frames)
+    frames = _checked("frames", int(frames))
+    degrees = _checked("degrees", float(degrees))
+    elevation = _checked("elevation", float(elevation))
+    fps = _checked("fps", int(fps))
     stem, ext = os.path.splitext(str(output))
     if ext.lower() not in (".png", ".gif", ".mp4"):
         raise ValueError("the orbit's output must end in .png, .gif or .mp4, got %r" % output)
@@ -112,3 +142,28 @@ def SaveStylizedOrbit(output, view=None, frames=36, degrees=360.0, elevation=0.0
             _set_element(view, "PatternsAnchored", 0)
         simple.Render(view)
     return written
+
+
+def _gui_orbit_options():
+    """ORBIT_OPTIONS with SaveStylizedOrbit's defaults, as JSON (for the GUI's orbit dialog)."""
+    import inspect
+    import json
+    defaults = inspect.signature(SaveStylizedOrbit).parameters
+    return json.dumps([{"name": name, "label": label, "default": defaults[name].default,
+                        "type": type(defaults[name].default).__name__,
+                        "minimum": low, "maximum": high, "help": text}
+                       for name, label, low, high, text in ORBIT_OPTIONS])
+
+
+def _gui_call(request):
+    """Runs {"function": "SaveStylizedFigure" or "SaveStylizedOrbit", "arguments": {...}} (JSON)
+    on the active view, as the GUI's File menu asks; returns JSON {"error": "" or the failure's
+    line, "written": [paths]}. A failure is returned, not raised, so that the GUI can show it."""
+    import json
+    request = json.loads(request)
+    functions = {"SaveStylizedFigure": SaveStylizedFigure, "SaveStylizedOrbit": SaveStylizedOrbit}
+    try:
+        result = functions[request["function"]](**request["arguments"])
+    except Exception as error:  # every failure becomes the dialog's message
+        return json.dumps({"error": str(error) or type(error).__name__, "written": []})
+    return json.dumps({"error": "", "written": result if isinstance(result, list) else [result]})

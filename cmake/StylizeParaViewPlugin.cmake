@@ -55,11 +55,18 @@ set(ParaView_DIR "${_pv_dir}" CACHE PATH "ParaView's CMake package (prepared)" F
 set(VTKSTYLIZE_PARAVIEW_PYTHONPATH "${_pv_python_path}")
 
 find_package(Python3 3.9 REQUIRED COMPONENTS Interpreter Development)
-find_package(ParaView 5.11 REQUIRED COMPONENTS RemotingViews)
+# pqApplicationComponents: the GUI's File menu entries (Qt; qtbase5-dev, libqt5svg5-dev and
+# qttools5-dev give the Qt CMake packages ParaView's GUI modules ask for)
+find_package(ParaView 5.11 REQUIRED COMPONENTS RemotingViews pqApplicationComponents)
 # The readers VTKStylize::Filters uses (vtkStylizeReader): requested from ParaView's VTK so that
 # their own dependencies (NetCDF, HDF5) are found too; VTKStylize::Figures draws scalar bars.
+# The File menu entries call Python (Python, PythonInterpreter, WrappingPythonCore); ParaView's
+# GUI modules link VTK's Xdmf libraries, whose LibXml2 and Boost targets are only imported when
+# libxml2, xdmf2 and xdmf3 are asked for.
 find_package(VTK REQUIRED COMPONENTS
-  RenderingAnnotation FiltersExtraction IOCore IOLegacy IOXML IOXMLParser IOGeometry IOExodus IOEnSight IOPLY)
+  Python PythonInterpreter WrappingPythonCore libxml2 xdmf2 xdmf3
+  RenderingAnnotation FiltersExtraction IOCore IOLegacy IOXML IOXMLParser IOGeometry IOExodus
+  IOEnSight IOPLY)
 include("${VTK_DIR}/vtkEncodeString.cmake")
 
 paraview_plugin_scan(

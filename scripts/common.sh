@@ -10,14 +10,17 @@ STYLIZE_JOBS="${STYLIZE_JOBS:-$(nproc)}"
 # paraview and paraview-dev are for the ParaView plugin (its python3-paraview conflicts with
 # python3-vtk9, so the build unpacks it into the build tree instead of installing it), and
 # mpi-default-bin gives mpiexec for the 1-rank against 2-rank test; libqt5svg5 draws the
-# GUI's toolbar icons (Debian's paraview does not pull it in); libcli11-dev parses vtkstylize's
+# GUI's toolbar icons (Debian's paraview does not pull it in); qtbase5-dev, libqt5svg5-dev,
+# libqt5opengl5-dev and qttools5-dev give the Qt CMake packages that ParaView's GUI modules ask
+# for (the plugin's File menu entries build against them); libcli11-dev parses vtkstylize's
 # command line; libcgal-demo ships the public test meshes of the real-data test set
 # (Testing/RealData). Vector figures: libcairo2-dev writes SVG and PDF, libpotrace-dev traces
 # outlines, fonts-liberation gives text VTK's Arial metrics; the tests rasterize figures back with
 # librsvg2-bin (rsvg-convert) and poppler-utils (pdftoppm); orbit animations are encoded (GIF,
 # MP4) by ffmpeg. clang and libclang-rt-14-dev build the libFuzzer targets of the sanitizer stage.
 STYLIZE_PACKAGES=(cmake make g++ pkg-config libvtk9-dev python3-vtk9 python3-dev libglm-dev xvfb xauth
-  x11-utils libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5 libcli11-dev
+  x11-utils libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5 qtbase5-dev
+  libqt5svg5-dev libqt5opengl5-dev qttools5-dev libcli11-dev
   libcgal-demo libcairo2-dev libpotrace-dev fonts-liberation librsvg2-bin poppler-utils ffmpeg
   clang-format clang libclang-rt-14-dev)
 

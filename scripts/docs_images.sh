@@ -107,14 +107,18 @@ echo "$out/pencil-bunny-vector.png"
 rm -f "$figures"/orbit-sketch-[0-9]*.png # the frames the GIF was encoded from
 echo "$figures/orbit-sketch.gif"
 
-# The ParaView GUI (when the plugin was built): paraview.gui's own run, whose window capture is
-# the manual's picture of the GUI.
+# The ParaView GUI (when the plugin was built): paraview.gui's own run, whose window captures are
+# the manual's pictures of the GUI and of its Save Stylized Orbit dialog.
 paraview="$build/paraview/bin/paraview-stylize"
 if [ -x "$paraview" ]; then
   gui="$build/Testing/Temporary/paraview/gui"
   sh "$STYLIZE_ROOT/Testing/ParaView/run_gui.sh" "$paraview" "$gui" > /dev/null
   cp "$gui/gui-window.png" "$out/paraview-gui.png"
-  echo "$out/paraview-gui.png"
+  # the dialog's corner of the window (the capture is 1280x800, the dialog near the view's top
+  # left)
+  ffmpeg -v error -y -i "$gui/gui-orbit-dialog.png" -vf crop=420:240:440:240 \
+    "$out/paraview-orbit-dialog.png"
+  echo "$out/paraview-gui.png $out/paraview-orbit-dialog.png"
 fi
 
 # Feature lines with hidden lines removed (realdata.lines' drawings) and the line-art style

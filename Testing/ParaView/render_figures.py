@@ -61,6 +61,11 @@ bad_calls = [  # (style, call, the exception it must raise)
     ("None", lambda: stylize.SaveStylizedFigure(prefix + "-none.svg", view), RuntimeError),
     ("Comic", lambda: stylize.SaveStylizedOrbit(prefix + "-orbit.txt", view, frames=2), ValueError),
     ("Sketch", lambda: stylize.SaveStylizedFigure(prefix + "-figure.png", view), RuntimeError),
+    # outside ORBIT_OPTIONS' ranges (those of vtkstylize --orbit and --orbit-elevation)
+    ("Comic", lambda: stylize.SaveStylizedOrbit(prefix + "-orbit.gif", view, frames=3601),
+     ValueError),
+    ("Comic", lambda: stylize.SaveStylizedOrbit(prefix + "-orbit.gif", view, elevation=90),
+     ValueError),
 ]
 for style, call, expected in bad_calls:
     view.Style = style
@@ -69,7 +74,7 @@ for style, call, expected in bad_calls:
     except expected as error:
         print("refused: %s" % error)
         refused += 1
-if refused != 3:
-    sys.exit("%d of 3 bad calls refused" % refused)
+if refused != len(bad_calls):
+    sys.exit("%d of %d bad calls refused" % (refused, len(bad_calls)))
 Delete(view)
 print("rendered")

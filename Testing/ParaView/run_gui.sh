@@ -8,9 +8,11 @@
 # script (--script), then plays the QtTesting events written below (--test-script) and quits
 # (--exit; a failed event makes it exit 1). The events type "comic" into the properties panel's
 # search box, check that the panel's Style widget reads Comic and the representation toolbar
-# reads Stylized Surface, widen the panel and call test_gui.capture_window() from the Python
-# shell, which saves the whole window. The test passes when paraview exits 0 and
-# OUTPUT_DIR/gui-result.txt says PASS with no failed line.
+# reads Stylized Surface, widen the panel, use File > Export Stylized Figure... and File > Save
+# Stylized Orbit... (the file dialogs and the orbit's option dialog) and call
+# test_gui.check_exports() (the files they wrote) and test_gui.capture_window() (the whole window)
+# from the Python shell. The test passes when paraview exits 0 and OUTPUT_DIR/gui-result.txt says
+# PASS with no failed line.
 #
 # Why --dr: without it ParaView reads the user's settings and, 1 s after the window shows, opens
 # the modal "Welcome to ParaView" dialog; the first script call that processes Qt events (e.g.
@@ -41,11 +43,14 @@ export HOME XDG_CONFIG_HOME XDG_CACHE_HOME XDG_DATA_HOME XDG_RUNTIME_DIR STYLIZE
 # on Python's path); after the wrapper's entries, so that ParaView's modules come first
 PYTHONPATH="${PYTHONPATH:+$PYTHONPATH:}$here"
 export PYTHONPATH
-rm -f "$out/gui-result.txt" "$out/gui-window.png" "$out/gui-comic.png" "$out/gui-none.png"
+rm -f "$out/gui-result.txt" "$out/gui-window.png" "$out/gui-comic.png" "$out/gui-none.png" \
+  "$out/gui-figure.svg" "$out"/gui-orbit-*.png "$out/gui-orbit.gif" "$out/gui-orbit-dialog.png"
 
 panel=pqClientMainWindow/propertiesDock/propertiesPanel
 sections=$panel/scrollArea/qt_scrollarea_viewport/scrollAreaWidgetContents
 view_panel=$sections/ViewFrame/ProxyPanel
+menu=pqClientMainWindow/menubar/menu_File
+orbit=pqClientMainWindow/StylizeOrbitDialog
 
 # click OBJECT: QtTesting events that click OBJECT's left button at (20, 10).
 click() {
@@ -83,6 +88,25 @@ $(click "$sections/DisplayButtons/DisplayButton")
 $(drag 295 600 380 600 440 600)
 $(drag 200 364 200 300 200 250)
   <pqevent object="pqClientMainWindow" command="process_events" arguments="300" />
+  <!-- File > Export Stylized Figure... and File > Save Stylized Orbit... (its option dialog:
+       3 frames over 30 degrees at 5 frames per second, patterns not anchored) -->
+  <pqevent object="$menu" command="activate" arguments="actionStylizeExportFigure" />
+  <pqevent object="pqClientMainWindow/StylizeFigureFileDialog" command="filesSelected"
+      arguments="$out/gui-figure.svg" />
+  <pqevent object="$menu" command="activate" arguments="actionStylizeSaveOrbit" />
+  <pqevent object="pqClientMainWindow/StylizeOrbitFileDialog" command="filesSelected"
+      arguments="$out/gui-orbit.gif" />
+  <pqevent object="$orbit/frames" command="set_int" arguments="3" />
+  <pqevent object="$orbit/degrees" command="set_double" arguments="30" />
+  <pqevent object="$orbit/fps" command="set_int" arguments="5" />
+  <pqevent object="$orbit/surface_anchor" command="set_boolean" arguments="false" />
+  <pqevent object="pqClientMainWindow" command="process_events" arguments="200" />
+  <pqevent object="pqClientMainWindow/pythonShellDock/pythonShell/consoleWidget" command="executeCommand"
+      arguments="import __main__; __main__.capture_window('gui-orbit-dialog.png')" />
+  <pqevent object="$orbit/ButtonBox/OkButton" command="activate" arguments="" />
+  <pqevent object="pqClientMainWindow" command="process_events" arguments="300" />
+  <pqevent object="pqClientMainWindow/pythonShellDock/pythonShell/consoleWidget"
+      command="executeCommand" arguments="import __main__; __main__.check_exports()" />
   <pqevent object="pqClientMainWindow/pythonShellDock/pythonShell/consoleWidget"
       command="executeCommand" arguments="import __main__; __main__.capture_window()" />
 </pqevents>
@@ -102,7 +126,8 @@ fi
 cat "$out/gui-result.txt"
 [ "$rc" -eq 0 ] || exit 1
 if [ "$(head -n 1 "$out/gui-result.txt")" != PASS ] || grep -q '^FAIL' "$out/gui-result.txt" ||
-   ! grep -q '^window captured' "$out/gui-result.txt"; then
+   ! grep -q '^window captured' "$out/gui-result.txt" ||
+   ! grep -q '^Export Stylized Figure... wrote' "$out/gui-result.txt"; then
   exit 1
 fi
 echo "paraview.gui passed"

@@ -9,13 +9,17 @@ its entries, a few of the exposed pass settings, that 'Stylized Surface' is offe
 display, and that the comic image differs from the style None's. It saves the view as
 gui-comic.png and writes gui-result.txt: "PASS" or the failed checks (run_gui.sh fails the test
 unless the file says PASS). Then run_gui.sh's QtTesting events check the properties panel's
-widgets and call capture_window() (below) to save the whole window as gui-window.png.
+widgets, use File > Export Stylized Figure... and File > Save Stylized Orbit... (ParaView's file
+dialog, the orbit's option dialog) and call check_exports() and capture_window() (below): the
+files those entries wrote, and the whole window saved as gui-window.png.
 """
 import ctypes
 import ctypes.util
 import os
 import re
 import struct
+import subprocess
+import xml.etree.ElementTree as ElementTree
 import zlib
 
 from paraview.simple import *  # noqa: F401,F403
@@ -99,10 +103,61 @@ def capture_window(name="gui-window.png", width=1280, height=800):
         ok = colours > 20
     except Exception as error:  # noqa: BLE001 - recorded as a failure
         message, ok = "window capture failed: %s" % error, False
+    return _record(ok, message)
+
+
+def _record(ok, message):
     print(("ok   " if ok else "FAIL ") + message, flush=True)
     with open(result, "a") as f:
         f.write(("" if ok else "FAIL ") + message + "\n")
     return ok
+
+
+def check_exports():
+    """What run_gui.sh's File menu events wrote (issue 40, item 3): gui-figure.svg from Export
+    Stylized Figure... (an SVG of the view's size with the comic's elements), and from Save
+    Stylized Orbit... with Frames 3, Degrees 30, Frame rate 5: gui-orbit-0000.png ... 0002.png
+    (the view turned between frames), gui-orbit.gif with 3 frames, and the camera put back."""
+    view = GetActiveView()
+    width, height = view.ViewSize
+    ok = True
+    try:
+        root = ElementTree.parse(os.path.join(out, "gui-figure.svg")).getroot()
+        size = [float(root.get(k, "0").rstrip("ptx")) for k in ("width", "height")]
+        elements = sum(1 for _ in root.iter())
+        ok &= _record(root.tag.endswith("svg") and abs(size[0] - width) <= 1
+                      and abs(size[1] - height) <= 1 and elements > 20,
+                      "Export Stylized Figure... wrote gui-figure.svg (%gx%g for a %dx%d view, "
+                      "%d elements)" % (size[0], size[1], width, height, elements))
+    except Exception as error:  # noqa: BLE001 - recorded as a failure
+        ok &= _record(False, "gui-figure.svg: %s" % error)
+    frames = [os.path.join(out, "gui-orbit-%04d.png" % i) for i in range(4)]
+    found = [os.path.exists(f) for f in frames]
+    ok &= _record(found == [True, True, True, False], "Save Stylized Orbit... wrote frames %s "
+                  "(0-2 expected)" % [i for i, f in enumerate(found) if f])
+    if all(found[:3]):
+        images = [pixels(f) for f in frames[:3]]
+        sizes = [im[0] for im in images]
+        moved = min(sum(abs(x - y) for p, q in zip(a[1], b[1]) for x, y in zip(p, q))
+                    / (3.0 * len(a[1])) for a, b in zip(images, images[1:]))
+        ok &= _record(all(s[:2] == (width, height) for s in sizes) and moved > 0.5,
+                      "orbit frames of the view's size %s turn (least mean change %.2f levels)"
+                      % (sizes[0][:2], moved))
+    try:
+        count = subprocess.run(
+            ["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+             "stream=nb_read_frames", "-of", "csv=p=0", os.path.join(out, "gui-orbit.gif")],
+            capture_output=True, text=True, timeout=60).stdout.strip()
+        ok &= _record(count == "3", "gui-orbit.gif has %s frames (3 expected)" % (count or "no"))
+    except Exception as error:  # noqa: BLE001 - recorded as a failure
+        ok &= _record(False, "gui-orbit.gif: %s" % error)
+    camera = [list(view.CameraPosition), list(view.CameraFocalPoint), list(view.CameraViewUp)]
+    restored = max(abs(a - b) for u, v in zip(camera, saved_camera) for a, b in zip(u, v))
+    ok &= _record(restored < 1e-6, "the orbit put the camera back (off by %.2g)" % restored)
+    return ok
+
+
+saved_camera = []
 
 
 def run():
@@ -211,6 +266,8 @@ def run():
           "(chroma %d, None's %d)" % (chroma, none_chroma))
     # the contour stays the active source, so the panel shows its display and the view
     SetActiveSource(contour)
+    saved_camera[:] = [list(view.CameraPosition), list(view.CameraFocalPoint),
+                       list(view.CameraViewUp)]
 
 
 try:
