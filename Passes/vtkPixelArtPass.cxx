@@ -82,6 +82,7 @@ enum Textures
   CLASSES_0,
   CLASSES_1,
   ART,
+  ART_OUTPUT, // the art pixels in output colours, blitted into the output (Plan::Blit)
   PALETTE
 };
 }
@@ -110,7 +111,8 @@ struct vtkPixelArtPass::Plan
   double AnchorUnit; // world size of a dither cell on the surface
   double TexelUnit;  // world size of a surface art pixel (a texel) at the focal point
   bool Fast, WriteDepth, Canny, Sobel, DepthEdges, NormalEdges, Edges, SurfaceAnchor;
-  bool Texels;                // SURFACE at full resolution: the art pixels are fixed to the surface
+  bool Texels; // SURFACE at full resolution: the art pixels are fixed to the surface
+  bool Blit; // every screen pixel is its art pixel's: the art stage writes output colours, blitted
   std::vector<float> Colours; // the list palette (RGBA); empty for LEVELS and GRAYS
   SceneRequest Scene;
   std::string Defines;
@@ -467,6 +469,10 @@ vtkPixelArtPass::Plan vtkPixelArtPass::PlanFrame(const vtkRenderState* s, const 
   }
   // The surface's own art pixels need the full-resolution positions (not in FAST).
   p.Texels = p.SurfaceAnchor && !p.Fast;
+  // Without texels or depth each screen pixel shows its art pixel's output colour: the art stage
+  // computes it once per art pixel and a nearest-neighbour blit writes the screen (a full-size
+  // stage cost 8-14 ms at 1920x1080 on llvmpipe).
+  p.Blit = !p.Texels && !p.WriteDepth && this->CanBlitToOutput(frame);
 
   auto define = [&p](bool on, const std::string& name) { AddDefine(p.Defines, on, name); };
   define(p.Fast, "PIXEL_FAST");
@@ -481,9 +487,12 @@ vtkPixelArtPass::Plan vtkPixelArtPass::PlanFrame(const vtkRenderState* s, const 
   define(p.Texels, "PIXEL_TEXELS");
   define(this->StylizeBackground, "PIXEL_STYLIZE_BACKGROUND");
   define(p.WriteDepth, "PIXEL_WRITE_DEPTH");
+  define(p.Blit, "PIXEL_BLIT_OUTPUT");
   const int palette = p.Colours.empty() ? (this->Palette == GRAYS ? 1 : 0) : 2;
   p.Defines += "#define PIXEL_PALETTE " + std::to_string(palette) + "\n";
   p.Defines += "#define PIXEL_LAYER " + std::to_string(this->Layer) + "\n";
+  p.Defines += "#define PIXEL_REDUCE_SAMPLES ivec2(" + std::to_string(std::min(p.Block[0], 16)) +
+    ", " + std::to_string(std::min(p.Block[1], 16)) + ")\n";
   return p;
 }
 
@@ -759,7 +768,8 @@ void vtkPixelArtPass::RenderArtStage(
   const int nx = p.Grid[0], ny = p.Grid[1];
   Inputs art = inputs;
   art.Depth = nullptr; // not read at the art resolution
-  vtkTextureObject* target = this->EnsureTexture(ART, nx, ny, GL_RGBA16F);
+  vtkTextureObject* target = p.Blit ? this->EnsureTexture(ART_OUTPUT, nx, ny, GL_RGBA8)
+                                    : this->EnsureTexture(ART, nx, ny, GL_RGBA16F);
   this->RenderStage(STYLIZE_STAGE, { target }, nx, ny,
     [&](vtkStylizeUniforms& u) { this->SetStageUniforms(u, frame, p, art, edges, nullptr); });
 }
@@ -768,6 +778,13 @@ void vtkPixelArtPass::RenderArtStage(
 void vtkPixelArtPass::RenderUpsampleStage(
   const Frame& frame, const Plan& p, const Inputs& inputs, vtkTextureObject* gray)
 {
+  if (p.Blit)
+  {
+    const int rect[4] = { p.Origin[0], p.Origin[1], p.Origin[0] + p.Grid[0] * p.Block[0],
+      p.Origin[1] + p.Grid[1] * p.Block[1] };
+    this->BlitToOutput(frame, this->TextureSlot(ART_OUTPUT), rect);
+    return;
+  }
   this->RenderStageToOutput(frame, UPSAMPLE_STAGE, p.WriteDepth,
     [&](vtkStylizeUniforms& u)
     { this->SetStageUniforms(u, frame, p, inputs, gray, this->TextureSlot(ART)); });

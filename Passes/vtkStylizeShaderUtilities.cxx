@@ -1,11 +1,15 @@
 #include "vtkStylizeShaderUtilities.h"
 
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -157,6 +161,67 @@ vtkStylizeShaderUtilities::FullImage vtkStylizeShaderUtilities::GetFullImage(
     image.Offset[a] = std::round(tvp[a] * window[a] + origin[a] - rvp[a] * window[a]);
   }
   return image;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeShaderUtilities::PropsScreenRectangle(vtkRenderer* ren, vtkCamera* cam,
+  const double guard[4], const int size[2], int tileScale, int margin, int rect[4])
+{
+  double b[6];
+  ren->ComputeVisiblePropBounds(b);
+  if (!vtkMath::AreBoundsInitialized(b) ||
+    !std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
+  {
+    return false;
+  }
+  // Points and lines reach half their size beyond their vertices.
+  double extent = 0.0;
+  vtkActorCollection* actors = ren->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    if (actor->GetVisibility() && actor->GetProperty())
+    {
+      extent = std::max(extent,
+        static_cast<double>(
+          std::max(actor->GetProperty()->GetPointSize(), actor->GetProperty()->GetLineWidth())));
+    }
+  }
+  const double pad = margin + 2.0 + std::ceil(extent * tileScale);
+  vtkMatrix4x4* m =
+    cam->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1.0, 1.0);
+  double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, hi[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double x[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
+      1.0 };
+    double c[4];
+    m->MultiplyPoint(x, c);
+    if (!(c[3] > 1e-6 * (std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2]))) || !std::isfinite(c[3]))
+    {
+      return false; // a corner behind the eye: the projection does not bound the scene
+    }
+    for (int a = 0; a < 2; ++a)
+    {
+      const double ndc = guard[a] * c[a] / c[3] + guard[a + 2];
+      const double pixel = (ndc + 1.0) * 0.5 * size[a];
+      lo[a] = std::min(lo[a], pixel);
+      hi[a] = std::max(hi[a], pixel);
+    }
+  }
+  for (int a = 0; a < 2; ++a)
+  {
+    const double l = std::floor(lo[a] - pad), h = std::ceil(hi[a] + pad);
+    if (!std::isfinite(l) || !std::isfinite(h))
+    {
+      return false;
+    }
+    rect[a] = static_cast<int>(std::max(0.0, std::min(l, static_cast<double>(size[a]))));
+    rect[a + 2] = static_cast<int>(std::max(0.0, std::min(h, static_cast<double>(size[a]))));
+  }
+  // Worth it only when the rectangle leaves a part of the viewport out.
+  return rect[0] > 0 || rect[1] > 0 || rect[2] < size[0] || rect[3] < size[1];
 }
 
 //------------------------------------------------------------------------------

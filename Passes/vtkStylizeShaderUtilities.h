@@ -71,6 +71,16 @@ public:
    * (vtkWindowToImageFilter narrows its angle and height). 1 when undefined.
    */
   static double PixelWorldSize(vtkCamera* camera, int w, int h);
+
+  /**
+   * The pixels of a size[0] x size[1] viewport that the renderer's visible props can cover: their
+   * bounds projected by `cam` (then by `guard`, the guard band's NDC transform sx, sy, tx, ty),
+   * padded by `margin` pixels, 2 more and half the largest point size or line width (times
+   * `tileScale`), clipped to the viewport, as x0, y0, x1, y1 in `rect`. False when that is
+   * the whole viewport or cannot be bounded (no props, a corner behind the eye).
+   */
+  static bool PropsScreenRectangle(vtkRenderer* ren, vtkCamera* cam, const double guard[4],
+    const int size[2], int tileScale, int margin, int rect[4]);
 };
 
 /**

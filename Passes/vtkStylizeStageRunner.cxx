@@ -236,6 +236,31 @@ void vtkStylizeStageRunner::ReleaseGraphicsResources(vtkWindow* w)
 }
 
 //------------------------------------------------------------------------------
+bool vtkStylizeStageRunner::BlitHere(
+  vtkTextureObject* tex, const int rect[4], const std::string& name)
+{
+  vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
+  if (!tex || !fbo)
+  {
+    return false;
+  }
+  vtkOpenGLState* ostate = fbo->GetContext()->GetState();
+  this->TimeBegin();
+  fbo->SaveCurrentBindingsAndBuffers(GL_READ_FRAMEBUFFER);
+  fbo->Bind(GL_READ_FRAMEBUFFER);
+  fbo->AddColorAttachment(0, tex);
+  ostate->vtkglReadBuffer(GL_COLOR_ATTACHMENT0);
+  ostate->vtkglBlitFramebuffer(0, 0, static_cast<int>(tex->GetWidth()),
+    static_cast<int>(tex->GetHeight()), rect[0], rect[1], rect[2], rect[3], GL_COLOR_BUFFER_BIT,
+    GL_NEAREST);
+  fbo->RemoveColorAttachments(1);
+  fbo->UnBind(GL_READ_FRAMEBUFFER);
+  fbo->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
+  this->TimeEnd(name);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkStylizeStageRunner::Download(vtkTextureObject* tex, vtkFloatArray* out)
 {
   vtkOpenGLFramebufferObject* fbo = this->Framebuffer;

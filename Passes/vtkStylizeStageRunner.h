@@ -66,6 +66,13 @@ public:
   /** Runs `stage` into the bound framebuffer with the current GL state. */
   bool RunHere(int stage, const StageUniforms& uniforms);
 
+  /**
+   * Copies all of texture `tex` into `rect` (x0, y0, x1, y1, window pixels) of the bound draw
+   * framebuffer, nearest-neighbour scaled, under the current scissor (glBlitFramebuffer); timed
+   * as `name`. False without the stages' framebuffer (no stage ran yet).
+   */
+  bool BlitHere(vtkTextureObject* tex, const int rect[4], const std::string& name);
+
   /** The stages' framebuffer (created on first use), for reading a texture back. */
   vtkOpenGLFramebufferObject* GetFramebuffer() const { return this->Framebuffer; }
 

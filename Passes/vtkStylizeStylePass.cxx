@@ -1,7 +1,5 @@
 #include "vtkStylizeStylePass.h"
 
-#include "vtkActor.h"
-#include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkCommunicator.h"
 #include "vtkFloatArray.h"
@@ -10,7 +8,6 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
-#include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -25,7 +22,6 @@
 #include "vtkStylizeDepthFS.h"
 #include "vtkStylizeScreenFS.h"
 
-#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 
 #include <algorithm>
@@ -600,6 +596,38 @@ bool vtkStylizeStylePass::RenderStage(int stage, std::initializer_list<vtkTextur
 bool vtkStylizeStylePass::RenderStageToOutput(
   const Frame& frame, int stage, bool writeDepth, const StageUniforms& uniforms, int margin)
 {
+  return this->WriteOutput(
+    frame, writeDepth, margin, [&] { return this->Internals->Runner->RunHere(stage, uniforms); });
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStylePass::CanBlitToOutput(const Frame& frame) const
+{
+  const vtkInternals& in = *this->Internals;
+  if (in.Layer > 0 || !frame.Renderer || frame.Renderer->Transparent())
+  {
+    return false;
+  }
+  GLint samples = 0, second = GL_NONE;
+  glGetIntegerv(GL_SAMPLE_BUFFERS, &samples);
+  glGetIntegerv(GL_DRAW_BUFFER1, &second);
+  return samples == 0 && second == GL_NONE;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStylePass::BlitToOutput(
+  const Frame& frame, vtkTextureObject* source, const int rect[4])
+{
+  const int window[4] = { frame.Origin[0] + rect[0], frame.Origin[1] + rect[1],
+    frame.Origin[0] + rect[2], frame.Origin[1] + rect[3] };
+  return this->WriteOutput(frame, false, -1,
+    [&] { return this->Internals->Runner->BlitHere(source, window, "output blit"); });
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStylePass::WriteOutput(
+  const Frame& frame, bool writeDepth, int margin, const std::function<bool()>& write)
+{
   vtkInternals& in = *this->Internals;
   vtkOpenGLState* ostate = frame.Window->GetState();
   vtkStylizeScopedOutputState saved(ostate);
@@ -657,7 +685,7 @@ bool vtkStylizeStylePass::RenderStageToOutput(
     }
     scissor(rect[0], rect[1], rect[2], rect[3]);
   }
-  return in.Runner->RunHere(stage, uniforms);
+  return write();
 }
 
 //------------------------------------------------------------------------------
@@ -727,62 +755,9 @@ bool vtkStylizeStylePass::SceneRectangle(const Frame& frame, int margin, int rec
   {
     return false;
   }
-  double b[6];
-  frame.Renderer->ComputeVisiblePropBounds(b);
-  if (!vtkMath::AreBoundsInitialized(b) ||
-    !std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
-  {
-    return false;
-  }
-  // Points and lines reach half their size beyond their vertices.
-  double extent = 0.0;
-  vtkActorCollection* actors = frame.Renderer->GetActors();
-  vtkCollectionSimpleIterator it;
-  actors->InitTraversal(it);
-  while (vtkActor* actor = actors->GetNextActor(it))
-  {
-    if (actor->GetVisibility() && actor->GetProperty())
-    {
-      extent = std::max(extent,
-        static_cast<double>(
-          std::max(actor->GetProperty()->GetPointSize(), actor->GetProperty()->GetLineWidth())));
-    }
-  }
-  const double pad =
-    margin + 2.0 + std::ceil(extent * std::max(frame.TileScale[0], frame.TileScale[1]));
-  vtkMatrix4x4* m = frame.Camera->GetCompositeProjectionTransformMatrix(
-    frame.Renderer->GetTiledAspectRatio(), -1.0, 1.0);
-  double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, hi[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const double x[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
-      1.0 };
-    double c[4];
-    m->MultiplyPoint(x, c);
-    if (!(c[3] > 1e-6 * (std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2]))) || !std::isfinite(c[3]))
-    {
-      return false; // a corner behind the eye: the projection does not bound the scene
-    }
-    for (int a = 0; a < 2; ++a)
-    {
-      const double ndc = frame.GuardTransform[a] * c[a] / c[3] + frame.GuardTransform[a + 2];
-      const double pixel = (ndc + 1.0) * 0.5 * frame.Size[a];
-      lo[a] = std::min(lo[a], pixel);
-      hi[a] = std::max(hi[a], pixel);
-    }
-  }
-  for (int a = 0; a < 2; ++a)
-  {
-    const double l = std::floor(lo[a] - pad), h = std::ceil(hi[a] + pad);
-    if (!std::isfinite(l) || !std::isfinite(h))
-    {
-      return false;
-    }
-    rect[a] = static_cast<int>(std::max(0.0, std::min(l, static_cast<double>(frame.Size[a]))));
-    rect[a + 2] = static_cast<int>(std::max(0.0, std::min(h, static_cast<double>(frame.Size[a]))));
-  }
-  // Worth it only when the rectangle leaves a part of the viewport out.
-  return rect[0] > 0 || rect[1] > 0 || rect[2] < frame.Size[0] || rect[3] < frame.Size[1];
+  return vtkStylizeShaderUtilities::PropsScreenRectangle(frame.Renderer, frame.Camera,
+    frame.GuardTransform, frame.Size, std::max(frame.TileScale[0], frame.TileScale[1]), margin,
+    rect);
 }
 
 //------------------------------------------------------------------------------

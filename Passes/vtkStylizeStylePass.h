@@ -433,6 +433,22 @@ protected:
     const Frame& frame, int stage, bool writeDepth, const StageUniforms& uniforms, int margin = -1);
 
   /**
+   * Whether BlitToOutput() can write this frame: an opaque renderer (not a translucent layer,
+   * not a transparent renderer that keeps the layer below), a single-sampled output framebuffer
+   * with one draw buffer. Asked before the stages run, with the output framebuffer bound.
+   */
+  bool CanBlitToOutput(const Frame& frame) const;
+
+  /**
+   * Copies `source` into the output framebuffer, nearest-neighbour scaled onto `rect` (x0, y0,
+   * x1, y1 in the frame's stage pixels, guard band included; it may reach past the viewport),
+   * inside the viewport, with the viewport's depth cleared to the far plane: the final write of
+   * an image that is constant over blocks of pixels (pixel art's art pixels, already in output
+   * colours), as a blit instead of a full-size stage. Only where CanBlitToOutput().
+   */
+  bool BlitToOutput(const Frame& frame, vtkTextureObject* source, const int rect[4]);
+
+  /**
    * The viewport's pixels where the scene can be: the screen rectangle of the visible props'
    * bounds, grown by `margin` pixels plus the largest point size and line width, clipped to the
    * viewport; rect = x0, y0, x1, y1 (x1, y1 exclusive; may be empty). False when it cannot be
@@ -503,6 +519,13 @@ protected:
    * G-buffer textures and the depth mapping: what a stage that calls the helpers needs.
    */
   void SetFieldUniforms(vtkStylizeUniforms& u, const Frame& frame);
+
+  /**
+   * The output state of RenderStageToOutput() (blending, viewport, scissor, depth, the culled
+   * background strips), then `write` draws into it.
+   */
+  bool WriteOutput(
+    const Frame& frame, bool writeDepth, int margin, const std::function<bool()>& write);
 
   /** Frees everything a style made for its stages (ReleaseGraphicsResources() calls it). */
   virtual void ReleaseStyleResources(vtkWindow*) {}

@@ -8,12 +8,15 @@
 //   PIXEL_STAGE_HYSTERESIS  one step: weak art pixels next to a strong one become strong
 //   PIXEL_STAGE_STYLIZE     edges, 8x8 ordered dither, palette: the art-pixel image
 //   PIXEL_STAGE_UPSAMPLE    each screen pixel takes its art pixel's colour; writes the depth
+//                           (not run with PIXEL_BLIT_OUTPUT: the stylize stage writes output
+//                           colours and a blit scales them onto the screen)
 // Every stage but the last runs at the art-pixel resolution (pixelArtSize). Other defines:
 //   PIXEL_FAST, PIXEL_CANNY, PIXEL_SOBEL, PIXEL_DEPTH_EDGES, PIXEL_NORMAL_EDGES, PIXEL_NORMALS,
 //   PIXEL_POSITIONS, PIXEL_EDGES (an edge image exists), PIXEL_SURFACE_ANCHOR, PIXEL_TEXELS (the
 //   surface's art pixels are texels fixed to it: the upsample stage reads full resolution),
 //   PIXEL_STYLIZE_BACKGROUND, PIXEL_PALETTE (0 levels, 1 grays, 2 list), PIXEL_LAYER
-//   (0 pixel art, 1 pixelated, 2 edges).
+//   (0 pixel art, 1 pixelated, 2 edges), PIXEL_BLIT_OUTPUT (the stylize stage writes output
+//   colours), PIXEL_REDUCE_SAMPLES (the reduce stage's samples per axis, an ivec2).
 
 // stylizeColorTexture (declared in vtkStylizeScreenFS) is the full-resolution lit colour, or the
 // art pixels once they are reduced.
@@ -72,10 +75,16 @@ void pixelMain()
   float depth = 0.0;
   vec3 normal = vec3(0.0);
   vec3 position = vec3(0.0);
-  for (int j = 0; j < n.y; ++j)
+  // Constant loop bounds (PIXEL_REDUCE_SAMPLES: min(block, 16) per axis) let the compiler
+  // unroll the loops; a block clipped by the image's edge takes its own n samples.
+  for (int j = 0; j < PIXEL_REDUCE_SAMPLES.y; ++j)
   {
-    for (int i = 0; i < n.x; ++i)
+    for (int i = 0; i < PIXEL_REDUCE_SAMPLES.x; ++i)
     {
+      if (i >= n.x || j >= n.y)
+      {
+        continue;
+      }
       ivec2 p = lo + (ivec2(i, j) * extent) / n;
       vec4 c4 = texelFetch(stylizeColorTexture, p, 0);
       vec3 c = c4.rgb;
@@ -305,6 +314,15 @@ vec3 pixelQuantize(vec3 c, float t)
 
 #endif
 
+#if defined(PIXEL_STAGE_STYLIZE) || defined(PIXEL_STAGE_UPSAMPLE)
+// An art pixel (the stylize stage's rgb and alpha code) as the output pixel it becomes.
+vec4 pixelOutputColour(vec4 art)
+{
+  return stylizeOutput(art.a < 0.5, art.rgb, clamp(2.0 * (art.a - 1.0), 0.0, 1.0),
+    art.a > 1.75 ? 1.0 : 0.0);
+}
+#endif
+
 #ifdef PIXEL_STAGE_STYLIZE
 void pixelMain()
 {
@@ -341,7 +359,13 @@ void pixelMain()
 #endif
   // alpha: 2 for an outline, 1 + opacity / 2 for a surface (a translucent layer's opacity is
   // below 1), 0 for the background
-  gl_FragData[0] = vec4(result, edge ? 2.0 : (surface ? 1.0 + 0.5 * opacity : 0.0));
+  vec4 art = vec4(result, edge ? 2.0 : (surface ? 1.0 + 0.5 * opacity : 0.0));
+#ifdef PIXEL_BLIT_OUTPUT
+  // the upsample's output colour, computed here once per art pixel and blitted to the screen
+  gl_FragData[0] = pixelOutputColour(art);
+#else
+  gl_FragData[0] = art;
+#endif
 }
 #endif
 
@@ -617,8 +641,7 @@ void pixelMain()
   {
     discard;
   }
-  gl_FragData[0] = stylizeOutput(art.a < 0.5, art.rgb, clamp(2.0 * (art.a - 1.0), 0.0, 1.0),
-    art.a > 1.75 ? 1.0 : 0.0);
+  gl_FragData[0] = pixelOutputColour(art);
 #ifdef PIXEL_WRITE_DEPTH
 #ifdef PIXEL_FAST
   float depth = texelFetch(stylizeDepthTexture, k, 0).r;
