@@ -63,6 +63,15 @@ QString CallPython(const char* function, const QString& argument, QString& error
   return QString::fromUtf8(text);
 }
 
+// Shows a refusal's line in a warning box (named StylizeMessage, for QtTesting).
+void ShowRefusal(const QString& error)
+{
+  QMessageBox box(QMessageBox::Warning, QObject::tr("VTK Stylize"), error, QMessageBox::Ok,
+    pqCoreUtilities::mainWidget());
+  box.setObjectName("StylizeMessage");
+  box.exec();
+}
+
 // Runs stylize_paraview.FUNCTION(**arguments) on the active view (through _gui_call) with a wait
 // cursor; shows the failure in a message box, or the written files in the status bar.
 void RunStylizeCall(const QString& function, const QJsonObject& arguments)
@@ -83,7 +92,7 @@ void RunStylizeCall(const QString& function, const QJsonObject& arguments)
   QWidget* main = pqCoreUtilities::mainWidget();
   if (!error.isEmpty())
   {
-    QMessageBox::warning(main, QObject::tr("VTK Stylize"), error);
+    ShowRefusal(error);
     return;
   }
   const QJsonArray written = result.value("written").toArray();
@@ -211,7 +220,7 @@ void pqStylizeFigureActions::saveOrbit()
   const QString options = CallPython("_gui_orbit_options", QString(), error);
   if (!error.isEmpty())
   {
-    QMessageBox::warning(pqCoreUtilities::mainWidget(), tr("VTK Stylize"), error);
+    ShowRefusal(error);
     return;
   }
   const QString file = AskFile(tr("Save Stylized Orbit"),

@@ -44,13 +44,14 @@ export HOME XDG_CONFIG_HOME XDG_CACHE_HOME XDG_DATA_HOME XDG_RUNTIME_DIR STYLIZE
 PYTHONPATH="${PYTHONPATH:+$PYTHONPATH:}$here"
 export PYTHONPATH
 rm -f "$out/gui-result.txt" "$out/gui-window.png" "$out/gui-comic.png" "$out/gui-none.png" \
-  "$out/gui-figure.svg" "$out"/gui-orbit-*.png "$out/gui-orbit.gif" "$out/gui-orbit-dialog.png"
+  "$out/gui-figure.svg" "$out"/gui-orbit-*.png "$out/gui-orbit.gif" "$out/gui-orbit-dialog.png" "$out/gui-refused.svg"
 
 panel=pqClientMainWindow/propertiesDock/propertiesPanel
 sections=$panel/scrollArea/qt_scrollarea_viewport/scrollAreaWidgetContents
 view_panel=$sections/ViewFrame/ProxyPanel
 menu=pqClientMainWindow/menubar/menu_File
 orbit=pqClientMainWindow/StylizeOrbitDialog
+shell=pqClientMainWindow/pythonShellDock/pythonShell/consoleWidget
 
 # click OBJECT: QtTesting events that click OBJECT's left button at (20, 10).
 click() {
@@ -105,8 +106,18 @@ $(drag 200 364 200 300 200 250)
       arguments="import __main__; __main__.capture_window('gui-orbit-dialog.png')" />
   <pqevent object="$orbit/ButtonBox/OkButton" command="activate" arguments="" />
   <pqevent object="pqClientMainWindow" command="process_events" arguments="300" />
-  <pqevent object="pqClientMainWindow/pythonShellDock/pythonShell/consoleWidget"
-      command="executeCommand" arguments="import __main__; __main__.check_exports()" />
+  <!-- a refusal: under the style None, Export Stylized Figure... shows the function's line in
+       the StylizeMessage box and writes nothing; then back to Comic -->
+  <pqevent object="$shell" command="executeCommand" arguments="import __main__; __main__.set_style(0)" />
+  <pqevent object="$menu" command="activate" arguments="actionStylizeExportFigure" />
+  <pqevent object="pqClientMainWindow/StylizeFigureFileDialog" command="filesSelected"
+      arguments="$out/gui-refused.svg" />
+  <pqcheck object="pqClientMainWindow/StylizeMessage" property="text"
+      arguments="cannot write a figure: the view's Style is None" />
+  <pqevent object="pqClientMainWindow/StylizeMessage/qt_msgbox_buttonbox/1QPushButton0"
+      command="activate" arguments="" />
+  <pqevent object="$shell" command="executeCommand" arguments="import __main__; __main__.set_style(1)" />
+  <pqevent object="$shell" command="executeCommand" arguments="import __main__; __main__.check_exports()" />
   <pqevent object="pqClientMainWindow/pythonShellDock/pythonShell/consoleWidget"
       command="executeCommand" arguments="import __main__; __main__.capture_window()" />
 </pqevents>

@@ -117,7 +117,9 @@ def check_exports():
     """What run_gui.sh's File menu events wrote (issue 40, item 3): gui-figure.svg from Export
     Stylized Figure... (an SVG of the view's size with the comic's elements), and from Save
     Stylized Orbit... with Frames 3, Degrees 30, Frame rate 5: gui-orbit-0000.png ... 0002.png
-    (the view turned between frames), gui-orbit.gif with 3 frames, and the camera put back."""
+    (the view turned between frames), gui-orbit.gif with 3 frames, and the camera put back;
+    no gui-refused.svg (the figure asked for under the style None, whose message box the
+    events checked and closed)."""
     view = GetActiveView()
     width, height = view.ViewSize
     ok = True
@@ -151,6 +153,8 @@ def check_exports():
         ok &= _record(count == "3", "gui-orbit.gif has %s frames (3 expected)" % (count or "no"))
     except Exception as error:  # noqa: BLE001 - recorded as a failure
         ok &= _record(False, "gui-orbit.gif: %s" % error)
+    ok &= _record(not os.path.exists(os.path.join(out, "gui-refused.svg")),
+                  "under the style None the entry wrote no figure (its refusal was shown)")
     camera = [list(view.CameraPosition), list(view.CameraFocalPoint), list(view.CameraViewUp)]
     restored = max(abs(a - b) for u, v in zip(camera, saved_camera) for a, b in zip(u, v))
     ok &= _record(restored < 1e-6, "the orbit put the camera back (off by %.2g)" % restored)
@@ -158,6 +162,13 @@ def check_exports():
 
 
 saved_camera = []
+
+
+def set_style(index):
+    """Sets the active view's Style (run_gui.sh's events: None for a refused figure)."""
+    view = GetActiveView()
+    view.Style = index
+    Render(view)
 
 
 def run():
