@@ -140,7 +140,7 @@ QWidget* OrbitField(const QJsonObject& option, QWidget* parent)
     box->setValue(value.toInt());
     field = box;
   }
-  else
+  else // "float", the only other type _gui_orbit_options gives
   {
     auto* box = new QDoubleSpinBox(parent);
     box->setDecimals(2);

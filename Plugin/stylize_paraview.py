@@ -149,6 +149,9 @@ def _gui_orbit_options():
     import inspect
     import json
     defaults = inspect.signature(SaveStylizedOrbit).parameters
+    kinds = {type(defaults[o[0]].default).__name__ for o in ORBIT_OPTIONS}
+    if not kinds <= {"bool", "int", "float"}:  # the dialog has fields for these alone
+        raise TypeError("orbit options of types the dialog cannot show: %s" % sorted(kinds))
     return json.dumps([{"name": name, "label": label, "default": defaults[name].default,
                         "type": type(defaults[name].default).__name__,
                         "minimum": low, "maximum": high, "help": text}

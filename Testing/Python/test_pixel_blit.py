@@ -10,15 +10,12 @@ must equal, pixel for pixel, the upsample stage's (DepthOutput ALWAYS, which nee
 and the stage timing must name the path each took: "output blit" in the first, the upsample
 stage in the second and under a multisampled window (where a blit cannot write).
 """
-import os
 import sys
 
 import vtkstylize
-from stylize_test_scene import check as record, failures
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkIOPLY import vtkPLYReader
+from stylize_test_scene import check as record, failures, offscreen_window, ply_mesh
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
-                                         vtkRenderWindow, vtkWindowToImageFilter)
+                                         vtkWindowToImageFilter)
 
 data = sys.argv[1]
 
@@ -46,23 +43,18 @@ def frame(window, ren, pass_):
 
 
 def scene(mesh, samples):
-    reader = vtkPLYReader()
-    reader.SetFileName(os.path.join(data, mesh))
-    normals = vtkPolyDataNormals()
-    normals.SetInputConnection(reader.GetOutputPort())
+    """The real-data mesh in a 643x401 offscreen window with `samples` multisamples."""
     mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(normals.GetOutputPort())
+    mapper.SetInputData(ply_mesh(data, mesh))
     actor = vtkActor()
     actor.SetMapper(mapper)
     actor.GetProperty().SetColor(0.9, 0.55, 0.3)
     ren = vtkRenderer()
     ren.AddActor(actor)
     ren.SetBackground(0.32, 0.34, 0.43)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
+    window = offscreen_window(643, 401)
     window.SetMultiSamples(samples)
     window.AddRenderer(ren)
-    window.SetSize(643, 401)
     ren.ResetCamera()
     ren.GetActiveCamera().Azimuth(30)
     ren.GetActiveCamera().Elevation(15)
@@ -79,7 +71,7 @@ def pixel_art(mode, size, depth):
 
 FAST, FAITHFUL = 0, 1
 AUTO, ALWAYS = 0, 1
-for mesh in ("bunny.ply", "fandisk.ply"):
+for mesh in ("bunny", "fandisk"):
     window, ren = scene(mesh, 0)
     for mode in (FAST, FAITHFUL):
         for size in (4, 7):
