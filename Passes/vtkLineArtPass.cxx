@@ -47,6 +47,7 @@ vtkLineArtPass::vtkLineArtPass()
   : vtkStylizeStylePass(vtkStylizeLightingPass::STANDARD)
   , Internal(new Internals)
 {
+  this->InteractiveImageReduction = 2; // the most expensive styles: a preview while dragging
   this->SetStages(vtkLineArtFS, "  lineArtMain();\n",
     std::vector<vtkStylizeStage>(std::begin(LineArtStages), std::end(LineArtStages)));
 }

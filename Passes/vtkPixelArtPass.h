@@ -371,6 +371,8 @@ protected:
   /** Patterns anchored to the surface: the SURFACE dither anchor (texels). */
   void AnchorToSurface(bool) override;
   void RestoreAnchors() override;
+  /** The scene renders at the art resolution already: no InteractiveImageReduction. */
+  bool AcceptsImageReduction() override { return false; }
   int SavedDitherAnchor = GRID;
 
   int Mode = FAITHFUL;

@@ -122,6 +122,7 @@ vtkSketchPass::vtkSketchPass()
   : vtkStylizeStylePass(vtkStylizeLightingPass::STANDARD)
   , Internals(new vtkInternals)
 {
+  this->InteractiveImageReduction = 2; // the most expensive styles: a preview while dragging
   std::string source = vtkSketchFS;
   std::string mainCall = "  sketchMain();\n";
   std::vector<vtkStylizeStage> stages(std::begin(SketchStages), std::end(SketchStages));

@@ -451,7 +451,8 @@ private:
     const double taper = 1.0 - share(this->S.DepthTaper) * share(depth);
     const double strength = std::isfinite(f) ? share(f) : 1.0;
     const double fade = 1.0 - share(this->S.StrengthTaper) * (1.0 - strength);
-    const double w = this->S.Widths[kind] * this->V.PointSize * taper * fade;
+    double w = this->S.Widths[kind] * this->V.PointSize * taper * fade;
+    w = w > 0.0 ? std::max(w, this->V.MinimumWidth) : w;
     return std::isfinite(w) ? std::min(1.0e4, std::max(0.0, w)) : 0.0;
   }
 
@@ -599,6 +600,7 @@ vtkTextureObject* vtkStylizeFeatureStrokes::RenderFrame(
   }
   view.PointSize = style->PointSize(frame);
   view.Interactive = frame.Interactive;
+  view.MinimumWidth = frame.Reduction > 1.0 ? 1.0 : 0.0;
   Internals& in = *this->Internal;
   vtkFloatArray* depth = in.LinearDepth;
   bool haveDepth =

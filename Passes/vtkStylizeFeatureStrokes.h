@@ -97,6 +97,9 @@ public:
     double PointSize = 1.0;
     /** The cheap variant: contours, boundaries and creases only (no curvature). */
     bool Interactive = false;
+    /** The narrowest stroke, pixels: 1 in a reduced interactive frame (InteractiveImageReduction)
+     * so that thin strokes stay visible when scaled up; 0 otherwise. */
+    double MinimumWidth = 0.0;
     /** The scene's bounds for the depth taper; invalid (the default): the renderer's props'. */
     double SceneBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
     /**

@@ -15,6 +15,7 @@
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeShaderUtilities.h"
 #include "vtkStylizeStageRunner.h"
+#include "vtkStylizeStylePassInternals.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -28,40 +29,6 @@
 #include <cmath>
 #include <memory>
 #include <utility>
-
-class vtkStylizeStylePass::vtkInternals
-{
-public:
-  vtkNew<vtkStylizeLightingPass> Lighting;
-  vtkNew<vtkStylizeGBufferPass> GBuffer;
-  vtkNew<vtkStylizeStageRunner> Runner;
-  // Translucent layers (RenderTranslucentLayers()): their G-buffer, the scene the stages read
-  // (GBuffer, or LayerGBuffer while a layer is stylized), the layer's number (0: opaque), the
-  // layers' composite (premultiplied, front to back) and its framebuffer and program.
-  vtkNew<vtkStylizeGBufferPass> LayerGBuffer;
-  vtkStylizeGBufferPass* Scene = nullptr;
-  int Layer = 0;
-  vtkTextureObject* LayerTexture = nullptr;
-  vtkOpenGLFramebufferObject* LayerFramebuffer = nullptr;
-  vtkStylizeScreenQuad LayerQuad;
-  vtkStylizeScreenQuad BackgroundQuad;     // the background around the scene's rectangle
-  std::vector<vtkTextureObject*> Textures; // the style's slots
-  bool Culling = true;                     // BackgroundCullingOn()
-
-  // This frame's guard band (PlanGuardBand()): the stages' size and the screen transform.
-  bool Guarded = false;
-  int GuardSize[2] = { 0, 0 };
-  double GuardTransform[4] = { 1.0, 1.0, 0.0, 0.0 };
-
-  void FreeTextures(vtkWindow* w)
-  {
-    for (vtkTextureObject*& t : this->Textures)
-    {
-      vtkStylizeShaderUtilities::FreeTexture(t, w);
-    }
-    vtkStylizeShaderUtilities::FreeTexture(this->LayerTexture, w);
-  }
-};
 
 //------------------------------------------------------------------------------
 vtkStylizeStylePass::vtkStylizeStylePass(int lightingModel)
@@ -105,6 +72,7 @@ void vtkStylizeStylePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Scene: "
      << (this->DelegatePass ? "the delegate's image (colour and depth)" : "the geometry") << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
+  os << indent << "InteractiveImageReduction: " << this->InteractiveImageReduction << "\n";
   os << indent << "WindowScale: " << this->WindowScale[0] << " " << this->WindowScale[1] << "\n";
   os << indent << "BackgroundCulling: " << (this->Internals->Culling ? "on" : "off") << "\n";
   os << indent << "StageTiming: " << (this->Internals->Runner->Timing ? "on" : "off") << "\n";
@@ -195,7 +163,7 @@ vtkIdType vtkStylizeStylePass::GetTextureBytes()
 {
   vtkInternals& in = *this->Internals;
   vtkIdType total = in.GBuffer->GetTextureBytes() + in.LayerGBuffer->GetTextureBytes() +
-    vtkStylizeShaderUtilities::TextureBytes(in.LayerTexture);
+    vtkStylizeShaderUtilities::TextureBytes(in.LayerTexture) + in.Reduced.GetTextureBytes();
   for (vtkTextureObject* t : in.Textures)
   {
     total += vtkStylizeShaderUtilities::TextureBytes(t);
@@ -274,117 +242,6 @@ double vtkStylizeStylePass::GetPixelsPerPoint(int height, int tiles)
   const double reference = this->GetPointReferenceHeight();
   return reference > 0.0 ? std::max(1, height) / reference
                          : std::max(1, tiles) * static_cast<double>(this->WindowScale[1]);
-}
-
-//------------------------------------------------------------------------------
-double vtkStylizeStylePass::PointSize(const Frame& frame)
-{
-  // Points -> pixels of the full (possibly tiled, magnified) image.
-  const double reference = this->GetPointReferenceHeight();
-  return reference > 0.0 ? frame.FullSize[1] / reference : frame.TileScale[1];
-}
-
-//------------------------------------------------------------------------------
-bool vtkStylizeStylePass::BeginFrame(const vtkRenderState* s, Frame& frame)
-{
-  vtkOpenGLClearErrorMacro();
-  vtkStylizeStageRunner* runner = this->Internals->Runner;
-  if (runner->Timing)
-  {
-    runner->ClearTimes();
-  }
-  this->NumberOfRenderedProps = 0;
-  runner->ResetFailure();
-  vtkRenderer* ren = s->GetRenderer();
-  frame.Renderer = ren;
-  frame.Window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  runner->SetWindow(frame.Window);
-  if (!frame.Window)
-  {
-    return false;
-  }
-  ren->GetTiledSizeAndOrigin(&frame.Size[0], &frame.Size[1], &frame.Origin[0], &frame.Origin[1]);
-  if (frame.Size[0] < 1 || frame.Size[1] < 1)
-  {
-    this->RenderScene(s, SceneRequest()); // draws the rest of the scene and finishes
-    return false;
-  }
-  const vtkStylizeShaderUtilities::FullImage full =
-    vtkStylizeShaderUtilities::GetFullImage(ren, frame.Origin[0], frame.Origin[1]);
-  for (int a = 0; a < 2; ++a)
-  {
-    frame.FullSize[a] = full.Size[a];
-    frame.FullOffset[a] = full.Offset[a];
-    frame.TileScale[a] = full.TileScale[a] * this->WindowScale[a];
-  }
-  frame.Camera = ren->GetActiveCamera();
-  frame.Parallel = frame.Camera->GetParallelProjection() != 0;
-  frame.PixelWorld =
-    vtkStylizeShaderUtilities::PixelWorldSize(frame.Camera, frame.Size[0], frame.Size[1]);
-  const double rate = frame.Window->GetDesiredUpdateRate();
-  frame.Interactive =
-    this->InteractiveUpdateRate > 0.0 && std::isfinite(rate) && rate >= this->InteractiveUpdateRate;
-  this->PlanGuardBand(frame);
-  return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkStylizeStylePass::PlanGuardBand(Frame& frame)
-{
-  vtkInternals& in = *this->Internals;
-  in.Guarded = false;
-  // A tile's borders inside the full image (an untiled render has none); a scene from an
-  // image (IceT's tile) holds nothing beyond the tile.
-  const double before[2] = { frame.FullOffset[0], frame.FullOffset[1] };
-  const double after[2] = { frame.FullSize[0] - frame.FullOffset[0] - frame.Size[0],
-    frame.FullSize[1] - frame.FullOffset[1] - frame.Size[1] };
-  const bool tile = before[0] >= 1.0 || before[1] >= 1.0 || after[0] >= 1.0 || after[1] >= 1.0;
-  if (this->DelegatePass || !tile)
-  {
-    return;
-  }
-  const double reach = this->GetReach(frame);
-  if (!(reach > 0.0))
-  {
-    return;
-  }
-  const int align = std::max(1, this->GetGuardAlignment(frame));
-  // At most this many pixels per side in all (a larger reach leaves a seam possible rather
-  // than render textures many times the tile's size).
-  constexpr double MaxSize = 8192.0;
-  const int band = static_cast<int>(std::ceil(std::min(reach, MaxSize)));
-  int guard[4], size[2];
-  for (int a = 0; a < 2; ++a)
-  {
-    // The band stays inside the full image; its lower corner on the alignment grid.
-    const long long offset = std::llround(before[a]);
-    long long lo = std::min<long long>(band, offset);
-    lo = offset - (offset - lo) / align * align;
-    const long long hi = std::max(0LL, std::min<long long>(band, std::llround(after[a])));
-    const long long total = frame.Size[a] + lo + hi;
-    if (total > MaxSize)
-    {
-      return;
-    }
-    guard[a] = static_cast<int>(lo);
-    guard[a + 2] = static_cast<int>(hi);
-    size[a] = static_cast<int>(total);
-  }
-  for (int a = 0; a < 2; ++a)
-  {
-    // The viewport's NDC [-1, 1] onto its pixels inside the band.
-    const double lo = guard[a], hi = guard[a + 2];
-    frame.Guard[a] = guard[a];
-    frame.Guard[a + 2] = guard[a + 2];
-    frame.GuardTransform[a] = frame.Size[a] / static_cast<double>(size[a]);
-    frame.GuardTransform[a + 2] = (lo - hi) / size[a];
-    frame.Origin[a] -= frame.Guard[a];
-    frame.FullOffset[a] -= frame.Guard[a];
-    frame.Size[a] = size[a];
-    in.GuardSize[a] = size[a];
-  }
-  std::copy(frame.GuardTransform, frame.GuardTransform + 4, in.GuardTransform);
-  in.Guarded = true;
 }
 
 //------------------------------------------------------------------------------
@@ -553,6 +410,12 @@ void vtkStylizeStylePass::RenderTranslucentLayers(const vtkRenderState* s, const
 void vtkStylizeStylePass::EndFrame(const vtkRenderState* s)
 {
   vtkStylizeGBufferPass* gbuffer = this->Internals->GBuffer;
+  if (this->Internals->Reduced.IsActive())
+  {
+    this->Internals->Runner->TimeBegin();
+    this->Internals->Reduced.End();
+    this->Internals->Runner->TimeEnd("UPSCALE");
+  }
   this->Internals->Runner->TimeBegin();
   gbuffer->RenderAfterGeometry(s);
   this->Internals->Runner->TimeEnd("AFTER");
@@ -629,6 +492,10 @@ bool vtkStylizeStylePass::WriteOutput(
   const Frame& frame, bool writeDepth, int margin, const std::function<bool()>& write)
 {
   vtkInternals& in = *this->Internals;
+  if (in.Reduced.IsActive())
+  {
+    in.Reduced.MarkWritten();
+  }
   vtkOpenGLState* ostate = frame.Window->GetState();
   vtkStylizeScopedOutputState saved(ostate);
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
@@ -841,6 +708,7 @@ void vtkStylizeStylePass::ReleaseGraphicsResources(vtkWindow* w)
   in.BackgroundQuad.Release(w);
   in.Runner->ReleaseGraphicsResources(w);
   in.FreeTextures(w);
+  in.Reduced.Release(w);
   vtkStylizeStageRunner::FreeFramebuffer(in.LayerFramebuffer, w);
   in.LayerQuad.Release(w);
   in.GBuffer->ReleaseGraphicsResources(w);

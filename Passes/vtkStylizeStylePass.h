@@ -126,6 +126,23 @@ public:
 
   ///@{
   /**
+   * Interactive image reduction: during the interactive variant's frames (InteractiveUpdateRate)
+   * the style renders its picture at 1/k of the viewport's width and height, its lengths scaled
+   * to match, and draws it scaled up (colour filtered linearly) over the viewport; translucent
+   * geometry, volumes and the overlay are still drawn at the window's resolution. A cheap
+   * preview while the user drags; still frames and screenshots are always at full size.
+   * 1 renders interactive frames at full size. Not applied to the pixel art (it renders its scene
+   * at its art resolution already), a tile of a magnified screenshot, several processes
+   * (ParaView in parallel), a transparent (layered) renderer or one that does not erase. A factor
+   * (dimensionless) in [1, 8]; each style sets its own: 1 for the comic and the pixel art, 2 for
+   * the sketch and the line art (their still frames cost the most).
+   */
+  vtkSetClampMacro(InteractiveImageReduction, int, 1, 8);
+  vtkGetMacro(InteractiveImageReduction, int);
+  ///@}
+
+  ///@{
+  /**
    * Window scale (not a style setting: set by whoever renders a magnified image in one piece):
    * the lengths the style's settings give in window pixels (vtkPixelArtPass::PixelSize, comic's
    * points with ReferenceHeight 0) are multiplied by it, as a tile of a screenshot magnified
@@ -288,6 +305,12 @@ protected:
     double PixelWorld = 1.0;
     /** The window renders at an interactive rate (InteractiveUpdateRate): a cheaper variant. */
     bool Interactive = false;
+    /**
+     * Window pixels per stage pixel: > 1 while the picture renders at a reduced size
+     * (InteractiveImageReduction); the stages' Size, Origin and full image are then the
+     * reduced picture's, and PointSize() is divided by it.
+     */
+    double Reduction = 1.0;
   };
 
   /**
@@ -362,6 +385,12 @@ protected:
   virtual int GetGuardAlignment(const Frame&)
   {
     return 1;
+  }
+
+  /** Whether InteractiveImageReduction applies to the style (default true). */
+  virtual bool AcceptsImageReduction()
+  {
+    return true;
   }
 
   /**
@@ -551,6 +580,7 @@ protected:
 
   bool PatternsAnchored = false; // AnchorPatternsToSurface() without a restore yet
   double InteractiveUpdateRate = 1.0;
+  int InteractiveImageReduction = 1;
   int WindowScale[2] = { 1, 1 };
   int TranslucentLayers = 4;
   int LastTranslucentLayers = 0;
@@ -564,6 +594,9 @@ private:
 
   /** Gives `frame` its guard band (BeginFrame()). */
   void PlanGuardBand(Frame& frame);
+
+  /** Reduces `frame` to InteractiveImageReduction's size where it applies (BeginFrame()). */
+  void PlanReduction(Frame& frame);
 
   /**
    * The background around the scene's rectangle `rect` of the stages' pixels, as the final

@@ -30,7 +30,8 @@ const std::vector<std::string>& AllConfigs()
     "pixel-image", "sketch-image", "comic-nocull", "sketch-8-nocull", "comic-interactive",
     "sketch-8-interactive", "pixel-faithful-4-interactive", "plain-translucent",
     "comic-translucent", "pixel-faithful-4-translucent", "sketch-8-translucent", "lines",
-    "vtk-lines", "lines-interactive" };
+    "vtk-lines", "lines-interactive", "sketch-8-fullsize-interactive",
+    "lines-fullsize-interactive" };
   return configs;
 }
 
@@ -67,7 +68,8 @@ void PrintHelp(const char* argv0)
   std::cout
     << "\n"
     << "                    (NAME-nocull: the style NAME with background culling off;\n"
-    << "                    NAME-interactive: its interactive variant, window rate 15);\n"
+    << "                    NAME-interactive: its interactive variant, window rate 15;\n"
+    << "                    NAME-fullsize: InteractiveImageReduction 1);\n"
     << "                    styles also report per-stage costs and memory per pixel\n"
     << "  --csv FILE        CSV output (default benchmark.csv)\n"
     << "  --markdown FILE   Markdown output (default benchmark.md), also printed to stdout\n"

@@ -365,7 +365,7 @@ ConfigPasses MakeLinesConfig(const std::string& name)
   return c;
 }
 
-/** A configuration without a suffix (-nocull, -translucent, -interactive). */
+/** A configuration without a suffix (-nocull, -translucent, -fullsize, -interactive). */
 ConfigPasses MakeBaseConfig(const std::string& name, double diagonal)
 {
   auto starts = [&name](const char* head) { return name.rfind(head, 0) == 0; };
@@ -437,6 +437,18 @@ ConfigPasses MakeConfig(const std::string& name, double diagonal)
     ConfigPasses c = MakeConfig(name.substr(0, name.size() - 12), diagonal);
     c.Description += c.Root ? "; the actor at opacity 0.35 (the style's translucent layers, 4)"
                             : "; the actor at opacity 0.35, VTK's depth peeling (4 peels)";
+    return c;
+  }
+  if (EndsWith(name, "-fullsize"))
+  {
+    // NAME-fullsize: the style NAME with InteractiveImageReduction 1 (its interactive variant,
+    // as NAME-fullsize-interactive, at the window's full size: the cost before issue 41).
+    ConfigPasses c = MakeConfig(name.substr(0, name.size() - 9), diagonal);
+    if (auto* style = vtkStylizeStylePass::SafeDownCast(c.Root))
+    {
+      style->SetInteractiveImageReduction(1);
+      c.Description += "; InteractiveImageReduction 1 (interactive frames at full size)";
+    }
     return c;
   }
   if (EndsWith(name, "-interactive"))

@@ -95,6 +95,8 @@ XML_SKIP = {("vtkStylizeLightingPass", "Model"): "set by the view",
             ("vtkStylizeLightingPass", "ColorMode"): "set by the style (its Tint, ColoredLights)",
             ("vtkStylizeLightingPass", "SolidColorTones"): "set by the style with ColorMode",
             ("vtkSketchPass", "SceneBounds"): "set by the view (the data's bounds on all ranks)",
+            ("vtkPixelArtPass", "InteractiveImageReduction"):
+                "no effect: the pixel art renders its scene at its art resolution already",
             ("vtkSketchPass", "DirectionArrayName"):
                 "ParaView's data is composite: Model reads its tangents, which the Principal "
                 "Curvatures filter's TangentDirection picks"}
