@@ -515,12 +515,18 @@ bool vtkStylizeLightingPass::PostReplaceShaderValues(
 bool vtkStylizeLightingPass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
-  if (!program->IsUniformUsed("stylizeLights") || !this->LightTexture)
+  if (!program->IsUniformUsed("stylizeColorMode") || !this->LightTexture)
   {
     return true;
   }
-  program->SetUniformi("stylizeLights", this->LightTexture->GetTextureUnit());
+  if (program->IsUniformUsed("stylizeLights"))
+  {
+    program->SetUniformi("stylizeLights", this->LightTexture->GetTextureUnit());
+  }
   program->SetUniformi("stylizeLightCount", this->NumberOfLights);
+  // (LightData holds at least one light's 16 floats: the colour, then the direction at 4)
+  program->SetUniform3f("stylizeHeadlightColor", this->LightData.data());
+  program->SetUniform3f("stylizeHeadlightIncident", this->LightData.data() + 4);
   program->SetUniformf("stylizeSubjectFactor",
     static_cast<float>(ActorValue(prop, SUBJECT_FACTOR(), this->SubjectFactor, 0.0, 1.0)));
   program->SetUniformf("stylizeLevelsNear",

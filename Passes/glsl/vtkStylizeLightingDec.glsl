@@ -45,13 +45,16 @@ struct stylizeLight
 // VTK 9.1's vtkOpenGLPolyDataMapper does for positional, spot and directional lights.
 #ifdef STYLIZE_HEADLIGHT_ONLY
 // The light class of VTK's lighting complexity 1: one enabled light, a non-positional headlight
-// (this program is built for it; any other set of lights uses the general program below).
+// (this program is built for it; any other set of lights uses the general program below). Its
+// colour and direction are uniforms: no buffer fetch per fragment.
+uniform vec3 stylizeHeadlightColor;    // colour times intensity
+uniform vec3 stylizeHeadlightIncident; // unit vector from the light, view coordinates
 #define STYLIZE_LIGHT_COUNT 1
 stylizeLight stylizeFetchLight(int i, vec3 P)
 {
   stylizeLight l;
-  l.color = stylizeLightColor(texelFetch(stylizeLights, 0).rgb);
-  l.incident = texelFetch(stylizeLights, 1).xyz;
+  l.color = stylizeLightColor(stylizeHeadlightColor);
+  l.incident = stylizeHeadlightIncident;
   l.atten = 1.0;
   l.L = -l.incident;
   return l;
@@ -95,7 +98,7 @@ vec3 stylizeStandard(vec3 N, vec3 P, vec3 ambientC, vec3 diffuseC, vec3 specular
 {
 #ifdef STYLIZE_HEADLIGHT_ONLY
   // VTK's shortcut for a single headlight (lighting complexity 1)
-  vec3 lc = stylizeLightColor(texelFetch(stylizeLights, 0).rgb);
+  vec3 lc = stylizeLightColor(stylizeHeadlightColor);
   float df = max(0.0, N.z);
   float sf = stylizeSafePow(df, specPow);
   return ambientC + df * diffuseC * lc + sf * specularC * lc;
