@@ -27,6 +27,12 @@ bool vtkStylizeReducedOutput::Begin(
   vtkOpenGLRenderWindow* window, int w, int h, const int viewport[4])
 {
   using Utilities = vtkStylizeShaderUtilities;
+  if (this->Window && this->Window != window)
+  {
+    // Another window: the framebuffer belongs to the old context (the textures are remade by
+    // EnsureScreenTexture, the program by the quad).
+    vtkStylizeStageRunner::FreeFramebuffer(this->Framebuffer, nullptr);
+  }
   Utilities::EnsureScreenTexture(this->Color, window, w, h, GL_RGBA8);
   Utilities::EnsureScreenTexture(this->Depth, window, w, h, GL_DEPTH_COMPONENT32F);
   if (!this->Color || !this->Depth || !this->Color->GetHandle() || !this->Depth->GetHandle())
