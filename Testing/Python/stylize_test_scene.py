@@ -7,7 +7,7 @@ from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource, vtkSphereSource
 from vtkmodules.vtkIOPLY import vtkPLYReader
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factories)
 
 failures = []
@@ -84,3 +84,23 @@ def ply_mesh(data, name):
     normals.SetInputConnection(reader.GetOutputPort())
     normals.Update()
     return normals.GetOutput()
+
+
+def mesh_window(mesh, color, background, width, height, azimuth, elevation):
+    """`mesh` (vtkPolyData) as an actor of `color` in a renderer of `background`, in a new
+    width x height offscreen window, the camera reset and turned; returns (window, renderer,
+    actor)."""
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputData(mesh)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(*color)
+    ren = vtkRenderer()
+    ren.AddActor(actor)
+    ren.SetBackground(*background)
+    window = offscreen_window(width, height)
+    window.AddRenderer(ren)
+    ren.ResetCamera()
+    ren.GetActiveCamera().Azimuth(azimuth)
+    ren.GetActiveCamera().Elevation(elevation)
+    return window, ren, actor

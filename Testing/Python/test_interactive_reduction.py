@@ -24,7 +24,7 @@ at 3, this test requires:
 import sys
 
 import vtkstylize
-from stylize_test_scene import check as record, failures, offscreen_window, ply_mesh
+from stylize_test_scene import check as record, failures, mesh_window, ply_mesh
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
                                          vtkWindowToImageFilter)
@@ -95,20 +95,9 @@ def red(rgb):
 
 
 def scene(mesh, plane, hide_mesh=False):
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputData(ply_mesh(data, mesh))
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetColor(0.9, 0.85, 0.75)
-    ren = vtkRenderer()
-    ren.AddActor(actor)
-    ren.SetBackground(0.85, 0.88, 0.95)
-    window = offscreen_window(W, H)
-    window.AddRenderer(ren)
-    ren.ResetCamera()
+    window, ren, actor = mesh_window(ply_mesh(data, mesh), (0.9, 0.85, 0.75),
+                                     (0.85, 0.88, 0.95), W, H, 25, 10)
     camera = ren.GetActiveCamera()
-    camera.Azimuth(25)
-    camera.Elevation(10)
     if plane:
         # A translucent red plane through the mesh's far half, facing the camera.
         b = actor.GetBounds()

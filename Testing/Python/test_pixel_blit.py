@@ -13,7 +13,7 @@ stage in the second and under a multisampled window (where a blit cannot write).
 import sys
 
 import vtkstylize
-from stylize_test_scene import check as record, failures, offscreen_window, ply_mesh
+from stylize_test_scene import check as record, failures, mesh_window, ply_mesh
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
                                          vtkWindowToImageFilter)
 
@@ -44,20 +44,9 @@ def frame(window, ren, pass_):
 
 def scene(mesh, samples):
     """The real-data mesh in a 643x401 offscreen window with `samples` multisamples."""
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputData(ply_mesh(data, mesh))
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetColor(0.9, 0.55, 0.3)
-    ren = vtkRenderer()
-    ren.AddActor(actor)
-    ren.SetBackground(0.32, 0.34, 0.43)
-    window = offscreen_window(643, 401)
+    window, ren, _ = mesh_window(ply_mesh(data, mesh), (0.9, 0.55, 0.3), (0.32, 0.34, 0.43),
+                                 643, 401, 30, 15)
     window.SetMultiSamples(samples)
-    window.AddRenderer(ren)
-    ren.ResetCamera()
-    ren.GetActiveCamera().Azimuth(30)
-    ren.GetActiveCamera().Elevation(15)
     return window, ren
 
 
