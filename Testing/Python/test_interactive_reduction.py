@@ -26,8 +26,7 @@ import sys
 import vtkstylize
 from stylize_test_scene import check as record, failures, mesh_window, ply_mesh
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkWindowToImageFilter
 
 data = sys.argv[1]
 W, H = 400, 300

@@ -14,8 +14,7 @@ import sys
 
 import vtkstylize
 from stylize_test_scene import check as record, failures, mesh_window, ply_mesh
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
 data = sys.argv[1]
 
