@@ -46,10 +46,18 @@ the pattern's own doing). Both anchors' counts grow with the motion per frame in
 screen anchor's in proportion while the surface anchor's residue (pattern features redrawn on a
 moved pixel grid) grows less, so the ratio falls as the image grows or the turn per frame does.
 
+--measure NAME:K:M:LIMITS (repeatable) computes several counts in one run and checks each: K the
+sampling, M the margin, LIMITS the largest ratio (one number for every style, or per style, e.g.
+comic=0.45,pixel=0.6). The frames of one sampling are rendered once and every margin counted on
+them; the G-buffer's positions of a frame are rendered once for every style and anchor (the
+camera's path is the same). realdata.orbit checks its three counts so (surface points at K = 3;
+pixels; clear changes on the same pixels).
+
 usage: orbit.py DATADIR [--meshes bunny,fandisk] [--styles comic,pixel,sketch] [--frames 7]
                 [--size 400x300] [--degrees 1] [--light head|scene] [--margin 0] [--sampling 1]
                 [--control] [--check]
                 [--require comic] [--max-ratio 0.333]
+                [--measure NAME:K:M:LIMITS ...]
 """
 import argparse
 import math
@@ -136,8 +144,12 @@ def positions(renderer, window):
     return vtk_to_numpy(out).reshape(h, w, 4).copy()
 
 
-def measure(window, renderer, style, anchor, frames, margin=0.0, degrees=1.0, sampling=1,
-            control=False):
+def measure(window, renderer, style, anchor, frames, margins=(0.0,), degrees=1.0, sampling=1,
+            control=False, cache=None):
+    """The orbit's counts for one style and anchor: a list with, per margin of margins, the share
+    of surface points whose ink changes, then the pattern scale's minimum and maximum over the
+    frames (relative to the first) and the first frame's scale. cache (a dict) keeps each frame's
+    G-buffer positions, which depend on the camera alone, for the next style and anchor."""
     w, h = window.GetSize()
     setting, screen, surface = ANCHORS[style]
     styled = vtkstylize.create_pass(style)
@@ -159,9 +171,12 @@ def measure(window, renderer, style, anchor, frames, margin=0.0, degrees=1.0, sa
     renderer.SetPass(styled)
     camera = renderer.GetActiveCamera()
     start = [camera.GetPosition(), camera.GetFocalPoint(), camera.GetViewUp()]
-    changed = counted = 0
+    changed = [0] * len(margins)
+    counted = 0
     scales = []
     previous = None
+    if cache is None:
+        cache = {}
     for f in range(frames):
         if f:
             camera.Azimuth(degrees)
@@ -169,7 +184,9 @@ def measure(window, renderer, style, anchor, frames, margin=0.0, degrees=1.0, sa
         renderer.ResetCameraClippingRange()
         window.Render()
         image = capture(window)
-        pos = positions(renderer, window)
+        if f not in cache:
+            cache[f] = positions(renderer, window)
+        pos = cache[f]
         matrix = camera.GetCompositeProjectionTransformMatrix(w / h, -1, 1)
         m = np.array([[matrix.GetElement(i, j) for j in range(4)] for i in range(4)])
         on = pos[..., 3] > 0.5
@@ -196,36 +213,70 @@ def measure(window, renderer, style, anchor, frames, margin=0.0, degrees=1.0, sa
             seen = p_on[y0, x0] & p_on[y0, x0 + 1] & p_on[y0 + 1, x0] & p_on[y0 + 1, x0 + 1]
             gap = np.linalg.norm(p_pos[near_y, near_x, :3] - pos[ys, xs, :3], axis=1)
             seen &= gap < 2.0 * pixel_world * np.maximum(1.0, depth[ys, xs] / camera.GetDistance())
-            if style == "pixel":
-                now = image[ys, xs]
-                if margin > 0:
-                    # a clear change of colour: none of the four pixels around the point had it
-                    diff = np.ones(len(ys), bool)
-                    for dy in (0, 1):
-                        for dx in (0, 1):
-                            diff &= np.any(p_image[y0 + dy, x0 + dx] != now, axis=1)
-                else:
-                    diff = np.any(now != p_image[near_y, near_x], axis=1)
-            else:
-                gray = image.mean(axis=2)
-                p_gray = p_image.mean(axis=2)
-                tx, ty = x - x0, y - y0
-                bilinear = (p_gray[y0, x0] * (1 - tx) * (1 - ty) + p_gray[y0, x0 + 1] * tx * (1 - ty) +
-                            p_gray[y0 + 1, x0] * (1 - tx) * ty + p_gray[y0 + 1, x0 + 1] * tx * ty)
-                now, before = gray[ys, xs], bilinear
-                diff = (now < 128) != (before < 128)
-                if margin > 0:
-                    # a clear change of ink: both frames away from half gray by the margin
-                    band = 255.0 * margin
-                    diff &= (np.abs(now - 127.5) > band) & (np.abs(before - 127.5) > band)
-            changed += int(np.count_nonzero(diff & seen))
             counted += int(np.count_nonzero(seen))
+            for k, margin in enumerate(margins):
+                diff = changes(style, margin, image, p_image, ys, xs, x, y, x0, y0, near_x,
+                               near_y)
+                changed[k] += int(np.count_nonzero(diff & seen))
         previous = (image, pos, m, on)
     camera.SetPosition(start[0])
     camera.SetFocalPoint(start[1])
     camera.SetViewUp(start[2])
     styled.ReleaseGraphicsResources(window)
-    return changed / max(1, counted), min(scales) / scales[0], max(scales) / scales[0], scales[0]
+    return ([c / max(1, counted) for c in changed], min(scales) / scales[0],
+            max(scales) / scales[0], scales[0])
+
+
+def changes(style, margin, image, p_image, ys, xs, x, y, x0, y0, near_x, near_y):
+    """Which reprojected surface points changed their ink (see the module's docstring)."""
+    if style == "pixel":
+        now = image[ys, xs]
+        if margin > 0:
+            # a clear change of colour: none of the four pixels around the point had it
+            diff = np.ones(len(ys), bool)
+            for dy in (0, 1):
+                for dx in (0, 1):
+                    diff &= np.any(p_image[y0 + dy, x0 + dx] != now, axis=1)
+            return diff
+        return np.any(now != p_image[near_y, near_x], axis=1)
+    gray = image.mean(axis=2)
+    p_gray = p_image.mean(axis=2)
+    tx, ty = x - x0, y - y0
+    bilinear = (p_gray[y0, x0] * (1 - tx) * (1 - ty) + p_gray[y0, x0 + 1] * tx * (1 - ty) +
+                p_gray[y0 + 1, x0] * (1 - tx) * ty + p_gray[y0 + 1, x0 + 1] * tx * ty)
+    now, before = gray[ys, xs], bilinear
+    diff = (now < 128) != (before < 128)
+    if margin > 0:
+        # a clear change of ink: both frames away from half gray by the margin
+        band = 255.0 * margin
+        diff &= (np.abs(now - 127.5) > band) & (np.abs(before - 127.5) > band)
+    return diff
+
+
+def parse_limits(text, styles):
+    """'0.333' (every style) or 'comic=0.45,pixel=0.6': the largest ratio per style."""
+    if "=" in text:
+        return {k: float(v) for k, v in (item.split("=") for item in text.split(","))}
+    return {style: float(text) for style in styles}
+
+
+def parse_measures(args, styles):
+    """The counts to compute: [(name, sampling, margin, limits or None)]. --measure gives them;
+    without it, the one count of --sampling and --margin, checked (--check) for --require."""
+    if not args.measure:
+        limits = None
+        if args.check:
+            every = parse_limits(args.max_ratio, styles)
+            limits = {s: every.get(s, 1.0 / 3.0) for s in args.require.split(",")}
+        return [("", args.sampling, args.margin, limits)]
+    measures = []
+    for spec in args.measure:
+        parts = spec.split(":")
+        if len(parts) != 4:
+            sys.exit("orbit.py: --measure NAME:K:M:LIMITS, not %r" % spec)
+        name, sampling, margin, limits = parts
+        measures.append((name, int(sampling), float(margin), parse_limits(limits, styles)))
+    return measures
 
 
 def main():
@@ -252,47 +303,65 @@ def main():
     parser.add_argument("--require", default="comic")
     parser.add_argument("--max-ratio", default=str(1.0 / 3.0),
                         help="the largest surface/screen share --check accepts (the target: 1/3)")
+    parser.add_argument("--measure", action="append", metavar="NAME:K:M:LIMITS",
+                        help="a count of sampling K and margin M checked against LIMITS "
+                        "(repeatable; the frames of one K are shared)")
     args = parser.parse_args()
     width, height = (int(v) for v in args.size.split("x"))
-    if "=" in args.max_ratio:
-        limits = {k: float(v) for k, v in (item.split("=") for item in args.max_ratio.split(","))}
-    else:
-        limits = {style: float(args.max_ratio) for style in args.styles.split(",")}
+    styles = args.styles.split(",")
+    measures = parse_measures(args, styles)
     failures = []
     light = "scene" if args.control else args.light
-    if args.sampling > 1:
-        print("the %d-times magnified picture (%dx%d): %d x %d surface points per pixel" % (
-            args.sampling, width * args.sampling, height * args.sampling, args.sampling,
-            args.sampling))
     if args.control:
         print("control: the pattern alone (no outlines, a light fixed in the world)")
-    if args.margin > 0:
-        print("clear changes of ink only: both grays at least %.0f%% of full ink from half; pixel "
-              "art: a colour none of the four pixels around the point had" % (100 * args.margin))
-    print("%-8s %-6s %10s %10s %7s %22s" % ("mesh", "style", "screen %", "surface %", "ratio",
-                                              "scale vs still (range)"))
-    for mesh in args.meshes.split(","):
-        path = os.path.join(args.datadir, mesh + ".ply")
-        for style in args.styles.split(","):
-            window, renderer = scene(path, width * args.sampling, height * args.sampling, light)
-            screen = measure(window, renderer, style, "screen", args.frames, args.margin,
-                             args.degrees, args.sampling, args.control)
-            surface = measure(window, renderer, style, "surface", args.frames, args.margin,
-                              args.degrees, args.sampling, args.control)
-            ratio = surface[0] / max(1e-9, screen[0])
-            print("%-8s %-6s %10.2f %10.2f %7.2f %11.3f .. %.3f" % (
-                mesh, style, 100 * screen[0], 100 * surface[0], ratio, surface[1] * surface[3],
-                surface[2] * surface[3]))
+    for sampling in sorted({m[1] for m in measures}):
+        group = [m for m in measures if m[1] == sampling]
+        margins = [m[2] for m in group]
+        for name, _, margin, _ in group:
+            label = ("%s: " % name) if name else ""
+            if sampling > 1:
+                print("%sthe %d-times magnified picture (%dx%d): %d x %d surface points per pixel"
+                      % (label, sampling, width * sampling, height * sampling, sampling, sampling))
+            elif name:
+                print("%sthe %dx%d pixels" % (label, width, height))
+            if margin > 0:
+                print("%sclear changes of ink only: both grays at least %.0f%% of full ink from "
+                      "half; pixel art: a colour none of the four pixels around the point had"
+                      % (label, 100 * margin))
+        rows = {m[0]: [] for m in group}
+        for mesh in args.meshes.split(","):
+            path = os.path.join(args.datadir, mesh + ".ply")
+            cache = {}  # the frames' positions, shared by every style and anchor
+            for style in styles:
+                window, renderer = scene(path, width * sampling, height * sampling, light)
+                screen = measure(window, renderer, style, "screen", args.frames, margins,
+                                 args.degrees, sampling, args.control, cache)
+                surface = measure(window, renderer, style, "surface", args.frames, margins,
+                                  args.degrees, sampling, args.control, cache)
+                window.Finalize()
+                scale = (surface[1] * surface[3], surface[2] * surface[3])
+                for k, (name, _, _, limits) in enumerate(group):
+                    ratio = surface[0][k] / max(1e-9, screen[0][k])
+                    rows[name].append("%-8s %-6s %10.2f %10.2f %7.2f %11.3f .. %.3f" % (
+                        mesh, style, 100 * screen[0][k], 100 * surface[0][k], ratio, scale[0],
+                        scale[1]))
+                    if limits is None or style not in limits:
+                        continue
+                    label = ("%s: " % name) if name else ""
+                    if ratio > limits[style]:
+                        failures.append("%s%s %s: surface/screen ratio %.2f > %.2f" % (
+                            label, mesh, style, ratio, limits[style]))
+                    if not (0.8 <= scale[0] and scale[1] <= 1.2):
+                        failures.append("%s%s %s: pattern scale outside 20%% of the still "
+                                        "frame's" % (label, mesh, style))
+        for name, _, _, _ in group:
+            if name:
+                print("%s:" % name)
+            print("%-8s %-6s %10s %10s %7s %22s" % ("mesh", "style", "screen %", "surface %",
+                                                      "ratio", "scale vs still (range)"))
+            print("\n".join(rows[name]))
             sys.stdout.flush()
-            if style in args.require.split(","):
-                limit = limits.get(style, 1.0 / 3.0)
-                if ratio > limit:
-                    failures.append("%s %s: surface/screen ratio %.2f > %.2f" % (
-                        mesh, style, ratio, limit))
-                if not (0.8 <= surface[1] * surface[3] and surface[2] * surface[3] <= 1.2):
-                    failures.append("%s %s: pattern scale outside 20%% of the still frame's" % (mesh, style))
-            window.Finalize()
-    return realdata.exit_status(failures, args.check)
+    return realdata.exit_status(failures, args.check or bool(args.measure))
 
 
 if __name__ == "__main__":
