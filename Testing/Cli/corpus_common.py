@@ -12,6 +12,7 @@ classification of its outcome:
 import hashlib
 import os
 import random
+import re
 import resource
 import shutil
 import signal
@@ -185,3 +186,30 @@ def classify(rc, err, hung, rendered, left, program):
     else:
         kind = "bad refusal"
     return kind, lines
+
+
+QUOTED = re.compile(r"'[^']*'|\"[^\"]*\"")
+PATH = re.compile(r"(?<![\w.])/[^\s:'\"]+")
+GARBLED = re.compile(r"\S*[^\x20-\x7e\s]\S*|\S*\?\?\S*")
+FILE_NAME = re.compile(r"(?<![\w.])[A-Za-z_][\w+-]*(?:\.[A-Za-z][\w+-]*)+\b")
+NUMBERS = re.compile(r"(?<![A-Za-z_])[-+]?(?:0x[0-9a-fA-F]+|\d+(?:\.\d*)?(?:[eE][-+]?\d+)?)"
+                     r"|\b(?:nan|inf)\b")
+
+
+def message_kind(lines, program, name=None):
+    """The kind of a case's messages: its stderr lines without the program's name, with the
+    case's file name (name), paths, words of garbled bytes, quoted text, other file names and
+    numbers taken out ("cannot read '...': line N: ..."), in order, joined by " | " (a refusal's
+    one line; a render's warnings; nothing for a silent render)."""
+    kinds = []
+    for line in lines:
+        if line.startswith(program):
+            line = line[len(program):]
+        if name:
+            line = re.sub(r"(?<![\w.])%s(?!\w)" % re.escape(name), "F", line)
+        # (a reader's message may quote the file's bytes: a word of them is "X")
+        line = GARBLED.sub("X", PATH.sub("PATH", line))
+        line = NUMBERS.sub("N", FILE_NAME.sub("F", QUOTED.sub("'...'", line))).strip()
+        if line and line not in kinds:
+            kinds.append(line)
+    return " | ".join(kinds)

@@ -2,6 +2,7 @@
 """The hostile-input corpus, generated at test time, against the project's three entry points.
 
     hostile_corpus.py [--runner cli|python|paraview] PROGRAM DATA_DIR WORK_DIR
+    hostile_corpus.py --runner python|paraview --sample PROGRAM CLI_WORK_DIR WORK_DIR
 
 cli.hostile_corpus (--runner cli, the default; PROGRAM is vtkstylize), python.hostile_corpus
 (--runner python; PROGRAM is Examples/Python/stylize_dataset.py, run by this interpreter with the
@@ -36,7 +37,20 @@ paraview: one pvbatch reads every case in turn (the same bounds, per case, on th
 process); a case is a refusal when the reader's error message is one line, a render when the
 view rendered it in every style; a crash or hang fails the test (pvbatch is restarted after
 the case to go on with the rest).
-It prints the counts, the largest resident size (ru_maxrss) of any case, and the worst cases.
+It prints the counts, the largest resident size (ru_maxrss) of any case, and the worst cases, and
+writes WORK_DIR/results.json: each case's name, folder (relative to WORK_DIR), file, outcome,
+exit status and stderr lines.
+
+--sample (python and paraview runners): the corpus is the one a cli run generated in CLI_WORK_DIR
+(used as it is, not generated again), and the runner reads a stratified sample of it: one case per
+stratum of the cli run's results, a stratum being the file's extension (which picks the reader),
+the outcome and the kind of its message (corpus_common.message_kind: a refusal's line or a
+render's warnings with names, paths and numbers taken out). Every reader and every kind of
+refusal and of warning that the program meets then goes through the Python package and through
+ParaView too, in a seventh of the cases. cli.hostile_corpus is the fixture that makes CLI_WORK_DIR;
+docs/testing.md gives the coverage per kind against full runs. The strata whose outcome differs
+from the program's are printed (a difference is not a failure: ParaView renders a file whose
+picture vtkstylize refuses as empty, for example).
 """
 import json
 import os
@@ -50,14 +64,18 @@ from concurrent.futures import ThreadPoolExecutor
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from corpus_common import (REFERRING, SUPPORTED, bounded_child, classify, copy_entry,  # noqa: E402
-                           extension, is_png, leftovers, remove, rng, run_bounded,
+                           extension, is_png, leftovers, message_kind, remove, rng, run_bounded,
                            write_parallel)
 
 arguments = sys.argv[1:]
 RUNNER = "cli"
 if arguments[:1] == ["--runner"]:
     RUNNER, arguments = arguments[1], arguments[2:]
-if RUNNER not in ("cli", "python", "paraview") or len(arguments) != 3:
+SAMPLE = arguments[:1] == ["--sample"]
+if SAMPLE:
+    arguments = arguments[1:]
+if (RUNNER not in ("cli", "python", "paraview") or len(arguments) != 3
+        or (SAMPLE and RUNNER == "cli")):
     sys.exit(__doc__)
 exe, data, work = (os.path.abspath(a) for a in arguments)
 TIME_LIMIT = 60.0
@@ -68,22 +86,12 @@ os.makedirs(work)
 outputs = os.path.join(work, "out")
 os.makedirs(outputs)
 
-
-bases = os.path.join(work, "base")
-
-shutil.copytree(data, bases, symlinks=True, copy_function=copy_entry,
-                ignore=lambda d, names: [n for n in names if n == "out"])
-write_parallel(bases)
-
 cases = []  # (name, folder, file)
 
 
 def add(name, folder, file):
     cases.append((name, folder, file))
 
-
-for entry in sorted(os.listdir(bases)):
-    add("as is: " + entry, bases, entry)
 
 # ---- mutations ----------------------------------------------------------------------------------
 NUMBER = re.compile(rb"-?\d+\.\d+(?:[eE][-+]?\d+)?")
@@ -124,38 +132,75 @@ def mutations(name, content):
     return out
 
 
-mutated_root = os.path.join(work, "mutated")
-os.makedirs(mutated_root)
-for entry in sorted(os.listdir(bases)):
-    path = os.path.join(bases, entry)
-    if (extension(entry) not in SUPPORTED or os.path.islink(path) or not os.path.isfile(path)
-            or os.path.getsize(path) > MAX_MUTATED or os.path.getsize(path) == 0):
-        continue
-    content = open(path, "rb").read()
-    for k, (label, bytes_) in enumerate(mutations(entry, content)):
-        folder = os.path.join(mutated_root, "%s.%d" % (entry, k))
-        os.makedirs(folder)
-        if extension(entry) in REFERRING:
-            # beside the files it names: links to every other base file
-            for other in os.listdir(bases):
-                if other != entry:
-                    os.symlink(os.path.join(bases, other), os.path.join(folder, other))
-        with open(os.path.join(folder, entry), "wb") as f:
-            f.write(bytes_)
-        add("%s: %s" % (entry, label), folder, entry)
+def generate():
+    """The corpus in work: base/ (the data as it is, and the parallel formats), mutated/ and
+    special/ (see the module's docstring); each case added in order."""
+    bases = os.path.join(work, "base")
+    shutil.copytree(data, bases, symlinks=True, copy_function=copy_entry,
+                    ignore=lambda d, names: [n for n in names if n == "out"])
+    write_parallel(bases)
 
-# ---- special files ------------------------------------------------------------------------------
-special = os.path.join(work, "special")
-os.makedirs(special)
-os.mkfifo(os.path.join(special, "fifo.vtp"))
-os.mkdir(os.path.join(special, "folder.stl"))
-os.symlink("/dev/zero", os.path.join(special, "zero.stl"))
-os.symlink("/dev/null", os.path.join(special, "null.obj"))
-os.symlink("loop_b.ply", os.path.join(special, "loop_a.ply"))
-os.symlink("loop_a.ply", os.path.join(special, "loop_b.ply"))
-os.symlink("missing_target.vtk", os.path.join(special, "dangling.vtk"))
-for entry in sorted(os.listdir(special)):
-    add("special: " + entry, special, entry)
+    for entry in sorted(os.listdir(bases)):
+        add("as is: " + entry, bases, entry)
+
+    mutated_root = os.path.join(work, "mutated")
+    os.makedirs(mutated_root)
+    for entry in sorted(os.listdir(bases)):
+        path = os.path.join(bases, entry)
+        if (extension(entry) not in SUPPORTED or os.path.islink(path) or not os.path.isfile(path)
+                or os.path.getsize(path) > MAX_MUTATED or os.path.getsize(path) == 0):
+            continue
+        content = open(path, "rb").read()
+        for k, (label, bytes_) in enumerate(mutations(entry, content)):
+            folder = os.path.join(mutated_root, "%s.%d" % (entry, k))
+            os.makedirs(folder)
+            if extension(entry) in REFERRING:
+                # beside the files it names: links to every other base file
+                for other in os.listdir(bases):
+                    if other != entry:
+                        os.symlink(os.path.join(bases, other), os.path.join(folder, other))
+            with open(os.path.join(folder, entry), "wb") as f:
+                f.write(bytes_)
+            add("%s: %s" % (entry, label), folder, entry)
+
+    # special files
+    special = os.path.join(work, "special")
+    os.makedirs(special)
+    os.mkfifo(os.path.join(special, "fifo.vtp"))
+    os.mkdir(os.path.join(special, "folder.stl"))
+    os.symlink("/dev/zero", os.path.join(special, "zero.stl"))
+    os.symlink("/dev/null", os.path.join(special, "null.obj"))
+    os.symlink("loop_b.ply", os.path.join(special, "loop_a.ply"))
+    os.symlink("loop_a.ply", os.path.join(special, "loop_b.ply"))
+    os.symlink("missing_target.vtk", os.path.join(special, "dangling.vtk"))
+    for entry in sorted(os.listdir(special)):
+        add("special: " + entry, special, entry)
+
+
+def stratified_sample(cli_work):
+    """One case per stratum of the cli run's results in cli_work (see the module's docstring),
+    in corpus order: the cases, and the cli's outcome per case name."""
+    listing = os.path.join(cli_work, "results.json")
+    if not os.path.exists(listing):
+        sys.exit("hostile_corpus.py: no %s: run the cli runner (cli.hostile_corpus) first"
+                 % listing)
+    strata = {}
+    for case in json.load(open(listing)):
+        key = (extension(case["file"]), case["kind"],
+               message_kind(case["lines"], "vtkstylize: ", case["file"]))
+        strata.setdefault(key, case)
+    chosen = sorted(strata.items(), key=lambda item: item[1]["index"])
+    return ([(c["name"], os.path.join(cli_work, c["folder"]), c["file"]) for _, c in chosen],
+            {c["name"]: key for key, c in chosen})
+
+
+if SAMPLE:
+    sampled, program_outcome = stratified_sample(data)
+    for case in sampled:
+        add(*case)
+    print("a stratified sample of the corpus in %s: %d cases" % (data, len(cases)))
+else:
+    generate()
 
 
 # ---- running ------------------------------------------------------------------------------------
@@ -177,7 +222,7 @@ def run(index_case):
     left = leftovers(outputs, out)
     kind, lines = classify(rc, err, hung, rendered(out), left, program)
     remove(left)
-    return name, kind, rc, seconds, (lines[-1] if lines else ""), usage.ru_maxrss
+    return name, kind, rc, seconds, lines, usage.ru_maxrss
 
 
 def rendered(out):
@@ -225,7 +270,7 @@ def run_paraview():
                 _, index, kind, seconds, rss, message = (line.split(" ", 5) + [""])[:6]
                 done[int(index)] = (kind, float(seconds), int(rss), message)
         for index, (kind, seconds, rss, message) in done.items():
-            results[index] = (cases[index][0], kind, 0, seconds, message, rss)
+            results[index] = (cases[index][0], kind, 0, seconds, [message] if message else [], rss)
         last = max(done) if done else first - 1
         if last + 1 >= len(cases):
             break
@@ -235,7 +280,7 @@ def run_paraview():
         kind = "hang" if hung else "crash"
         if not hung and rc == 0:
             kind = "crash"  # (it stopped without finishing the list)
-        results[failed] = (cases[failed][0], kind, rc, 0.0, "pvbatch exit %d" % rc,
+        results[failed] = (cases[failed][0], kind, rc, 0.0, ["pvbatch exit %d" % rc],
                            usage.ru_maxrss)
         first = failed + 1
     return [results[i] for i in range(len(cases))]
@@ -249,9 +294,13 @@ else:
         results = list(pool.map(run, enumerate(cases)))
 peak_kb, peak_case = max((r[5], r[0]) for r in results)
 elapsed = time.monotonic() - start
+with open(os.path.join(work, "results.json"), "w") as f:
+    json.dump([{"index": i, "name": name, "folder": os.path.relpath(folder, work), "file": file,
+                "kind": r[1], "rc": r[2], "seconds": round(r[3], 3), "lines": r[4], "rss_kb": r[5]}
+               for i, ((name, folder, file), r) in enumerate(zip(cases, results))], f, indent=0)
 
 counts = {}
-for name, kind, rc, seconds, message, rss in results:
+for name, kind, rc, seconds, lines, rss in results:
     counts[kind] = counts.get(kind, 0) + 1
 print("| cases | clean refusals | renders | crashes | hangs | partial files | bad refusals or "
       "renders |")
@@ -263,9 +312,17 @@ print("| %d | %d | %d | %d | %d | %d | %d |" % (
 print("largest resident size %s: %.0f MB (%s); %.0f s in all; slowest cases:" % (
     "of the pvbatch process (its peak up to the case)" if RUNNER == "paraview" else "of any case",
     peak_kb / 1024.0, peak_case, elapsed))
-for name, kind, rc, seconds, message, rss in sorted(results, key=lambda r: -r[3])[:5]:
+for name, kind, rc, seconds, lines, rss in sorted(results, key=lambda r: -r[3])[:5]:
     print("  %.1f s  %s (%s)" % (seconds, name, kind))
+if SAMPLE:
+    # the strata whose outcome here is not the program's (information, not a failure)
+    other = [(name, program_outcome[name][1], kind) for name, kind, rc, seconds, lines, rss
+             in results if kind != program_outcome[name][1]]
+    print("%d of %d strata end as vtkstylize's do%s" % (len(results) - len(other), len(results),
+                                                      "; not these:" if other else ""))
+    for name, theirs, kind in other:
+        print("  %s: vtkstylize %s, here %s" % (name, theirs, kind))
 bad = [r for r in results if r[1] not in ("render", "refusal")]
-for name, kind, rc, seconds, message, rss in bad:
-    print("FAIL: %s: %s (exit %d) %s" % (name, kind, rc, message))
+for name, kind, rc, seconds, lines, rss in bad:
+    print("FAIL: %s: %s (exit %d) %s" % (name, kind, rc, lines[-1] if lines else ""))
 sys.exit(1 if bad else 0)
