@@ -13,6 +13,11 @@ fi
 mapfile -t files < <(git ls-files -- '*.cxx' '*.h' '*.txx' | \
   while read -r f; do [ -f "$f" ] && echo "$f"; done)
 if [ "${1:-}" = "--check" ]; then
+  # one run over every file; only when it finds something, one run per file to name them
+  if "$format" --style=file --dry-run -Werror "${files[@]}" >/dev/null 2>&1; then
+    echo "${#files[@]} files checked, 0 not formatted"
+    exit 0
+  fi
   bad=0
   for f in "${files[@]}"; do
     if ! "$format" --style=file --dry-run -Werror "$f" >/dev/null 2>&1; then

@@ -22,3 +22,21 @@ def run_render_script(pvbatch, name, out, stem, *arguments, ranks=0):
         sys.exit("FAIL: %s exited with %d:\n%s" % (" ".join(command[:4]), result.returncode,
                                                    (result.stdout + result.stderr)[-3000:]))
     return prefix, result.stdout
+
+
+def ranks_run(ranks_dir, ranks, name):
+    """What render_ranks.py rendered on `ranks` ranks (test_ranks.py, the fixture paraview_ranks)
+    for its script `name` (contour, realdata, translucent): the images' prefix and that script's
+    lines of pvbatch's output. Exits naming the fixture when the run is not there."""
+    log = os.path.join(ranks_dir, "ranks%d.log" % ranks)
+    if not os.path.exists(log):
+        sys.exit("FAIL: no %s: run paraview.ranks (test_ranks.py) first" % log)
+    section, lines = None, []
+    for line in open(log).read().splitlines():
+        if line.startswith("== "):
+            section = line[3:].strip()
+        elif section == name:
+            lines.append(line)
+    if "rendered" not in lines:
+        sys.exit("FAIL: %s holds no finished run of %s" % (log, name))
+    return os.path.join(ranks_dir, "ranks%d" % ranks, name), "\n".join(lines)

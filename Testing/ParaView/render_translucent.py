@@ -14,7 +14,8 @@ The bunny scan at opacity 0.35 (or 1) around the pinion gear (both from the real
 and, for the masks, none-bunny, none-gear and none-empty: ParaView's own rendering (Style None)
 of the bunny alone, the gear alone and nothing. With "split" both meshes go through ParaView's
 Redistribute DataSet filter, so that on several ranks each rank holds part of the bunny and part
-of the gear, and the script prints "pieces BUNNY GEAR": how many ranks hold part of each.
+of the gear, and the script prints "pieces BUNNY GEAR": how many ranks hold part of each; it then
+renders only the cases the ranks are compared on (layers, peeling, nogear, opaque).
 """
 import sys
 
@@ -70,7 +71,9 @@ view.CameraViewUp = [0.0, 1.0, 0.0]
 view.CameraViewAngle = 30.0
 
 
-def shot(name):
+def shot(name, compared_on_ranks=False):
+    if split and not compared_on_ranks:
+        return  # (the ranks are compared on layers, peeling, nogear and opaque)
     Render(view)
     SaveScreenshot("%s-%s.png" % (prefix, name), view, ImageResolution=[300, 240])
 
@@ -87,20 +90,20 @@ Show(bunny, view)
 Show(placed, view)
 for style, name in [(1, "comic"), (2, "pixel"), (3, "sketch")]:
     view.Style = style
-    shot(name + "-layers")
+    shot(name + "-layers", True)
     peeling = view.DepthPeeling
     view.DepthPeeling = 0
-    shot(name + "-peeling")
+    shot(name + "-peeling", True)
     view.DepthPeeling = peeling
     layers = {1: "Comic", 2: "PixelArt", 3: "Sketch"}[style] + "TranslucentLayers"
     setattr(view, layers, 0)
     shot(name + "-plain")
     setattr(view, layers, 4)
     Hide(placed, view)
-    shot(name + "-nogear")
+    shot(name + "-nogear", True)
     bunny_display.Opacity = 1.0
     shot(name + "-opaque-nogear")
     Show(placed, view)
-    shot(name + "-opaque")
+    shot(name + "-opaque", True)
     bunny_display.Opacity = 0.35
 print("rendered")

@@ -1,10 +1,11 @@
 #!/usr/bin/python3
 """paraview.client_server: pvserver-stylize on localhost, pvpython-stylize connected to it.
 
-    test_client_server.py WRAPPER_DIR OUTPUT_DIR
+    test_client_server.py WRAPPER_DIR OUTPUT_DIR RANKS_DIR
 
 WRAPPER_DIR holds pvbatch-stylize, pvserver-stylize and pvpython-stylize. The scene and styles
-of render_styles.py are rendered by pvbatch on 1 rank (the reference), then by a client
+of render_styles.py as pvbatch renders them on 1 rank are the reference (paraview.ranks' run,
+test_ranks.py, in RANKS_DIR: the renders paraview.mpi compares too); they are rendered by a client
 connected to a server of 1 rank with remote rendering (the server renders and sends the image)
 and with local rendering (the client renders the delivered geometry), and to a server of 2
 ranks (mpiexec) with remote rendering. Against pvbatch, pixels more than 16 levels apart, at
@@ -22,7 +23,10 @@ import time
 from vtkstylize_testing import vtkStylizeImageMetrics as M
 from vtkmodules.vtkIOImage import vtkPNGReader
 
-bindir, out = sys.argv[1], sys.argv[2]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pvbatch_script import ranks_run  # noqa: E402
+
+bindir, out, ranks_dir = sys.argv[1], sys.argv[2], sys.argv[3]
 os.makedirs(out, exist_ok=True)
 here = os.path.dirname(os.path.abspath(__file__))
 render = os.path.join(here, "render_styles.py")
@@ -88,10 +92,7 @@ pvbatch = os.path.join(bindir, "pvbatch-stylize")
 pvserver = os.path.join(bindir, "pvserver-stylize")
 pvpython = os.path.join(bindir, "pvpython-stylize")
 
-reference = os.path.join(out, "pvbatch")
-rc, log = run([pvbatch, render, reference] + SIZE)
-if rc != 0:
-    sys.exit("FAIL: pvbatch exited with %d:\n%s" % (rc, log[-3000:]))
+reference, _ = ranks_run(ranks_dir, 1, "contour")  # (render_styles.py's size: 400x300)
 
 print("| client-server run | style | pixels > 16 levels vs pvbatch | SSIM |")
 print("|---|---|---:|---:|")

@@ -1,7 +1,11 @@
 #!/usr/bin/python3
 """paraview.mpi: the same scene on 1 and on 2 ranks (mpiexec -n N pvbatch), each style compared.
 
-    test_mpi.py PVBATCH_WRAPPER OUTPUT_DIR [BASELINE_DIR]
+    test_mpi.py RANKS_DIR OUTPUT_DIR [BASELINE_DIR]
+
+RANKS_DIR holds the renders of the Wavelet contour (render_styles.py) on 1 and on 2 ranks, made by
+paraview.ranks (test_ranks.py, render_ranks.py: one pvbatch per rank count for every test that
+compares ranks).
 
 With 2 ranks the data is split (each rank holds a piece: checked), each rank lights its piece
 (the lighting pass, before IceT compositing) and the style runs once on the composited colour
@@ -34,31 +38,25 @@ Mesa). A missing baseline fails and names the image to copy there.
 """
 import os
 import shutil
-import subprocess
 import sys
 
 from vtkstylize_testing import vtkStylizeImageMetrics
 from vtkmodules.vtkIOImage import vtkPNGReader
 
-pvbatch, out = sys.argv[1], sys.argv[2]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pvbatch_script import ranks_run  # noqa: E402
+
+ranks_dir, out = sys.argv[1], sys.argv[2]
 baselines = sys.argv[3] if len(sys.argv) > 3 else None
 os.makedirs(out, exist_ok=True)
-script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "render_styles.py")
-env = dict(os.environ)
-if os.getuid() == 0:  # OpenMPI refuses root without these (CI runs as root)
-    env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 failures = []
 
 
 def run(ranks):
-    prefix = os.path.join(out, "ranks%d" % ranks)
-    command = ["mpiexec", "-n", str(ranks), "--oversubscribe", pvbatch, script, prefix]
-    result = subprocess.run(command, env=env, capture_output=True, text=True, timeout=600)
-    sys.stdout.write(result.stdout)
-    if result.returncode != 0:
-        sys.stdout.write(result.stderr[-4000:])
-        sys.exit("FAIL: %s exited with %d" % (" ".join(command), result.returncode))
-    pieces = [line for line in result.stdout.splitlines() if line.startswith("ranks")]
+    """The contour's renders on `ranks` ranks: their prefix and the "ranks ..." line's fields."""
+    prefix, log = ranks_run(ranks_dir, ranks, "contour")
+    sys.stdout.write(log + "\n")
+    pieces = [line for line in log.splitlines() if line.startswith("ranks")]
     return prefix, pieces[-1].split() if pieces else []
 
 

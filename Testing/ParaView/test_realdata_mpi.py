@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """paraview.realdata_mpi: real data split across 2 ranks against 1 rank, every style.
 
-    test_realdata_mpi.py PVBATCH_WRAPPER DATA_DIR OUTPUT_DIR
+    test_realdata_mpi.py RANKS_DIR
 
-render_realdata.py shows a scanned mesh (the bunny) and simulation output (the surface of an
+render_realdata.py (run on 1 and on 2 ranks by paraview.ranks: test_ranks.py, render_ranks.py, one
+pvbatch per rank count for every test that compares ranks; its images in RANKS_DIR) shows a scanned mesh (the bunny) and simulation output (the surface of an
 Exodus II hexahedral mesh, the vessel), each split by Redistribute DataSet with a layer of ghost
 cells (checked: on 2 ranks each rank holds part of each), in each style, and the sketch along the
 Principal Curvatures filter's directions (computed per rank) on the bunny. After IceT compositing
@@ -19,9 +20,9 @@ from vtkstylize_testing import vtkStylizeImageMetrics as M
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from pvbatch_script import run_render_script  # noqa: E402
+from pvbatch_script import ranks_run  # noqa: E402
 
-pvbatch, data, out = sys.argv[1], sys.argv[2], sys.argv[3]
+ranks_dir = sys.argv[1]
 failures = []
 
 
@@ -34,8 +35,7 @@ def read(path):
 
 prefixes = {}
 for ranks in (1, 2):
-    prefixes[ranks], log = run_render_script(pvbatch, "render_realdata.py", out, "ranks%d" % ranks,
-                                             data, ranks=ranks)
+    prefixes[ranks], log = ranks_run(ranks_dir, ranks, "realdata")
     pieces = dict(line.split()[1:3] for line in log.splitlines() if line.startswith("pieces "))
     print("%d rank(s): ranks holding part of each dataset: %s" % (ranks, pieces))
     for name in ("bunny", "vessel"):

@@ -1,6 +1,6 @@
 """paraview.translucent: translucent surfaces are stylized in ParaView's view (issue 16).
 
-    test_translucent.py PVBATCH_WRAPPER DATA_DIR OUTPUT_DIR
+    test_translucent.py PVBATCH_WRAPPER DATA_DIR OUTPUT_DIR RANKS_DIR
 
 render_translucent.py renders the bunny scan at opacity 0.35 around the pinion gear in each
 style (one process: the style draws the translucent layers from the props, the rank's pass
@@ -19,7 +19,9 @@ own props, peeled in front of the composited opaque depth and behind the whole s
 layer, and the style composites each layer by depth across the ranks. Against the same split
 scene on 1 rank, per style, for the translucent bunny around the gear (layers and depth peeling
 off), without the gear, and opaque: at most 0.5% of the pixels more than 16 levels apart (the
-issue's bound for the ranks' composited G-buffer).
+issue's bound for the ranks' composited G-buffer). The split scene's renders on 1 and 2 ranks are
+paraview.ranks' (test_ranks.py, render_ranks.py: one pvbatch per rank count for every test that
+compares ranks), in RANKS_DIR.
 """
 import os
 import sys
@@ -27,10 +29,10 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
-from pvbatch_script import run_render_script  # noqa: E402
+from pvbatch_script import ranks_run, run_render_script  # noqa: E402
 from stylize_png import png_array  # noqa: E402
 
-pvbatch, data, out = sys.argv[1], sys.argv[2], sys.argv[3]
+pvbatch, data, out, ranks_dir = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4]
 prefix, _ = run_render_script(pvbatch, "render_translucent.py", out, "translucent", data)
 
 
@@ -80,8 +82,7 @@ for name in ["comic", "pixel", "sketch"]:
 # Several ranks: the split scene on 1 and on 2 ranks.
 runs = {}
 for ranks in (1, 2):
-    runs[ranks], log = run_render_script(pvbatch, "render_translucent.py", out, "split%d" % ranks,
-                                         data, "split", ranks=ranks)
+    runs[ranks], log = ranks_run(ranks_dir, ranks, "translucent")
     pieces = [line.split()[1:] for line in log.splitlines() if line.startswith("pieces")]
     print("%d rank(s): ranks holding part of the bunny, of the gear: %s" % (
         ranks, " ".join(pieces[-1]) if pieces else "?"))
