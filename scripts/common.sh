@@ -18,11 +18,32 @@ STYLIZE_JOBS="${STYLIZE_JOBS:-$(nproc)}"
 # outlines, fonts-liberation gives text VTK's Arial metrics; the tests rasterize figures back with
 # librsvg2-bin (rsvg-convert) and poppler-utils (pdftoppm); orbit animations are encoded (GIF,
 # MP4) by ffmpeg. clang and libclang-rt-14-dev build the libFuzzer targets of the sanitizer stage.
-STYLIZE_PACKAGES=(cmake make g++ pkg-config libvtk9-dev python3-vtk9 python3-dev libglm-dev xvfb xauth
+# The tests: python3-numpy (image measures), git (source.format lists the tracked files),
+# clang-format (source.format). ccache keeps compilations between builds (the release and the
+# sanitizer build share the tests' tools; a second run of CI compiles nothing it compiled before).
+STYLIZE_PACKAGES=(cmake make g++ pkg-config git ccache libvtk9-dev python3-vtk9 python3-dev
+  python3-numpy libglm-dev xvfb xauth
   x11-utils libgl1-mesa-dri paraview paraview-dev mpi-default-bin libqt5svg5 qtbase5-dev
   libqt5svg5-dev libqt5opengl5-dev qttools5-dev libcli11-dev
   libcgal-demo libcairo2-dev libpotrace-dev fonts-liberation librsvg2-bin poppler-utils ffmpeg
   clang-format clang libclang-rt-14-dev)
+
+# ccache's keys hold paths relative to the checkout, so that the release and the sanitizer build
+# trees (siblings in it) and other clones share entries.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$STYLIZE_ROOT}"
+
+# stylize_stage NAME COMMAND...: runs COMMAND; with STYLIZE_STAGE_LOG set (by .ci/run), appends
+# "NAME SECONDS STATUS" to it, so that CI prints its stages' times at the end.
+stylize_stage() {
+  local name="$1" start="$EPOCHREALTIME" rc=0
+  shift
+  "$@" || rc=$?
+  if [ -n "${STYLIZE_STAGE_LOG:-}" ]; then
+    awk -v n="$name" -v a="$start" -v b="$EPOCHREALTIME" -v rc="$rc" \
+      'BEGIN { printf "%s\t%.0f\t%s\n", n, b - a, rc }' >>"$STYLIZE_STAGE_LOG"
+  fi
+  return "$rc"
+}
 
 stylize_install_dependencies() {
   local missing=()
@@ -41,7 +62,7 @@ stylize_install_dependencies() {
   if [ "$(id -u)" -ne 0 ]; then
     sudo="sudo"
   fi
-  $sudo env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get update -qq || return
   $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
     "${missing[@]}" >/dev/null
 }
@@ -76,6 +97,6 @@ stylize_start_display() {
 
 stylize_build() {
   echo "== configuring and building in $STYLIZE_BUILD"
-  cmake -S "$STYLIZE_ROOT" -B "$STYLIZE_BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake -S "$STYLIZE_ROOT" -B "$STYLIZE_BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null || return
   cmake --build "$STYLIZE_BUILD" -j "$STYLIZE_JOBS"
 }
