@@ -29,8 +29,11 @@ STYLIZE_PACKAGES=(cmake make g++ pkg-config git ccache libvtk9-dev python3-vtk9 
   clang-format clang libclang-rt-14-dev)
 
 # ccache's keys hold paths relative to the checkout, so that the release and the sanitizer build
-# trees (siblings in it) and other clones share entries.
+# trees (siblings in it) and other clones share entries; with CCACHE_NOHASHDIR the sanitizer
+# build's objects (line tables: -g1) are shared by clones at other paths too (their debug
+# information then names the folder of the clone that compiled them first).
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$STYLIZE_ROOT}"
+export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 
 # stylize_stage NAME COMMAND...: runs COMMAND; with STYLIZE_STAGE_LOG set (by .ci/run), appends
 # "NAME SECONDS STATUS" to it, so that CI prints its stages' times at the end.

@@ -188,7 +188,7 @@ def classify(rc, err, hung, rendered, left, program):
     return kind, lines
 
 
-QUOTED = re.compile(r"'[^']*'|\"[^\"]*\"")
+QUOTED = re.compile(r"(?<!\w)'[^'\n]*'(?!\w)|\"[^\"\n]*\"")
 PATH = re.compile(r"(?<![\w.])/[^\s:'\"]+")
 GARBLED = re.compile(r"\S*[^\x20-\x7e\s]\S*|\S*\?\?\S*")
 FILE_NAME = re.compile(r"(?<![\w.])[A-Za-z_][\w+-]*(?:\.[A-Za-z][\w+-]*)+\b")
