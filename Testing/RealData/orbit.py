@@ -120,10 +120,12 @@ def scene(path, width, height, light="head"):
 
 
 def capture(window):
+    """The frame the window has just rendered (not rendered again: ShouldRerender off)."""
     grab = vtk.vtkWindowToImageFilter()
     grab.SetInput(window)
     grab.SetInputBufferTypeToRGB()
     grab.ReadFrontBufferOff()
+    grab.ShouldRerenderOff()
     grab.Update()
     w, h, _ = grab.GetOutput().GetDimensions()
     return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(h, w, 3).astype(float)
@@ -184,6 +186,7 @@ def measure(window, renderer, style, anchor, frames, margins=(0.0,), degrees=1.0
         renderer.ResetCameraClippingRange()
         window.Render()
         image = capture(window)
+        gray = image.mean(axis=2) if style != "pixel" else None
         if f not in cache:
             cache[f] = positions(renderer, window)
         pos = cache[f]
@@ -197,7 +200,7 @@ def measure(window, renderer, style, anchor, frames, margins=(0.0,), degrees=1.0
         scales.append(float(np.median(camera.GetDistance() / depth[on])))
         pixel_world = 2 * camera.GetDistance() * math.tan(math.radians(camera.GetViewAngle() / 2)) / h
         if previous is not None:
-            p_image, p_pos, p_m, p_on = previous
+            p_image, p_gray, p_pos, p_m, p_on = previous
             ys, xs = np.nonzero(on)
             q = np.c_[pos[ys, xs, :3], np.ones(len(ys))] @ p_m.T
             ok = q[:, 3] > 0
@@ -215,10 +218,10 @@ def measure(window, renderer, style, anchor, frames, margins=(0.0,), degrees=1.0
             seen &= gap < 2.0 * pixel_world * np.maximum(1.0, depth[ys, xs] / camera.GetDistance())
             counted += int(np.count_nonzero(seen))
             for k, margin in enumerate(margins):
-                diff = changes(style, margin, image, p_image, ys, xs, x, y, x0, y0, near_x,
-                               near_y)
+                diff = changes(style, margin, (image, gray), (p_image, p_gray), ys, xs, x, y, x0,
+                               y0, near_x, near_y)
                 changed[k] += int(np.count_nonzero(diff & seen))
-        previous = (image, pos, m, on)
+        previous = (image, gray, pos, m, on)
     camera.SetPosition(start[0])
     camera.SetFocalPoint(start[1])
     camera.SetViewUp(start[2])
@@ -227,8 +230,10 @@ def measure(window, renderer, style, anchor, frames, margins=(0.0,), degrees=1.0
             max(scales) / scales[0], scales[0])
 
 
-def changes(style, margin, image, p_image, ys, xs, x, y, x0, y0, near_x, near_y):
-    """Which reprojected surface points changed their ink (see the module's docstring)."""
+def changes(style, margin, frame, p_frame, ys, xs, x, y, x0, y0, near_x, near_y):
+    """Which reprojected surface points changed their ink (see the module's docstring); frame and
+    p_frame: this and the previous frame's colours and grays."""
+    (image, gray), (p_image, p_gray) = frame, p_frame
     if style == "pixel":
         now = image[ys, xs]
         if margin > 0:
@@ -239,8 +244,6 @@ def changes(style, margin, image, p_image, ys, xs, x, y, x0, y0, near_x, near_y)
                     diff &= np.any(p_image[y0 + dy, x0 + dx] != now, axis=1)
             return diff
         return np.any(now != p_image[near_y, near_x], axis=1)
-    gray = image.mean(axis=2)
-    p_gray = p_image.mean(axis=2)
     tx, ty = x - x0, y - y0
     bilinear = (p_gray[y0, x0] * (1 - tx) * (1 - ty) + p_gray[y0, x0 + 1] * tx * (1 - ty) +
                 p_gray[y0 + 1, x0] * (1 - tx) * ty + p_gray[y0 + 1, x0 + 1] * tx * ty)
