@@ -28,6 +28,16 @@
 
 namespace
 {
+// What ParaView's Python shell runs before the first command, for a GUI where nothing has run
+// Python yet: the plugin's Python modules (stylize_paraview) are importable only through the
+// finder paraview.servermanager installs, which also attaches to the GUI's session.
+// (paraview.fromGUI before that first import: no progress printing to the terminal.)
+const char* const PrepareParaViewPython = "import sys\n"
+                                          "if 'paraview.servermanager' not in sys.modules:\n"
+                                          "    import paraview\n"
+                                          "    paraview.fromGUI = True\n"
+                                          "    import paraview.simple\n";
+
 // Calls stylize_paraview.FUNCTION(argument), or FUNCTION() for a null `argument`, in ParaView's
 // Python and returns the str it returns; on a Python failure (the module not importable, say)
 // returns "" and sets `error`.
@@ -35,7 +45,15 @@ QString CallPython(const char* function, const QString& argument, QString& error
 {
   vtkPythonInterpreter::Initialize();
   vtkPythonScopeGilEnsurer gil;
-  vtkSmartPyObject module(PyImport_ImportModule("stylize_paraview"));
+  vtkSmartPyObject module;
+  if (PyRun_SimpleString(PrepareParaViewPython) == 0)
+  {
+    module.TakeReference(PyImport_ImportModule("stylize_paraview"));
+  }
+  else
+  {
+    PyErr_SetString(PyExc_ImportError, "ParaView's Python (paraview.simple) did not import");
+  }
   vtkSmartPyObject result;
   if (module)
   {

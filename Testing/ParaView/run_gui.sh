@@ -32,13 +32,9 @@ if [ -z "${DISPLAY:-}" ]; then
   exit 1
 fi
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/stylize-gui.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT
-mkdir -p "$tmp/home" "$tmp/config" "$tmp/cache" "$tmp/data" "$tmp/runtime"
-chmod 700 "$tmp/runtime"
-HOME="$tmp/home" XDG_CONFIG_HOME="$tmp/config" XDG_CACHE_HOME="$tmp/cache"
-XDG_DATA_HOME="$tmp/data" XDG_RUNTIME_DIR="$tmp/runtime" STYLIZE_GUI_OUT="$out"
-export HOME XDG_CONFIG_HOME XDG_CACHE_HOME XDG_DATA_HOME XDG_RUNTIME_DIR STYLIZE_GUI_OUT
+. "$here/gui_profile.sh"
+STYLIZE_GUI_OUT="$out"
+export STYLIZE_GUI_OUT
 # test_gui.py imports stylize_pv_scene from this folder (a --script does not put its own folder
 # on Python's path); after the wrapper's entries, so that ParaView's modules come first
 PYTHONPATH="${PYTHONPATH:+$PYTHONPATH:}$here"
