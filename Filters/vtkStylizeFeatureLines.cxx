@@ -213,12 +213,15 @@ int vtkStylizeFeatureLines::RequestData(
     return 0;
   }
   // What does not depend on the view is kept while the input and its settings stay: a new
-  // camera recomputes only the contours and the suggestive contours.
+  // camera recomputes only the contours and the suggestive contours. The curvature (the
+  // costliest part) is computed the first time a frame needs it and kept: a still frame needs it
+  // for ridges, valleys and suggestive contours, the interactive variant does not, and a drag
+  // alternates the two (issue 52: each switch rebuilt the whole cache, seconds on 400k faces).
   FL::Cache& cache = *this->ViewIndependent;
   const bool curvature = this->IsKindEnabled(RIDGE) || this->IsKindEnabled(VALLEY) ||
     (this->Camera && this->IsKindEnabled(SUGGESTIVE_CONTOUR));
   FL::CacheKey key{ input, input->GetMTime(), this->CreaseAngle, this->RidgeThreshold,
-    this->CurvatureSmoothing, curvature };
+    this->CurvatureSmoothing };
   std::copy(this->ObjectBounds, this->ObjectBounds + 6, key.ObjectBounds);
   if (!cache.Valid || !(cache.Key == key))
   {
@@ -226,8 +229,9 @@ int vtkStylizeFeatureLines::RequestData(
     cache.Key = key;
     cache.Valid = true;
     cache.Surface = WeldedMesh(input);
+    cache.OwnDiagonal = cache.Surface.Diagonal;
+    ++this->ViewIndependentBuilds;
     // The thresholds' diagonal: the object's when given (a piece's lines as the whole's).
-    const double own = cache.Surface.Diagonal;
     const double* b = this->ObjectBounds;
     if (b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5])
     {
@@ -242,15 +246,18 @@ int vtkStylizeFeatureLines::RequestData(
     {
       // Creases are found for the interior kinds too: they keep those off the creases.
       FL::EdgeLines(cache.Surface, this->CreaseAngle, cache.Boundaries, cache.Creases);
-      if (curvature)
-      {
-        // (the curvature filter's radius is a fraction of the piece's own diagonal)
-        cache.Curvatures = Curvatures(
-          cache.Surface, own > 0.0 ? this->CurvatureSmoothing * cache.Surface.Diagonal / own : 0.0);
-        FL::RidgesAndValleys(
-          cache.Surface, cache.Curvatures, this->RidgeThreshold, cache.Ridges, cache.Valleys);
-      }
     }
+  }
+  if (curvature && !cache.HasCurvature && cache.Surface.Usable())
+  {
+    // (the curvature filter's radius is a fraction of the piece's own diagonal)
+    const double own = cache.OwnDiagonal;
+    cache.Curvatures = Curvatures(
+      cache.Surface, own > 0.0 ? this->CurvatureSmoothing * cache.Surface.Diagonal / own : 0.0);
+    FL::RidgesAndValleys(
+      cache.Surface, cache.Curvatures, this->RidgeThreshold, cache.Ridges, cache.Valleys);
+    cache.HasCurvature = true;
+    ++this->CurvatureBuilds;
   }
   const FL::Mesh& mesh = cache.Surface;
   std::vector<FL::Segments> viewSegments(NUMBER_OF_KINDS);

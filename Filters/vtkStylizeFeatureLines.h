@@ -27,7 +27,8 @@
  * skipped.
  * What does not depend on the view (the welded mesh, its curvature, boundaries, creases, ridges
  * and valleys) is kept while the input and those settings stay the same: a new camera
- * recomputes only the contours and the suggestive contours.
+ * recomputes only the contours and the suggestive contours, and a kind mask without the
+ * curvature's kinds keeps the curvature computed for an earlier one.
  * Method, thresholds and their tuning on real data: docs/algorithms.md ("Feature lines").
  *
  * @sa vtkStylizePrincipalCurvatures vtkFeatureEdges vtkPolyDataSilhouette
@@ -143,6 +144,18 @@ public:
   vtkGetVector6Macro(ObjectBounds, double);
   ///@}
 
+  ///@{
+  /**
+   * How many times this filter built the view-independent part (the welded mesh, boundaries and
+   * creases), and how many times its curvature (for ridges, valleys and suggestive contours):
+   * once per change of the input or of the settings above, not per camera and not when the kind
+   * mask goes from kinds without curvature to kinds with it and back (a drag's interactive
+   * frames and the still frames between them). Counts, for tests and measurements.
+   */
+  vtkGetMacro(ViewIndependentBuilds, int);
+  vtkGetMacro(CurvatureBuilds, int);
+  ///@}
+
 protected:
   vtkStylizeFeatureLines();
   ~vtkStylizeFeatureLines() override;
@@ -156,6 +169,8 @@ protected:
   double MinimumLength = 0.03;
   double CurvatureSmoothing = 0.01;
   double ObjectBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
+  int ViewIndependentBuilds = 0;
+  int CurvatureBuilds = 0;
 
 private:
   vtkStylizeFeatureLines(const vtkStylizeFeatureLines&) = delete;

@@ -58,18 +58,19 @@ struct View
 };
 
 /** What the view-independent part of a run depends on: the input and the settings used. */
+/** What the view-independent lines depend on (whether the curvature is needed is not part of
+ * it: the curvature is added to a cache that lacks it, and kept when a frame needs none). */
 struct CacheKey
 {
   const void* Input = nullptr;
   unsigned long InputTime = 0;
   double CreaseAngle = 0.0, RidgeThreshold = 0.0, CurvatureSmoothing = 0.0;
-  bool Curvature = false;
   double ObjectBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   bool operator==(const CacheKey& o) const
   {
     return this->Input == o.Input && this->InputTime == o.InputTime &&
       this->CreaseAngle == o.CreaseAngle && this->RidgeThreshold == o.RidgeThreshold &&
-      this->CurvatureSmoothing == o.CurvatureSmoothing && this->Curvature == o.Curvature &&
+      this->CurvatureSmoothing == o.CurvatureSmoothing &&
       std::equal(this->ObjectBounds, this->ObjectBounds + 6, o.ObjectBounds);
   }
 };
@@ -94,6 +95,8 @@ struct Cache
   bool Valid = false;
   CacheKey Key;
   vtkStylizeFeatureLinesInternals::Mesh Surface;
+  double OwnDiagonal = 0.0;  // the welded mesh's own diagonal (Surface.Diagonal: the object's)
+  bool HasCurvature = false; // Curvatures, Ridges and Valleys computed
   vtkStylizeFeatureLinesInternals::Curvature Curvatures;
   Segments Boundaries, Creases, Ridges, Valleys;
 };

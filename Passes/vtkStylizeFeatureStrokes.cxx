@@ -56,7 +56,8 @@ struct Surface
   vtkNew<vtkPolyData> KindedEdges;
   vtkMTimeType EdgesTime = 0;
   vtkNew<vtkStylizeLineVisibility> Visibility;
-  bool Seen = false;
+  bool Seen = false;    // drawn by this frame
+  int UnseenStills = 0; // still frames in a row that did not draw it
   /** The mean edge length of the surface's polygons, and the surface's time when measured. */
   double MeanEdge = 0.0;
   vtkMTimeType EdgeTime = 0;
@@ -574,9 +575,17 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
     s.Visibility->Update();
     sink.Append(s.Visibility->GetOutput(), item.Matrix);
   }
+  // A surface is dropped when its data is gone, or once 8 still frames in a row did not draw it.
+  // ParaView's interactive frames draw a decimated copy (LOD) of large data and its still frames
+  // the full geometry, with still frames of their own between drags: each kind of frame keeps
+  // the other's surface (dropping the full one rebuilt its welded mesh and curvature at every
+  // still frame after a drag, the decimated one at a drag's first frame).
   for (auto it = in.Cache.begin(); it != in.Cache.end();)
   {
-    it = it->second->Seen ? std::next(it) : in.Cache.erase(it);
+    Surface& s = *it->second;
+    s.UnseenStills = s.Seen ? 0 : s.UnseenStills + (view.Interactive ? 0 : 1);
+    const bool keep = s.Data && s.UnseenStills < 8;
+    it = keep ? std::next(it) : in.Cache.erase(it);
   }
   in.Depth->GetPointData()->SetScalars(nullptr);
   return sink.Finish(in.Strokes);

@@ -346,6 +346,62 @@ void Reuse()
   same("changed crease angle");
 }
 
+/** A drag in a GUI: interactive frames (contours, boundaries, creases: no curvature) and still
+ * frames (every kind) in turn, each with a new camera. The welded mesh and the curvature are
+ * built once (issue 52: each switch rebuilt them, seconds on a 400k-face scan), and the still
+ * frames' lines are a new filter's; a changed input builds both again. */
+void KindMaskSwitches()
+{
+  vtkNew<vtkParametricTorus> torus;
+  vtkNew<vtkParametricFunctionSource> source;
+  source->SetParametricFunction(torus);
+  source->SetUResolution(60);
+  source->SetVResolution(30);
+  source->SetScalarModeToNone();
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0.0, -6.0, 2.0);
+  vtkNew<vtkStylizeFeatureLines> kept;
+  kept->SetInputConnection(source->GetOutputPort());
+  kept->SetCamera(camera);
+  kept->SetRidgeThreshold(1.0);
+  kept->SetSuggestiveThreshold(1.0);
+  const int interactive = (1 << Kind::CONTOUR) | (1 << Kind::BOUNDARY) | (1 << Kind::CREASE);
+  const int still = 63;
+  for (int frame = 0; frame < 6; ++frame)
+  {
+    camera->Azimuth(7.0);
+    kept->SetKindMask(frame % 3 == 2 ? still : interactive);
+    kept->Update();
+  }
+  kept->SetKindMask(still);
+  camera->Elevation(10.0);
+  kept->Update();
+  STYLIZE_CHECK(kept->GetViewIndependentBuilds() == 1 && kept->GetCurvatureBuilds() == 1,
+    "interactive and still frames in turn: %d builds of the mesh, %d of the curvature (1 each)",
+    kept->GetViewIndependentBuilds(), kept->GetCurvatureBuilds());
+  vtkNew<vtkStylizeFeatureLines> fresh;
+  fresh->SetInputConnection(source->GetOutputPort());
+  fresh->SetCamera(camera);
+  fresh->SetRidgeThreshold(1.0);
+  fresh->SetSuggestiveThreshold(1.0);
+  fresh->Update();
+  const Lines a = Measure(kept->GetOutput()), b = Measure(fresh->GetOutput());
+  for (int k = 0; k < Kind::NUMBER_OF_KINDS; ++k)
+  {
+    STYLIZE_CHECK(a.Count[k] == b.Count[k] && a.Length[k] == b.Length[k],
+      "after the switches: %s lines differ from a new filter's",
+      vtkStylizeFeatureLines::GetKindName(k));
+  }
+  source->SetUResolution(50);
+  kept->SetKindMask(interactive);
+  kept->Update();
+  kept->SetKindMask(still);
+  kept->Update();
+  STYLIZE_CHECK(kept->GetViewIndependentBuilds() == 2 && kept->GetCurvatureBuilds() == 2,
+    "a changed input: %d builds of the mesh, %d of the curvature (2 each)",
+    kept->GetViewIndependentBuilds(), kept->GetCurvatureBuilds());
+}
+
 /** Empty data, points without faces, non-finite points, one triangle, a camera on the surface:
  * no crash, finite output. */
 void Degenerate()
@@ -397,6 +453,7 @@ int TestFeatureLines(int, char*[])
   RidgesAndValleys();
   SuggestiveContours();
   Reuse();
+  KindMaskSwitches();
   Degenerate();
   return Failures == 0 ? 0 : 1;
 }
