@@ -623,6 +623,12 @@ bool vtkStylizeReader::IsSupportedFile(const std::string& path)
 }
 
 //------------------------------------------------------------------------------
+bool vtkStylizeReader::IsPLYWithTriangleStrips(const std::string& path)
+{
+  return HasPLYStrips(path);
+}
+
+//------------------------------------------------------------------------------
 std::string vtkStylizeReader::GetBlockName(vtkCompositeDataIterator* iterator, int index)
 {
   if (iterator && iterator->HasCurrentMetaData() &&

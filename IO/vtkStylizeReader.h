@@ -110,6 +110,13 @@ public:
   static bool IsSupportedFile(const std::string& path);
 
   /**
+   * Whether path is a PLY file whose header declares triangle strips (element "tristrips"),
+   * which VTK's own vtkPLYReader does not read (it gives their surface no cells) and this
+   * reader does. Reads the header alone; false for a file that cannot be opened.
+   */
+  static bool IsPLYWithTriangleStrips(const std::string& path);
+
+  /**
    * The name this reader's messages give the leaf an iterator over a composite dataset is at:
    * its NAME metadata, else "block INDEX" (index: the leaf's position among the non-empty
    * leaves, from 0).

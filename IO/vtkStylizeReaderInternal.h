@@ -92,7 +92,10 @@ bool ASCIIPLYWithoutLastNewline(const std::string& path);
 /** The file's content with a newline added (for the ASCII PLY files that lack it). */
 std::string ContentWithLastNewline(const std::string& path);
 
-/** Whether the PLY file's header declares an element "tristrips". */
+/**
+ * Whether the file is a PLY whose header (read in its first 64 KiB) declares "element tristrips
+ * N" with N > 0.
+ */
 bool HasPLYStrips(const std::string& path);
 
 /**

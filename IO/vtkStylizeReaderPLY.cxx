@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -124,11 +125,24 @@ std::string ContentWithLastNewline(const std::string& path)
 //------------------------------------------------------------------------------
 bool HasPLYStrips(const std::string& path)
 {
+  // The header alone, at most 64 KiB of it (a PLY header is a few hundred bytes): ParaView asks
+  // this of every .ply that File > Open sees.
   std::ifstream in(path, std::ios::binary);
+  std::vector<char> head(1 << 16);
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  std::istringstream header(std::string(head.data(), static_cast<size_t>(in.gcount())));
   std::string line;
-  while (std::getline(in, line) && line.compare(0, 10, "end_header") != 0)
+  if (!std::getline(header, line) || line.compare(0, 3, "ply") != 0)
   {
-    if (line.compare(0, 18, "element tristrips ") == 0)
+    return false;
+  }
+  while (std::getline(header, line) && line.compare(0, 10, "end_header") != 0)
+  {
+    std::istringstream words(line);
+    std::string keyword, name;
+    long long count = 0;
+    if (words >> keyword >> name >> count && keyword == "element" && name == "tristrips" &&
+      count > 0)
     {
       return true;
     }

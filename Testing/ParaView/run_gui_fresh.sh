@@ -1,7 +1,8 @@
 #!/bin/sh
-# paraview.gui_fresh_start: the File menu's entries on first use, in a GUI that has run no Python.
+# paraview.gui_fresh_start: the File menu's entries on first use, in a GUI that has run no Python,
+# and File > Open of a PLY file stored as triangle strips.
 #
-#   run_gui_fresh.sh PARAVIEW_STYLIZE PVBATCH_STYLIZE OUTPUT_DIR [TIMEOUT_SECONDS]
+#   run_gui_fresh.sh PARAVIEW_STYLIZE PVBATCH_STYLIZE OUTPUT_DIR STRIPS_PLY [TIMEOUT_SECONDS]
 #
 # pvbatch writes a state (make_gui_state.py: the Wavelet contour in a Render View (Stylize), Style
 # Comic); the GUI starts from a fresh profile (gui_profile.sh, --dr) with that state (--state, XML:
@@ -9,13 +10,18 @@
 # dialog, an SVG path), then File > Save Stylized Orbit... (a GIF path, the options dialog: 2
 # frames over 20 degrees), and quits. Nothing runs Python before those clicks (run_gui.sh's test
 # starts with a Python script, which hid a failure: "No module named 'stylize_paraview'" in a
-# message box until the Python shell had been opened once). Passes when paraview exits 0 and both
-# entries wrote their files: an SVG figure, a GIF and its 2 PNG frames.
+# message box until the Python shell had been opened once). Then File > Open (ParaView's file
+# dialog) of STRIPS_PLY and Apply: the plugin's checked reader must read it (ParaView's own PLY
+# Reader reads a triangle-strip PLY with no cells), which the Python shell then records. Passes
+# when paraview exits 0, both entries wrote their files (an SVG figure, a GIF and its 2 PNG
+# frames), and the opened file is read by StylizeCheckedReader with cells.
 set -u
-paraview=${1:?usage: run_gui_fresh.sh PARAVIEW_STYLIZE PVBATCH_STYLIZE OUTPUT_DIR [TIMEOUT_SECONDS]}
-pvbatch=${2:?usage: run_gui_fresh.sh PARAVIEW_STYLIZE PVBATCH_STYLIZE OUTPUT_DIR [TIMEOUT_SECONDS]}
-out=${3:?usage: run_gui_fresh.sh PARAVIEW_STYLIZE PVBATCH_STYLIZE OUTPUT_DIR [TIMEOUT_SECONDS]}
-limit=${4:-180}
+usage="usage: run_gui_fresh.sh PARAVIEW_STYLIZE PVBATCH_STYLIZE OUTPUT_DIR STRIPS_PLY [TIMEOUT_SECONDS]"
+paraview=${1:?$usage}
+pvbatch=${2:?$usage}
+out=${3:?$usage}
+strips=${4:?$usage}
+limit=${5:-180}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out" || exit 1
 out=$(cd "$out" && pwd)
@@ -23,7 +29,7 @@ if [ -z "${DISPLAY:-}" ]; then
   echo "run_gui_fresh.sh: DISPLAY is not set (start Xvfb, e.g. Xvfb :95 &, and export DISPLAY=:95)" >&2
   exit 1
 fi
-rm -f "$out/fresh-figure.svg" "$out/fresh-orbit.gif" "$out"/fresh-orbit-*.png
+rm -f "$out/fresh-figure.svg" "$out/fresh-orbit.gif" "$out"/fresh-orbit-*.png "$out/fresh-open.txt"
 PYTHONPATH="${PYTHONPATH:+$PYTHONPATH:}$here" "$pvbatch" "$here/make_gui_state.py" \
   "$out/fresh.pvsm" || exit 1
 
@@ -45,6 +51,15 @@ cat > "$tmp/events.xml" <<XML
   <pqevent object="$orbit/degrees" command="set_double" arguments="20" />
   <pqevent object="$orbit/ButtonBox/OkButton" command="activate" arguments="" />
   <pqevent object="pqClientMainWindow" command="process_events" arguments="300" />
+  <pqevent object="$menu" command="activate" arguments="actionFileOpen" />
+  <pqevent object="pqClientMainWindow/FileOpenDialog" command="filesSelected"
+      arguments="$strips" />
+  <pqevent object="pqClientMainWindow/propertiesDock/propertiesPanel/Accept" command="activate"
+      arguments="" />
+  <pqevent object="pqClientMainWindow" command="process_events" arguments="300" />
+  <pqevent object="pqClientMainWindow/pythonShellDock/pythonShell/consoleWidget"
+      command="executeCommand"
+      arguments="s = GetActiveSource(); open('$out/fresh-open.txt', 'w').write('%s %d' % (s.GetXMLName(), s.GetDataInformation().GetNumberOfCells()))" />
 </pqevents>
 XML
 
@@ -72,5 +87,11 @@ else
   ls -la "$out" | grep fresh-orbit
   failed=1
 fi
+opened=$(cat "$out/fresh-open.txt" 2>/dev/null)
+case "$opened" in
+  "StylizeCheckedReader "[1-9]*) echo "File > Open read $(basename "$strips") with $opened cells" ;;
+  *) echo "FAIL: File > Open of $(basename "$strips"): '$opened' (StylizeCheckedReader with cells expected)"
+     failed=1 ;;
+esac
 [ "$failed" -eq 0 ] && echo "paraview.gui_fresh_start passed"
 exit "$failed"

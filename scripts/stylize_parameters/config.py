@@ -121,18 +121,27 @@ XML_FILTER_PROXIES = [
      "other data first). The Stylize view's Sketch draws along them with Direction Source "
      "Model: the direction chosen by Tangent Direction becomes the point data's tangents."),
 ]
-# (proxy name, class, label, help, information properties: (name, getter, documentation)):
-# ParaView sources (readers) of the Filters module. Not
-# registered for any extension (ParaView's own readers stay the ones File > Open picks): they
-# are in the Sources menu and in Python (paraview.simple.StylizeCheckedReader).
+# (proxy name, documented class, label, help, information properties: (name, getter,
+# documentation), the proxy's class in ParaView, ParaView's reader factory: [(file description,
+# the extensions of the class's GetSupportedExtensions() given, or all of them)]): ParaView
+# sources (readers) of the Filters and IO modules. They are in the Sources menu, in Python
+# (paraview.simple.StylizeCheckedReader) and among File > Open's file types; the factory asks the
+# ParaView class's CanReadFile() which files File > Open should give them (vtkPVStylizeCheckedReader:
+# those ParaView's own reader reads with a loss, the triangle-strip PLY). The PLY entry comes
+# apart, so that the Open dialog's "Set reader as default" for a PLY file stores *.ply alone.
 XML_SOURCE_PROXIES = [
     ("StylizeCheckedReader", "vtkStylizeReader", "Stylize Checked Reader",
      "For files that may be broken or hostile: the same checks as the vtkstylize command, so "
      "that such a file gives one error line instead of crashing, hanging or exhausting the "
-     "memory of the server.",
+     "memory of the server. File > Open gives it the PLY files stored as triangle strips (whose "
+     "surface ParaView's PLY Reader reads with no cells); for any other file choose its file "
+     "type in the Open dialog, or this source.",
      [("ErrorMessage", "GetErrorMessage",
        "The reason the last read failed, one line (empty after a success); read it with "
-       "UpdatePropertyInformation() and GetPropertyValue(\"ErrorMessage\").")]),
+       "UpdatePropertyInformation() and GetPropertyValue(\"ErrorMessage\").")],
+     "vtkPVStylizeCheckedReader",
+     [("Stylize Checked Reader (PLY)", ".ply"),
+      ("Stylize Checked Reader (VTK, Exodus, EnSight, OpenFOAM, OBJ, STL)", None)]),
 ]
 
 

@@ -326,10 +326,19 @@ def xml_proxy_properties(d, errors):
     return L
 
 
-def xml_proxy_close():
-    """The menu hint and the closing tag of a proxy of the VTK Stylize category."""
-    return ["      <Hints>", '        <ShowInMenu category="VTK Stylize"/>', "      </Hints>",
-            "    </SourceProxy>"]
+def xml_proxy_close(factory=(), extensions=""):
+    """The menu hint, the reader factory's hints ([(file description, extensions or None for the
+    rest of `extensions`)]) and the closing tag of a proxy of the VTK Stylize category."""
+    L = ["      <Hints>", '        <ShowInMenu category="VTK Stylize"/>']
+    every = [e.lstrip(".") for e in extensions.split()]
+    given = [e.lstrip(".") for _, listed in factory if listed for e in listed.split()]
+    for description, listed in factory:
+        exts = [e.lstrip(".") for e in listed.split()] if listed else \
+            [e for e in every if e not in given]
+        L.extend(xml_open("ReaderFactory", [("extensions", " ".join(exts)),
+                                            ("file_description", description)], "        ",
+                            "/>"))
+    return L + ["      </Hints>", "    </SourceProxy>"]
 
 
 def render_xml_filters(docs_by_class, errors):
@@ -360,9 +369,9 @@ def render_xml_filters(docs_by_class, errors):
         L.extend(xml_proxy_close())
     L.append("  </ProxyGroup>")
     L.append('  <ProxyGroup name="sources">')
-    for name, cls, label, text, informations in XML_SOURCE_PROXIES:
+    for name, cls, label, text, informations, pv_class, factory in XML_SOURCE_PROXIES:
         d = docs_by_class[cls]
-        L.extend(xml_proxy_open(name, cls, label, d, text))
+        L.extend(xml_proxy_open(name, pv_class, label, d, text))
         L.extend(xml_proxy_properties(d, errors))
         for info, getter, doc in informations:
             if not hasattr(d.klass, getter):
@@ -375,7 +384,7 @@ def render_xml_filters(docs_by_class, errors):
             L.append(wrap_xml_text(xml_text(doc), "          "))
             L.append("        </Documentation>")
             L.append("      </StringVectorProperty>")
-        L.extend(xml_proxy_close())
+        L.extend(xml_proxy_close(factory, d.klass.GetSupportedExtensions()))
     L.append("  </ProxyGroup>")
     L.append("</ServerManagerConfiguration>")
     L.append("")
