@@ -166,7 +166,11 @@ public:
   ///@}
 
   ///@{
-  /** Dot spacing (the screen period) in points. Range [2, 200], default 8. */
+  /**
+   * Dot spacing (the screen period) in points. Where the cells are under three pixels on the
+   * screen (a window much smaller than ReferenceHeight, a surface turned away under the OBJECT
+   * anchor) the dots fade to the tone, fully at two. Range [2, 200], default 8.
+   */
   vtkSetClampMacro(DotSpacing, double, 2.0, 200.0);
   vtkGetMacro(DotSpacing, double);
   ///@}
@@ -185,7 +189,10 @@ public:
   ///@}
 
   ///@{
-  /** Distance between hatch lines in points. Range [2, 200], default 8. */
+  /**
+   * Distance between hatch lines in points. Where the lines are under three pixels apart on the
+   * screen they fade to their mean, fully at two (as the dots). Range [2, 200], default 8.
+   */
   vtkSetClampMacro(HatchSpacing, double, 2.0, 200.0);
   vtkGetMacro(HatchSpacing, double);
   ///@}
@@ -283,8 +290,8 @@ public:
   /**
    * Pattern anchoring: SCREEN (default) or OBJECT. Values: SCREEN, to the image: the classic look;
    * the pattern stays while the scene moves; OBJECT, to the surface (object-space position): moves
-   * with the data (where the surface turns away and its cells shrink below two pixels, the
-   * pattern fades to the tone rather than alias).
+   * with the data (where the surface turns away and its cells shrink below three pixels, the
+   * pattern fades to the tone rather than alias, fully at two).
    */
   vtkSetClampMacro(Anchor, int, SCREEN, OBJECT);
   vtkGetMacro(Anchor, int);

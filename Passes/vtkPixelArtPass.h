@@ -273,7 +273,9 @@ public:
    * art-pixel grid aligned to the world origin (moves with a pan); SURFACE, the surface: in
    * FAITHFUL mode the surface is drawn in texels fixed to it (art pixels of the object-space
    * position, triplanar, their colour, dither and outlines moving with the surface: for
-   * animations), in FAST mode the dither follows the art pixel's object-space position.
+   * animations), in FAST mode the dither follows the art pixel's object-space position. Where
+   * the surface turns away and a texel or dither cell would be under a pixel on the screen, it
+   * merges with its neighbours, in powers of two along each of its axes.
    */
   vtkSetClampMacro(DitherAnchor, int, SCREEN, SURFACE);
   vtkGetMacro(DitherAnchor, int);

@@ -219,15 +219,18 @@ void comicMain()
   e *= 1.0 - clamp(texelFetch(comicFeatureInk, p, 0).r, 0.0, 1.0);
 #endif
 
-  // ---- pattern coordinates (computed for every pixel: derivatives need uniform control flow)
+  // ---- pattern coordinates and their derivatives per pixel
   float tone = surface ? stylizeTone(colour) : comicLuminance(colour); // (lines keep theirs)
   vec2 pixel = vec2(p) + 0.5 + comicPixelOffset;
 #ifdef COMIC_OBJECT_ANCHOR
   // Triplanar projection of the object-space position on the plane facing its geometric normal
-  // (from the neighbouring positions), in world units.
-  vec2 plane = stylizeTriplanar(stylizePositionTexture, p, comicSize, pixel);
+  // (from the neighbouring positions), in world units, and its derivatives per pixel.
+  StylizeTriplanar anchor = stylizeTriplanarFrame(stylizePositionTexture, p, comicSize, pixel);
+  vec2 plane = anchor.plane;
+  mat2 planeJ = anchor.J;
 #else
   vec2 plane = pixel;
+  mat2 planeJ = mat2(1.0);
 #endif
 
   float pattern = tone;
@@ -237,14 +240,22 @@ void comicMain()
 #if defined(COMIC_DOTS) || defined(COMIC_HATCH)
 #ifdef COMIC_DOTS
   vec2 dotUV = stylizeRotate(plane / comicDotSpacing, comicDotDirection);
-  float dotAA = clamp(0.5 * max(fwidth(dotUV.x), fwidth(dotUV.y)), 1e-4, 0.5);
+  // d(dotUV) / dx and / dy; the smooth edge is half the cell units a pixel spans, and the dots
+  // fade where a cell's side spans less than three pixels (stylizePatternFade)
+  vec2 dotDx = stylizeRotate(planeJ[0], comicDotDirection) / comicDotSpacing;
+  vec2 dotDy = stylizeRotate(planeJ[1], comicDotDirection) / comicDotSpacing;
+  float dotAA = clamp(0.5 * max(abs(dotDx.x) + abs(dotDy.x), abs(dotDx.y) + abs(dotDy.y)), 1e-4, 0.5);
+  float dotFade = stylizePatternFade(
+    max(length(vec2(dotDx.x, dotDy.x)), length(vec2(dotDx.y, dotDy.y))));
   float dots = stylizeHalftoneDots(dotUV, tone, dotAA);
 #else
   float dots = tone;
 #endif
 #ifdef COMIC_HATCH
   vec2 hatchUV = plane / comicHatchSpacing;
-  float hatchAA = clamp(0.5 * max(fwidth(hatchUV.x), fwidth(hatchUV.y)), 1e-4, 0.5);
+  mat2 hatchJ = planeJ / comicHatchSpacing; // d(hatchUV) / dx and / dy
+  float hatchAA = clamp(0.5 * max(abs(hatchJ[0].x) + abs(hatchJ[1].x),
+                                  abs(hatchJ[0].y) + abs(hatchJ[1].y)), 1e-4, 0.5);
   float angle = comicHatchAngle;
   // the layer FIGURE_INPUTS's record of the direction: COMIC_FIXED_ANGLE_STEP = comicHatchAngle
   float angleStep = COMIC_FIXED_ANGLE_STEP;
@@ -292,34 +303,37 @@ void comicMain()
   float width = comicHatchWidth > 0.0 ? comicHatchWidth : ink;
 #endif
   float hatch = comicLines(dot(hatchUV, across), width, hatchAA);
+  // the lines' frequency across them, cycles per pixel
+  float hatchFrequency = length(across * hatchJ);
 #ifdef COMIC_CROSS
   if (crossed)
   {
-    hatch = min(hatch, comicLines(dot(hatchUV, vec2(across.y, -across.x)), width, hatchAA));
+    vec2 along = vec2(across.y, -across.x);
+    hatch = min(hatch, comicLines(dot(hatchUV, along), width, hatchAA));
+    hatchFrequency = max(hatchFrequency, length(along * hatchJ));
   }
 #endif
+  float hatchFade = stylizePatternFade(hatchFrequency);
 #else
   float hatch = tone;
 #endif
   // Zones (eq. 13-14): dots above a1, hatching below a2, a continuous blend between.
   float t = comicBright > comicDark ? clamp((tone - comicDark) / (comicBright - comicDark), 0.0, 1.0)
                                     : step(comicDark, tone);
-#ifdef COMIC_OBJECT_ANCHOR
-  // Anchored to the surface, the cells shrink on the screen where the surface turns away; below
-  // two pixels a cell cannot be drawn without aliasing (its dot or line falls between pixels
-  // differently as the surface moves: moire on the still, flicker in an orbit), so the pattern
-  // fades to its mean (the tone; the paper between lines of a fixed HatchWidth) as its cells go
-  // from two pixels to one.
+  // Below two pixels a cell cannot be drawn without aliasing (its dot or line falls between
+  // pixels differently as the surface moves: moire on the still, flicker in an orbit), so the
+  // pattern fades to its mean (the tone; the paper between lines of a fixed HatchWidth) as its
+  // cells go from three pixels to two: anchored to the surface, where it turns away from the view;
+  // on the screen, in a window much smaller than ReferenceHeight.
 #if defined(COMIC_DOTS)
-  dots = mix(dots, tone, smoothstep(0.25, 0.5, dotAA));
+  dots = mix(dots, tone, dotFade);
 #endif
 #if defined(COMIC_HATCH)
   float hatchMean = 1.0 - clamp(width, 0.0, 1.0);
 #ifdef COMIC_CROSS
   hatchMean *= crossed ? hatchMean : 1.0;
 #endif
-  hatch = mix(hatch, comicHatchWidth > 0.0 ? hatchMean : tone, smoothstep(0.25, 0.5, hatchAA));
-#endif
+  hatch = mix(hatch, comicHatchWidth > 0.0 ? hatchMean : tone, hatchFade);
 #endif
   pattern = mix(hatch, dots, t);
 #endif

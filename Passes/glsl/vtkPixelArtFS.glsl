@@ -343,8 +343,11 @@ void pixelMain()
   vec3 result = edge ? vec3(0.0) : vec3(1.0);
 #else
 #ifdef PIXEL_SURFACE_ANCHOR
-  vec2 plane = stylizeTriplanar(stylizePositionTexture, p, pixelArtSize, vec2(p + pixelDitherOrigin));
-  ivec2 cell = surface ? ivec2(floor(plane / pixelAnchorUnit)) :
+  // (a dither cell never smaller than an art pixel: stylizeGridLevelScale)
+  StylizeTriplanar anchor =
+    stylizeTriplanarFrame(stylizePositionTexture, p, pixelArtSize, vec2(p + pixelDitherOrigin));
+  vec2 anchorUnit = pixelAnchorUnit * stylizeGridLevelScale(anchor.J / pixelAnchorUnit);
+  ivec2 cell = surface ? ivec2(floor(anchor.plane / anchorUnit)) :
                          (p + pixelDitherOrigin) / pixelDitherSize;
 #else
   ivec2 q = p + pixelDitherOrigin;
@@ -420,7 +423,9 @@ struct PixelTexel
   vec2 at;        // its centre, continuous (viewport pixels, pixel v's centre at v)
   int axis;       // the coordinate plane it lies on
   mat2 toScreen;  // screen pixels per texel step (the inverse of d(texel) / d(screen))
+  vec2 unit;      // its world size along the plane's two axes: pixelTexelUnit at its levels
 };
+
 
 // The texel at viewport pixel v. Not found where the surface grazes the view or where the
 // texel's centre is not on the same texel (a texel cut by a silhouette).
@@ -433,6 +438,7 @@ PixelTexel pixelTexelAt(ivec2 v)
   t.at = vec2(v);
   t.axis = 2;
   t.toScreen = mat2(0.0);
+  t.unit = vec2(pixelTexelUnit);
   vec4 pos = pixelScenePosition(v);
   vec3 dx = pixelPositionStep(pos, v, ivec2(1, 0));
   vec3 dy = pixelPositionStep(pos, v, ivec2(0, 1));
@@ -443,7 +449,10 @@ PixelTexel pixelTexelAt(ivec2 v)
   }
   int axis = stylizeTriplanarAxis(gn);
   t.axis = axis;
-  float unit = pixelTexelUnit;
+  mat2 J0 = mat2(stylizePlaneCoordinates(dx, axis), stylizePlaneCoordinates(dy, axis)) /
+    pixelTexelUnit;
+  vec2 unit = pixelTexelUnit * stylizeGridLevelScale(J0);
+  t.unit = unit;
   vec2 uv = stylizePlaneCoordinates(pos.xyz, axis) / unit;
   vec2 cell = floor(uv);
   if (!stylizeIsFinite(cell.x) || !stylizeIsFinite(cell.y) || abs(cell.x) > 1.0e9 ||
@@ -453,7 +462,7 @@ PixelTexel pixelTexelAt(ivec2 v)
   }
   t.cell = ivec2(cell);
   // J = d(uv) / d(screen); the centre is J^-1 (cell + 1/2 - uv) away.
-  mat2 J = mat2(stylizePlaneCoordinates(dx, axis), stylizePlaneCoordinates(dy, axis)) / unit;
+  mat2 J = mat2(stylizePlaneCoordinates(dx, axis) / unit, stylizePlaneCoordinates(dy, axis) / unit);
   float det = determinant(J);
   float scale = dot(J[0], J[0]) + dot(J[1], J[1]);
   if (!(abs(det) > 1.0e-3 * scale) || !stylizeIsFinite(det))
@@ -493,7 +502,7 @@ vec4 pixelTexelColour(PixelTexel t)
       ivec2 q = ivec2(round(t.at + t.toScreen * s));
       vec4 pos = pixelScenePosition(q);
       if (pos.a > 0.5 &&
-        all(equal(floor(stylizePlaneCoordinates(pos.xyz, t.axis) / pixelTexelUnit), vec2(t.cell))))
+        all(equal(floor(stylizePlaneCoordinates(pos.xyz, t.axis) / t.unit), vec2(t.cell))))
       {
         sum += pixelSceneFetch(stylizeColorTexture, q);
         n += 1.0;

@@ -2,12 +2,16 @@
 #ifndef VTK_STYLIZE_SCREEN
 #define VTK_STYLIZE_SCREEN
 
-// The coordinate plane facing normal n (0: yz, 1: zx, 2: xy; ties go to the earlier), and a
-// point's coordinates on it: the two halves of a triplanar projection.
+// The coordinate plane facing normal n (0: yz, 1: zx, 2: xy), and a point's coordinates on it:
+// the two halves of a triplanar projection. Near-ties (within STYLIZE_TRIPLANAR_TIE of each
+// other) go to the earlier plane: a facet at 45 degrees, common in meshes symmetric about a
+// plane, would otherwise pick its plane pixel by pixel from the rounding of its normal.
+#define STYLIZE_TRIPLANAR_TIE 1.0e-3
 int stylizeTriplanarAxis(vec3 n)
 {
   vec3 a = abs(n);
-  return a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+  float keep = 1.0 - STYLIZE_TRIPLANAR_TIE;
+  return a.x >= keep * max(a.y, a.z) ? 0 : (a.y >= keep * a.z ? 1 : 2);
 }
 
 vec2 stylizePlaneCoordinates(vec3 p, int axis)
@@ -15,19 +19,94 @@ vec2 stylizePlaneCoordinates(vec3 p, int axis)
   return axis == 0 ? p.yz : (axis == 1 ? p.zx : p.xy);
 }
 
+// The step in object-space position from pixel p to its neighbour along d, on the same surface:
+// of the forward and the backward difference, the shorter whose pixel is on a surface (a
+// neighbour across a silhouette or a crease does not count). w = 0 where neither is.
+vec4 stylizePositionStep(sampler2D positions, vec4 pos, ivec2 p, ivec2 size, ivec2 d)
+{
+  ivec2 a = p + d;
+  ivec2 b = p - d;
+  bool inA = all(greaterThanEqual(a, ivec2(0))) && all(lessThan(a, size));
+  bool inB = all(greaterThanEqual(b, ivec2(0))) && all(lessThan(b, size));
+  vec4 pa = inA ? texelFetch(positions, a, 0) : vec4(0.0);
+  vec4 pb = inB ? texelFetch(positions, b, 0) : vec4(0.0);
+  vec3 fa = pa.xyz - pos.xyz;
+  vec3 fb = pos.xyz - pb.xyz;
+  bool onA = inA && pa.a > 0.5;
+  bool onB = inB && pb.a > 0.5;
+  if (onA && onB)
+  {
+    return vec4(dot(fa, fa) <= dot(fb, fb) ? fa : fb, 1.0);
+  }
+  return onA ? vec4(fa, 1.0) : (onB ? vec4(fb, 1.0) : vec4(0.0));
+}
+
 // Triplanar projection of the object-space position stored at pixel p (a = 1 on surfaces) on
-// the coordinate plane facing its geometric normal, found from the neighbouring positions.
-// Returns `fallback` where there is no surface.
+// the coordinate plane facing its geometric normal, found from the neighbouring positions, with
+// its derivatives: J = (d plane / dx, d plane / dy), world units per pixel. The derivatives are
+// this pixel's own, its neighbours' positions projected on its plane, so they do not jump where
+// a neighbour projects on another plane as fwidth() over a 2 x 2 quad does; a pixel with no
+// neighbour on its surface along x or y (a sliver) gets an unbounded one (STYLIZE_NO_STEP).
+// Where there is no surface: plane = fallback, J = identity (the screen).
+#define STYLIZE_NO_STEP 1.0e6
+struct StylizeTriplanar
+{
+  vec2 plane;
+  mat2 J;
+};
+
+StylizeTriplanar stylizeTriplanarFrame(sampler2D positions, ivec2 p, ivec2 size, vec2 fallback)
+{
+  StylizeTriplanar t;
+  t.plane = fallback;
+  t.J = mat2(1.0);
+  vec4 pos = texelFetch(positions, p, 0);
+  if (!(pos.a > 0.5))
+  {
+    return t;
+  }
+  vec4 dx = stylizePositionStep(positions, pos, p, size, ivec2(1, 0));
+  vec4 dy = stylizePositionStep(positions, pos, p, size, ivec2(0, 1));
+  vec3 gn = (dx.w > 0.5 && dy.w > 0.5) ? cross(dx.xyz, dy.xyz) : vec3(0.0, 0.0, 1.0);
+  int axis = stylizeTriplanarAxis(gn);
+  t.plane = stylizePlaneCoordinates(pos.xyz, axis);
+  t.J = mat2(dx.w > 0.5 ? stylizePlaneCoordinates(dx.xyz, axis) : vec2(STYLIZE_NO_STEP),
+    dy.w > 0.5 ? stylizePlaneCoordinates(dy.xyz, axis) : vec2(STYLIZE_NO_STEP));
+  return t;
+}
+
+// The plane coordinates alone (stylizeTriplanarFrame).
 vec2 stylizeTriplanar(sampler2D positions, ivec2 p, ivec2 size, vec2 fallback)
 {
-  vec4 pos = texelFetch(positions, p, 0);
-  ivec2 sx = p.x + 1 < size.x ? ivec2(1, 0) : ivec2(-1, 0);
-  ivec2 sy = p.y + 1 < size.y ? ivec2(0, 1) : ivec2(0, -1);
-  vec4 px = texelFetch(positions, p + sx, 0);
-  vec4 py = texelFetch(positions, p + sy, 0);
-  vec3 gn = cross((px.xyz - pos.xyz) * float(sx.x), (py.xyz - pos.xyz) * float(sy.y));
-  gn = (px.a > 0.5 && py.a > 0.5) ? gn : vec3(0.0, 0.0, 1.0);
-  return pos.a > 0.5 ? stylizePlaneCoordinates(pos.xyz, stylizeTriplanarAxis(gn)) : fallback;
+  return stylizeTriplanarFrame(positions, p, size, fallback).plane;
+}
+
+// How much of a periodic pattern to fade to its mean at `frequency`, its highest fundamental
+// frequency on the screen (cycles per pixel): none up to a third (a period of three pixels),
+// all at the Nyquist frequency (a half: two pixels), so that no pattern is drawn finer than the
+// pixels can show (aliased into moire where a surface anchored pattern turns away from the view).
+float stylizePatternFade(float frequency)
+{
+  return stylizeIsFinite(frequency) ? smoothstep(1.0 / 3.0, 0.5, frequency) : 1.0;
+}
+
+// Levels of detail of a grid fixed to the surface whose cell coordinates change by
+// J = (d cell / dx, d cell / dy) per screen pixel: the factors 2^level (x: the cells' first
+// axis, y: their second) that make a cell at least a pixel long on the screen along each axis
+// where the surface turns away from the view (finer cells would alias: their colours and
+// dither entries fall between the pixels differently as the surface moves). Each axis has its
+// own level (a receding floor keeps its cells' width while their depth grows), in whole levels:
+// a coarse cell is the union of fine ones.
+vec2 stylizeGridLevelScale(mat2 J)
+{
+  vec2 frequency = vec2(length(vec2(J[0].x, J[1].x)), length(vec2(J[0].y, J[1].y)));
+  vec2 level = vec2(0.0);
+  for (int a = 0; a < 2; ++a)
+  {
+    float f = frequency[a];
+    level[a] = stylizeIsFinite(f) && f > 1.0 ? min(ceil(log2(f)), 30.0) : 0.0;
+  }
+  return exp2(level);
 }
 
 // Sobel responses (gx, gy) of a 3x3 neighbourhood, divided by 8: the mean central difference

@@ -38,7 +38,9 @@ renderer.AddActor(actor)
 renderer.SetBackground(1, 1, 1)
 window.AddRenderer(renderer)
 renderer.ResetCamera()
-renderer.SetPass(vtkstylize.create_pass("comic"))
+# 1 point = 1 pixel: dots of 8 pixels, which the raster draws as the figure does (a window
+# a quarter of ReferenceHeight tall fades them to the tone, the figure keeps them)
+renderer.SetPass(vtkstylize.create_pass("comic", ReferenceHeight=300))
 
 title = vtk.vtkTextActor()
 title.SetInput("Torus")

@@ -4,7 +4,9 @@
 #define ComicTestHelpers_h
 
 #include "vtkComicPass.h"
+#include "vtkFloatArray.h"
 #include "vtkLight.h"
+#include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeTestUtilities.h"
 
 namespace stylizetest
@@ -19,6 +21,23 @@ inline vtkSmartPointer<vtkImageData> RenderComic(const Configure& configure, int
 {
   return RenderThroughPass<vtkComicPass>(configure, w, h, parallel, magnify, scale,
     [h](vtkComicPass* comic) { comic->SetReferenceHeight(h); });
+}
+
+/**
+ * The object-space (= world: the test actors are untransformed) positions of a frame from the
+ * G-buffer (4 components, w = 1 on surfaces), the renderer's pass restored after.
+ */
+inline void RenderPositions(vtkRenderer* ren, vtkRenderWindow* win, vtkFloatArray* out)
+{
+  vtkNew<vtkStylizeGBufferPass> g;
+  g->SetChannels(vtkStylizeGBufferPass::POSITION);
+  g->SetPositionSpace(vtkStylizeGBufferPass::OBJECT);
+  vtkSmartPointer<vtkRenderPass> previous = ren->GetPass();
+  ren->SetPass(g);
+  win->Render();
+  g->DownloadChannel(vtkStylizeGBufferPass::POSITION_BUFFER, out);
+  g->ReleaseGraphicsResources(win);
+  ren->SetPass(previous);
 }
 
 /** Gray value (0..255) of pixel i of an RGB image. */

@@ -1,30 +1,10 @@
 #include "ComicTestHelpers.h"
 #include "vtkComicPass.h"
 #include "vtkMatrix4x4.h"
-#include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
 #include <algorithm>
 
 using namespace stylizetest;
-
-namespace
-{
-/** Object-space (= world, the test actors are untransformed) positions of a frame. */
-void RenderPositions(vtkRenderer* ren, vtkRenderWindow* win, vtkFloatArray* out)
-{
-  vtkNew<vtkStylizeGBufferPass> g;
-  g->SetChannels(vtkStylizeGBufferPass::POSITION);
-  g->SetPositionSpace(vtkStylizeGBufferPass::OBJECT);
-  vtkRenderPass* previous = ren->GetPass();
-  previous->Register(nullptr);
-  ren->SetPass(g);
-  win->Render();
-  g->DownloadChannel(vtkStylizeGBufferPass::POSITION_BUFFER, out);
-  g->ReleaseGraphicsResources(win);
-  ren->SetPass(previous);
-  previous->UnRegister(nullptr);
-}
-}
 
 // Stability under motion: a 1 degree per frame orbit, screen- and object-anchored patterns.
 // "flip" = pixels whose ink/paper value changes at the same image position; "swim" = surface

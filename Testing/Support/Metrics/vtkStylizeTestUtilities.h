@@ -486,8 +486,14 @@ inline int RegressionVerdict(vtkRenderWindow* win, int argc, char* argv[], const
   if (baseline)
   {
     auto img = Capture(win);
-    StrictCompare(
-      img, baseline, tol, maxFraction, maxDiff, "strict comparison with " + args.Baseline);
+    if (!StrictCompare(
+          img, baseline, tol, maxFraction, maxDiff, "strict comparison with " + args.Baseline))
+    {
+      // the image that failed, beside VTK's harness's output, to look at or to become the baseline
+      const std::string name = args.Baseline.substr(args.Baseline.find_last_of('/') + 1);
+      WritePNG(img, args.TempDir + "/" + name);
+      std::printf("wrote %s/%s\n", args.TempDir.c_str(), name.c_str());
+    }
   }
   return (ret == vtkTesting::PASSED && Failures == 0) ? 0 : 1;
 }
