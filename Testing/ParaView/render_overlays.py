@@ -20,6 +20,10 @@ prefix = sys.argv[1]
 size = [400, 300]
 view = CreateView("StylizeView")
 make_view(view, size)
+# 1 point = 1 pixel: the comic's 8-point cells are 8 pixels, which the screenshot draws as the
+# figure does (at the default 1080-line reference they are 2.2 pixels of this view: the
+# screenshot fades them to the tone, the vector figure keeps them)
+view.ComicReferenceHeight = size[1]
 contour = make_contour()
 show_framed(contour, view)
 display = GetDisplayProperties(contour, view)

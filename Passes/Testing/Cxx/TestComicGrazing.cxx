@@ -1,8 +1,8 @@
 #include "ComicTestHelpers.h"
 #include "vtkCamera.h"
 #include "vtkComicPass.h"
-#include "vtkPlaneSource.h"
 #include "vtkMath.h"
+#include "vtkPlaneSource.h"
 #include <algorithm>
 #include <cmath>
 
@@ -221,17 +221,17 @@ int TestComicGrazing(int argc, char* argv[])
     }
     const double share = total > 0 ? above / total : 0.0;
     const double resolved = resolvedExpected > 0 ? resolvedAmplitude / resolvedExpected : 0.0;
-    std::printf("%-12s %10ld %10ld %12.2e %10.0f %10.3f %10ld\n", c.Name, resolvedCount,
-      aboveCount, share, aboveMax, resolved, betweenCount);
-    STYLIZE_CHECK(resolvedCount > 20000, "%s: only %ld pixels with a resolved pattern", c.Name,
-      resolvedCount);
-    STYLIZE_CHECK(aboveCount >= c.MinAbove, "%s: only %ld pixels above Nyquist", c.Name,
-      aboveCount);
+    std::printf("%-12s %10ld %10ld %12.2e %10.0f %10.3f %10ld\n", c.Name, resolvedCount, aboveCount,
+      share, aboveMax, resolved, betweenCount);
+    STYLIZE_CHECK(
+      resolvedCount > 20000, "%s: only %ld pixels with a resolved pattern", c.Name, resolvedCount);
+    STYLIZE_CHECK(
+      aboveCount >= c.MinAbove, "%s: only %ld pixels above Nyquist", c.Name, aboveCount);
     STYLIZE_CHECK(share <= 1.0e-4 && aboveMax <= 3.0,
       "%s: pattern above the Nyquist frequency: %.2e of the squared amplitude, up to %.0f levels",
       c.Name, share, aboveMax);
-    STYLIZE_CHECK(resolved >= 0.7, "%s: the resolved pattern has %.3f of its amplitude", c.Name,
-      resolved);
+    STYLIZE_CHECK(
+      resolved >= 0.7, "%s: the resolved pattern has %.3f of its amplitude", c.Name, resolved);
     scene.Window->Finalize();
   }
   return Failures == 0 ? 0 : 1;
