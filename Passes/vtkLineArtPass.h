@@ -47,7 +47,8 @@ public:
   ///@{
   /**
    * Width of occluding contours and boundaries (the outline and the object's own edges), in
-   * points. Range [0, 20], default 2.5.
+   * points. A rendered stroke (of every kind) is at least a pixel wide; a vector figure keeps
+   * the exact widths. Range [0, 20], default 2.5.
    */
   vtkSetClampMacro(ContourWidth, double, 0.0, 20.0);
   vtkGetMacro(ContourWidth, double);

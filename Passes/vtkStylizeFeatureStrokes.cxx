@@ -609,7 +609,11 @@ vtkTextureObject* vtkStylizeFeatureStrokes::RenderFrame(
   }
   view.PointSize = style->PointSize(frame);
   view.Interactive = frame.Interactive;
-  view.MinimumWidth = frame.Reduction > 1.0 ? 1.0 : 0.0;
+  // A stroke is never thinner than a pixel of the picture (the hairline rule of PostScript and
+  // PDF renderers): thinner, its anti-aliased ink breaks into faint dashes as it crosses the
+  // pixel rows, and a small view's far outline (points of a 1080-line picture, tapered with
+  // depth) vanishes.
+  view.MinimumWidth = 1.0;
   Internals& in = *this->Internal;
   vtkFloatArray* depth = in.LinearDepth;
   bool haveDepth =

@@ -97,8 +97,8 @@ public:
     double PointSize = 1.0;
     /** The cheap variant: contours, boundaries and creases only (no curvature). */
     bool Interactive = false;
-    /** The narrowest stroke, pixels: 1 in a reduced interactive frame (InteractiveImageReduction)
-     * so that thin strokes stay visible when scaled up; 0 otherwise. */
+    /** The narrowest stroke, pixels: 1 in a rendered frame (reduced or not), so that thin
+     * strokes stay whole lines; 0 (the default) for a vector figure, which has no pixels. */
     double MinimumWidth = 0.0;
     /** The scene's bounds for the depth taper; invalid (the default): the renderer's props'. */
     double SceneBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
