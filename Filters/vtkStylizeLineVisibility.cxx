@@ -157,7 +157,8 @@ public:
       image->GetDimensions(dims);
     }
     if (!scalars || scalars->GetDataType() != VTK_FLOAT || dims[0] != this->View.Width ||
-      dims[1] != this->View.Height || scalars->GetNumberOfComponents() != 1)
+      dims[1] != this->View.Height || scalars->GetNumberOfComponents() != 1 ||
+      scalars->GetNumberOfTuples() < static_cast<vtkIdType>(dims[0]) * dims[1])
     {
       return false;
     }
@@ -621,8 +622,23 @@ int vtkStylizeLineVisibility::RequestData(
       rays.AddOccluder(o.Surface, o.Matrix);
     }
   }
-  // Lines without a FeatureKind count as contours (the WorldTolerance applies to them).
-  vtkDataArray* kinds = input->GetCellData()->GetArray("FeatureKind");
+  // Lines without a FeatureKind count as contours (the WorldTolerance applies to them). Read
+  // here, once: GetTuple1 writes the array's shared tuple buffer, so the threads below must not
+  // call it; cells past a short array count as contours too.
+  vtkDataArray* kindArray = input->GetCellData()->GetArray("FeatureKind");
+  const bool kinds = kindArray != nullptr;
+  std::vector<double> kindOf(static_cast<size_t>(input->GetNumberOfLines()), 0.0);
+  if (kindArray && kindArray->GetNumberOfComponents() > 0)
+  {
+    // (lines are the output's cells: a polydata's lines come after its vertices)
+    const vtkIdType first = input->GetNumberOfVerts();
+    const vtkIdType n = std::min(static_cast<vtkIdType>(kindOf.size()),
+      std::max<vtkIdType>(0, kindArray->GetNumberOfTuples() - first));
+    for (vtkIdType c = 0; c < n; ++c)
+    {
+      kindOf[c] = kindArray->GetComponent(first + c, 0);
+    }
+  }
   auto visible = [&](const double p[3], const double a[3], const double b[3], bool contour,
                    bool boundary) -> bool
   {
@@ -663,7 +679,7 @@ int vtkStylizeLineVisibility::RequestData(
   {
     for (vtkIdType c = begin; c < end; ++c)
     {
-      const double kind = kinds ? kinds->GetTuple1(c) : 0.0;
+      const double kind = c < static_cast<vtkIdType>(kindOf.size()) ? kindOf[c] : 0.0;
       const bool contour = kind == 0.0, boundary = kinds && kind == 1.0;
       changes[c] = splitter.Trace(offsets[c + 1] - offsets[c], ids.data() + offsets[c], view,
         this->SampleSpacing,

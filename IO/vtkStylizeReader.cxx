@@ -125,6 +125,7 @@ public:
       this->Window->SetEchoDescriptor(outer->GetEchoDescriptor());
     }
     vtkOutputWindow::SetInstance(this->Window);
+    this->OuterCapture = Capture;
     Capture = this->Window;
     this->LoggerLevel = vtkLogger::GetCurrentVerbosityCutoff();
     this->LoggerChanged = this->LoggerLevel >= vtkLogger::VERBOSITY_ERROR;
@@ -139,7 +140,7 @@ public:
     {
       vtkLogger::SetStderrVerbosity(this->LoggerLevel);
     }
-    Capture = nullptr;
+    Capture = this->OuterCapture; // (an enclosing scope's window captures again)
     vtkOutputWindow::SetInstance(this->Previous);
   }
   CaptureScope(const CaptureScope&) = delete;
@@ -147,6 +148,7 @@ public:
 
 private:
   vtkSmartPointer<vtkOutputWindow> Previous;
+  vtkStylizeOutputWindow* OuterCapture = nullptr;
   vtkNew<vtkStylizeOutputWindow> Window;
   vtkLogger::Verbosity LoggerLevel = vtkLogger::VERBOSITY_OFF;
   bool LoggerChanged = false;

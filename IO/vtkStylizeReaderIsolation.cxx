@@ -322,10 +322,15 @@ void SendTree(int socket, vtkDataObject* object, const std::string& name)
   }
   // (a sanitizer's report of a fault in VTK's reader would be the caller's stderr otherwise)
   vtkStylizeOutputWindow::ReportSanitizersTo(STDERR_FILENO);
-  for (int sig : { SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGINT, SIGTERM, SIGPIPE })
+  // The default actions, unblocked: a host that ignores or blocks a signal passes that on through
+  // fork(), and an ignored or blocked SIGXCPU turns the time limit into the hard limit's SIGKILL.
+  for (int sig : { SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGINT, SIGTERM, SIGPIPE, SIGXCPU })
   {
     std::signal(sig, SIG_DFL);
   }
+  sigset_t unblocked;
+  sigemptyset(&unblocked);
+  ::sigprocmask(SIG_SETMASK, &unblocked, nullptr);
   rlimit none{ 0, 0 };
   ::setrlimit(RLIMIT_CORE, &none);
   const rlim_t seconds = static_cast<rlim_t>(std::ceil(limits.Seconds));
@@ -452,6 +457,20 @@ void Split(const std::string& text, std::string& head, std::string& rest)
  */
 vtkSmartPointer<vtkDataObject> ReadMemoryFile(int fd, const std::string& type, bool legacy)
 {
+  // (closed also when something throws: the memory file holds the whole dataset)
+  struct Closer
+  {
+    int Descriptor;
+    void Close()
+    {
+      if (this->Descriptor >= 0)
+      {
+        ::close(this->Descriptor);
+        this->Descriptor = -1;
+      }
+    }
+    ~Closer() { this->Close(); }
+  } closer{ fd };
   vtkSmartPointer<vtkAlgorithm> reader;
   const std::string file = "/proc/self/fd/" + std::to_string(fd);
   if (legacy)
@@ -475,7 +494,7 @@ vtkSmartPointer<vtkDataObject> ReadMemoryFile(int fd, const std::string& type, b
   }
   ClearVTKErrors();
   reader->Update();
-  ::close(fd);
+  closer.Close();
   CheckVTKErrors("the data read cannot be handed over");
   // The XML format keeps the class, or its superclass (vtkStructuredPoints is written as image
   // data): the data is given the class it was read as.

@@ -9,6 +9,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
+#include "vtkCleanPolyData.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -538,17 +539,52 @@ vtkSmartPointer<vtkDataSet> WithoutNonFinitePoints(vtkDataSet* ds, const std::st
   {
     Fail(what + ": every cell uses a point whose coordinates are not finite (NaN or infinity)");
   }
-  vtkNew<vtkExtractCells> extract;
-  extract->SetInputData(ds);
-  extract->SetCellList(keep);
-  extract->Update();
+  vtkSmartPointer<vtkDataSet> kept;
+  if (auto* pd = vtkPolyData::SafeDownCast(ds))
+  {
+    // A polydata stays one (vtkExtractCells makes an unstructured grid): its other cells
+    // deleted, then the points no cell uses (the non-finite ones among them) dropped.
+    vtkNew<vtkPolyData> copy;
+    copy->DeepCopy(pd);
+    copy->BuildCells();
+    vtkIdType next = 0;
+    for (vtkIdType c = 0; c < cells; ++c)
+    {
+      if (next < keep->GetNumberOfIds() && keep->GetId(next) == c)
+      {
+        ++next;
+      }
+      else
+      {
+        copy->DeleteCell(c);
+      }
+    }
+    copy->RemoveDeletedCells();
+    vtkNew<vtkCleanPolyData> clean;
+    clean->SetInputData(copy);
+    clean->PointMergingOff();
+    clean->ConvertLinesToPointsOff();
+    clean->ConvertPolysToLinesOff();
+    clean->ConvertStripsToPolysOff();
+    clean->SetOutputPointsPrecision(vtkAlgorithm::DEFAULT_PRECISION);
+    clean->Update();
+    kept = clean->GetOutput();
+  }
+  else
+  {
+    vtkNew<vtkExtractCells> extract;
+    extract->SetInputData(ds);
+    extract->SetCellList(keep);
+    extract->Update();
+    kept = extract->GetOutput();
+  }
   const vtkIdType dropped = cells - keep->GetNumberOfIds();
   Warn(what + ": " + std::to_string(static_cast<long long>(badPoints)) + " of " +
     std::to_string(static_cast<long long>(n)) + " points " + (badPoints == 1 ? "has" : "have") +
     " coordinates that are not finite (NaN or infinity): " + (badPoints == 1 ? "it" : "they") +
     " and the " + std::to_string(static_cast<long long>(dropped)) + " cell" +
     (dropped == 1 ? "" : "s") + " that use " + (badPoints == 1 ? "it" : "them") + " are left out");
-  return extract->GetOutput();
+  return kept;
 }
 
 //------------------------------------------------------------------------------

@@ -7,10 +7,12 @@
   attributes, image extents, polyhedra, warnings, for every format of the CLI tests' data.
 - A file that crashes VTK's reader (HOSTILE_DIR) is one error line naming the crash, and the
   caller goes on.
+- A polydata with a point at NaN stays a polydata without it.
 - The limits: an input that needs more memory than MemoryLimit, and one that takes more
   processor time than TimeLimit, are one error line each, in bounded time.
 """
 import os
+import signal
 import sys
 import time
 
@@ -110,6 +112,15 @@ for entry in sorted(os.listdir(data)):
 print(f"{compared} files read alike in process and isolated")
 check(compared >= 40, f"only {compared} files compared")
 
+# A polydata with a point at NaN stays a polydata, without the point and its cells (issue 53: it
+# came out as an unstructured grid).
+for isolated in (False, True):
+    output, error, _ = read(os.path.join(data, "nonfinite.vtp"), isolated)
+    got = (output.GetClassName(), output.GetNumberOfPoints(), output.GetNumberOfCells())
+    print("nonfinite.vtp%s:" % (" (isolated)" if isolated else ""), *got)
+    check(not error and got == ("vtkPolyData", 161, 304),
+          f"nonfinite.vtp{' (isolated)' if isolated else ''}: {got}, {error!r}")
+
 # 2. A file that crashes VTK's Exodus reader: one line, and the caller goes on.
 _, error, _ = read(os.path.join(hostile, "exodus_reader_crash.ex2"), True)
 print("crash:", error)
@@ -134,6 +145,24 @@ elapsed = time.monotonic() - start
 print("time:", error, f"({elapsed:.1f} s)")
 check("more than 1 s of processor time" in error, f"the time limit is not the error: {error!r}")
 check(elapsed < 20, f"the time limit took {elapsed:.1f} s")
+
+# A host that ignores or blocks SIGXCPU (the signal of the processor time limit) passes that on
+# to the child it forks: the limit must still hold (issue 53: the read went on to the hard limit).
+for how in ("ignored", "blocked"):
+    if how == "ignored":
+        previous = signal.signal(signal.SIGXCPU, signal.SIG_IGN)
+    else:
+        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGXCPU})
+    try:
+        _, error, _ = read(slow, True, TimeLimit=1)
+    finally:
+        if how == "ignored":
+            signal.signal(signal.SIGXCPU, previous)
+        else:
+            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGXCPU})
+    print(f"time, SIGXCPU {how} by the host:", error)
+    check("more than 1 s of processor time" in error,
+          f"SIGXCPU {how}: the time limit is not the error: {error!r}")
 os.remove(slow)
 
 if failures:

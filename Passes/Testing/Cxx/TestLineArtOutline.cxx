@@ -50,8 +50,7 @@ int TestLineArtOutline(int, char*[])
     auto background = [&](int x, int y)
     {
       const vtkIdType i = at(x, y);
-      return s->GetComponent(i, 0) < 8 && s->GetComponent(i, 1) < 8 &&
-        s->GetComponent(i, 2) > 247;
+      return s->GetComponent(i, 0) < 8 && s->GetComponent(i, 1) < 8 && s->GetComponent(i, 2) > 247;
     };
     auto ink = [&](int x, int y)
     {
