@@ -114,6 +114,21 @@ bool vtkStylizeRankCompositor::Reduce(Part& own, const std::vector<int>& compone
     if (rank % (2 * step) == step)
     {
       const int to = rank - step;
+      // A part the receiver would refuse (outside the image, or with fewer values than its
+      // rectangle holds) is sent as an empty rectangle and no data: the receiver receives data
+      // only for a part it keeps, so data sent anyway would be read as the next frame's.
+      bool valid =
+        InsideImage(own.Rect, w, h) && own.Depth.size() >= static_cast<size_t>(own.Area());
+      for (size_t c = 0; c < channels && valid; ++c)
+      {
+        valid = c < own.Channels.size() &&
+          own.Channels[c].size() >= static_cast<size_t>(components[c] * own.Area());
+      }
+      if (!valid)
+      {
+        vtkErrorMacro("Process " << rank << " has channels outside the image: not sent.");
+        std::fill(own.Rect, own.Rect + 4, 0);
+      }
       controller->Send(own.Rect, 4, to, ChannelTag);
       if (own.Area() > 0)
       {

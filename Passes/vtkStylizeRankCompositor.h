@@ -47,7 +47,9 @@ public:
   /**
    * Sends every process's part to process 0, which keeps the nearest by depth at every pixel of
    * a w x h image. Returns true on process 0 (`own` then holds the union of all parts), false on
-   * the others (`own` was sent). A part received outside the image is dropped with an error.
+   * the others (`own` was sent). Every process passes the same w x h. A part outside the
+   * image, or with fewer values than its rectangle holds, is not sent (an error on its process),
+   * so that the frames after it composite as if it had not been there.
    */
   bool Reduce(Part& own, const std::vector<int>& components, int w, int h);
 

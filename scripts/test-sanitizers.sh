@@ -37,7 +37,7 @@ supp="$STYLIZE_ROOT/Testing/Sanitizers"
 # deadlocks in LLVM's frame registration), so no suppression can cover them.
 # (allocator_may_return_null: an allocation too large fails as it does without the sanitizer,
 # which hostile headers rely on being refused)
-export ASAN_OPTIONS="detect_leaks=0:halt_on_error=1:detect_odr_violation=0:strict_init_order=1:allocator_may_return_null=1:${ASAN_OPTIONS:-}"
+export ASAN_OPTIONS="detect_leaks=0:halt_on_error=1:strict_init_order=1:allocator_may_return_null=1:${ASAN_OPTIONS:-}"
 export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0:${LSAN_OPTIONS:-}"
 export UBSAN_OPTIONS="suppressions=$supp/ubsan.supp:print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"
 cd "$STYLIZE_BUILD"
@@ -71,7 +71,7 @@ fuzz() {
     [ "$target" = Validate ] && seeds="$STYLIZE_ROOT/Testing/Fuzz/corpus-validate"
     rm -rf "$corpus" && mkdir -p "$corpus" && cp "$seeds"/* "$corpus/"
     # (the reader's child may use up to its own limits; -rss_limit_mb bounds the caller)
-    ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1:detect_odr_violation=0" \
+    ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1" \
       LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0" \
       "$fuzz_build/vtkStylizeFuzz$target" -max_total_time="$seconds" \
       -timeout=60 -rss_limit_mb=4096 -print_final_stats=1 \

@@ -9,8 +9,8 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkFloatArray.h"
 #include "vtkExecutive.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -96,8 +96,8 @@ int TestLineVisibility(int, char*[])
   errors = Run(ThreeLines(), DepthImage(10), n);
   std::printf("depth array of 10 values for %dx%d: %d errors, %lld lines\n", W, H, errors,
     static_cast<long long>(n));
-  STYLIZE_CHECK(errors > 0 && n == 0, "a depth array of 10 values for %dx%d pixels: %d errors",
-    W, H, errors);
+  STYLIZE_CHECK(
+    errors > 0 && n == 0, "a depth array of 10 values for %dx%d pixels: %d errors", W, H, errors);
 
   // a FeatureKind array of one value for three lines: the others are contours
   auto lines = ThreeLines();

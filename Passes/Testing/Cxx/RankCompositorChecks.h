@@ -142,6 +142,33 @@ inline int Run(vtkMultiProcessController* controller)
       static_cast<int>(depth.Depth.size()) == expected * expected,
     "BroadcastDepth's rectangle");
   check(size == 1 || At(depth, 3, 3).first == 0.25f, "BroadcastDepth's depth", 3, 3);
+  // A process whose part lies outside the image (issue 53): refused with an error, and the next
+  // frame composites as if it had not happened (the refused part's data was sent all the same,
+  // and process 0 took it for the next frame's).
+  for (int frame = 0; frame < 2; ++frame)
+  {
+    Part part = rank == 0       ? MakePart(0, 0, 4, 4, 1.0f, [](int, int) { return 0.5f; })
+      : rank == 1 && frame == 0 ? MakePart(6, 6, 4, 4, 9.0f, [](int, int) { return 0.125f; })
+      : rank == 1 ? MakePart(2, 2, 4, 4, 2.0f, [](int x, int) { return x < 4 ? 0.25f : 0.75f; })
+                  : Part();
+    part.Channels.resize(2);
+    compositor->Reduce(part, components, 8, 8);
+    if (rank == 0 && size > 1)
+    {
+      if (frame == 0)
+      {
+        check(part.Rect[2] == 4 && At(part, 3, 3) == std::make_pair(0.5f, 1.0f),
+          "a part outside the image is refused", 3, 3);
+      }
+      else
+      {
+        check(part.Rect[2] == 6 && At(part, 3, 3) == std::make_pair(0.25f, 2.0f) &&
+            At(part, 5, 5) == std::make_pair(0.75f, 2.0f),
+          "the frame after a refused part", 5, 5);
+      }
+    }
+  }
+
   Part outside;
   const int bad[4] = { 6, 6, 4, 4 };
   std::copy(bad, bad + 4, outside.Rect);
