@@ -591,12 +591,33 @@ vtkMTimeType vtkStylizeLineVisibility::GetMTime()
 int vtkStylizeLineVisibility::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* given = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
+  if (!given || !output)
   {
     return 0;
   }
+  // The lines without the point and cell arrays that hold fewer values than there are points or
+  // cells (read past their end when the runs' values are interpolated and copied), with a
+  // warning.
+  vtkNew<vtkPolyData> checked;
+  checked->ShallowCopy(given);
+  auto dropShort = [this](vtkDataSetAttributes* data, vtkIdType needed, const char* what)
+  {
+    for (int i = data->GetNumberOfArrays() - 1; i >= 0; --i)
+    {
+      vtkAbstractArray* array = data->GetAbstractArray(i);
+      if (array && array->GetNumberOfTuples() < needed)
+      {
+        vtkWarningMacro(<< what << " array '" << (array->GetName() ? array->GetName() : "")
+                        << "' has fewer values than the lines' " << what << "s: ignored.");
+        data->RemoveArray(i);
+      }
+    }
+  };
+  dropShort(checked->GetPointData(), given->GetNumberOfPoints(), "point");
+  dropShort(checked->GetCellData(), given->GetNumberOfCells(), "cell");
+  vtkPolyData* input = checked;
   if (!this->Camera)
   {
     vtkErrorMacro("a camera is required");
@@ -624,19 +645,18 @@ int vtkStylizeLineVisibility::RequestData(
   }
   // Lines without a FeatureKind count as contours (the WorldTolerance applies to them). Read
   // here, once: GetTuple1 writes the array's shared tuple buffer, so the threads below must not
-  // call it; cells past a short array count as contours too.
+  // call it. (Line c's values are cell c's, as the runs' copies below take them: the input is
+  // lines alone.)
   vtkDataArray* kindArray = input->GetCellData()->GetArray("FeatureKind");
   const bool kinds = kindArray != nullptr;
   std::vector<double> kindOf(static_cast<size_t>(input->GetNumberOfLines()), 0.0);
   if (kindArray && kindArray->GetNumberOfComponents() > 0)
   {
-    // (lines are the output's cells: a polydata's lines come after its vertices)
-    const vtkIdType first = input->GetNumberOfVerts();
-    const vtkIdType n = std::min(static_cast<vtkIdType>(kindOf.size()),
-      std::max<vtkIdType>(0, kindArray->GetNumberOfTuples() - first));
+    const vtkIdType n =
+      std::min(static_cast<vtkIdType>(kindOf.size()), kindArray->GetNumberOfTuples());
     for (vtkIdType c = 0; c < n; ++c)
     {
-      kindOf[c] = kindArray->GetComponent(first + c, 0);
+      kindOf[c] = kindArray->GetComponent(c, 0);
     }
   }
   auto visible = [&](const double p[3], const double a[3], const double b[3], bool contour,

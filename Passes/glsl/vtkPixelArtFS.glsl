@@ -426,7 +426,6 @@ struct PixelTexel
   vec2 unit;      // its world size along the plane's two axes: pixelTexelUnit at its levels
 };
 
-
 // The texel at viewport pixel v. Not found where the surface grazes the view or where the
 // texel's centre is not on the same texel (a texel cut by a silhouette).
 PixelTexel pixelTexelAt(ivec2 v)

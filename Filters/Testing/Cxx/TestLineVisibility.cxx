@@ -1,7 +1,8 @@
 // vtkStylizeLineVisibility against input that does not hold what it claims (issue 53): a depth
 // image whose array is shorter than its dimensions is refused with an error (it was read past
-// its end), and a FeatureKind array shorter than the lines gives the missing lines the default
-// kind (it was read past its end, from several threads, through the array's shared tuple buffer).
+// its end), and a FeatureKind array shorter than the lines is ignored with a warning, the lines
+// counting as contours (it was read past its end, from several threads, through the array's
+// shared tuple buffer, and again when each line's values were copied to its visible runs).
 #include "vtkStylizeLineVisibility.h"
 #include "vtkStylizeTestChecks.h"
 
@@ -99,7 +100,7 @@ int TestLineVisibility(int, char*[])
   STYLIZE_CHECK(
     errors > 0 && n == 0, "a depth array of 10 values for %dx%d pixels: %d errors", W, H, errors);
 
-  // a FeatureKind array of one value for three lines: the others are contours
+  // a FeatureKind array of one value for three lines: ignored, every line a contour
   auto lines = ThreeLines();
   vtkNew<vtkUnsignedCharArray> kinds;
   kinds->SetName("FeatureKind");
