@@ -15,6 +15,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkStylizeFeatureLines.h"
 #include "vtkStylizeTestChecks.h"
@@ -301,49 +302,63 @@ void SuggestiveContours()
     "suggestive contours differ with scale: %d, %d, %d", counts[0], counts[1], counts[2]);
 }
 
+/** A torus of u x v quads, without scalars. */
+vtkSmartPointer<vtkParametricFunctionSource> Torus(int u, int v)
+{
+  vtkNew<vtkParametricTorus> torus;
+  auto source = vtkSmartPointer<vtkParametricFunctionSource>::New();
+  source->SetParametricFunction(torus);
+  source->SetUResolution(u);
+  source->SetVResolution(v);
+  source->SetScalarModeToNone();
+  return source;
+}
+
+/** Feature lines of `source` seen by `camera`, ridges and suggestive contours at threshold 1. */
+vtkSmartPointer<vtkStylizeFeatureLines> LinesOf(vtkAlgorithm* source, vtkCamera* camera)
+{
+  auto lines = vtkSmartPointer<vtkStylizeFeatureLines>::New();
+  lines->SetInputConnection(source->GetOutputPort());
+  lines->SetCamera(camera);
+  lines->SetRidgeThreshold(1.0);
+  lines->SetSuggestiveThreshold(1.0);
+  return lines;
+}
+
+/** `kept`'s lines (updated) against a new filter's with the same input, camera and settings. */
+void SameAsNew(
+  vtkStylizeFeatureLines* kept, vtkAlgorithm* source, vtkCamera* camera, const char* what)
+{
+  vtkSmartPointer<vtkStylizeFeatureLines> fresh = LinesOf(source, camera);
+  fresh->SetCreaseAngle(kept->GetCreaseAngle());
+  fresh->SetKindMask(kept->GetKindMask());
+  fresh->Update();
+  kept->Update();
+  const Lines a = Measure(kept->GetOutput()), b = Measure(fresh->GetOutput());
+  for (int k = 0; k < Kind::NUMBER_OF_KINDS; ++k)
+  {
+    STYLIZE_CHECK(a.Count[k] == b.Count[k] && a.Length[k] == b.Length[k],
+      "%s: %s lines differ from a new filter's (%d of length %.17g, %d of length %.17g)", what,
+      vtkStylizeFeatureLines::GetKindName(k), a.Count[k], a.Length[k], b.Count[k], b.Length[k]);
+  }
+}
+
 /** A filter run again with a new camera, or a changed input, gives what a new filter gives: the
  * kept view-independent part follows the input and its settings. */
 void Reuse()
 {
-  vtkNew<vtkParametricTorus> torus;
-  vtkNew<vtkParametricFunctionSource> source;
-  source->SetParametricFunction(torus);
-  source->SetUResolution(80);
-  source->SetVResolution(40);
-  source->SetScalarModeToNone();
+  vtkSmartPointer<vtkParametricFunctionSource> source = Torus(80, 40);
   vtkNew<vtkCamera> camera;
   camera->SetPosition(0.0, -6.0, 2.0);
-  vtkNew<vtkStylizeFeatureLines> kept;
-  kept->SetInputConnection(source->GetOutputPort());
-  kept->SetCamera(camera);
-  kept->SetRidgeThreshold(1.0);
-  kept->SetSuggestiveThreshold(1.0);
+  vtkSmartPointer<vtkStylizeFeatureLines> kept = LinesOf(source, camera);
   kept->Update();
-  auto same = [&](const char* what)
-  {
-    vtkNew<vtkStylizeFeatureLines> fresh;
-    fresh->SetInputConnection(source->GetOutputPort());
-    fresh->SetCamera(camera);
-    fresh->SetRidgeThreshold(1.0);
-    fresh->SetSuggestiveThreshold(1.0);
-    fresh->SetCreaseAngle(kept->GetCreaseAngle());
-    fresh->Update();
-    kept->Update();
-    const Lines a = Measure(kept->GetOutput()), b = Measure(fresh->GetOutput());
-    for (int k = 0; k < Kind::NUMBER_OF_KINDS; ++k)
-    {
-      STYLIZE_CHECK(a.Count[k] == b.Count[k] && a.Length[k] == b.Length[k],
-        "%s: %s lines differ from a new filter's (%d of length %.17g, %d of length %.17g)", what,
-        vtkStylizeFeatureLines::GetKindName(k), a.Count[k], a.Length[k], b.Count[k], b.Length[k]);
-    }
-  };
   camera->Azimuth(30.0);
-  same("new camera");
+  SameAsNew(kept, source, camera, "new camera");
   source->SetUResolution(60);
-  same("changed input");
+  SameAsNew(kept, source, camera, "changed input");
   kept->SetCreaseAngle(20.0);
   camera->Elevation(20.0);
-  same("changed crease angle");
+  SameAsNew(kept, source, camera, "changed crease angle");
 }
 
 /** A drag in a GUI: interactive frames (contours, boundaries, creases: no curvature) and still
@@ -352,19 +367,10 @@ void Reuse()
  * frames' lines are a new filter's; a changed input builds both again. */
 void KindMaskSwitches()
 {
-  vtkNew<vtkParametricTorus> torus;
-  vtkNew<vtkParametricFunctionSource> source;
-  source->SetParametricFunction(torus);
-  source->SetUResolution(60);
-  source->SetVResolution(30);
-  source->SetScalarModeToNone();
+  vtkSmartPointer<vtkParametricFunctionSource> source = Torus(60, 30);
   vtkNew<vtkCamera> camera;
   camera->SetPosition(0.0, -6.0, 2.0);
-  vtkNew<vtkStylizeFeatureLines> kept;
-  kept->SetInputConnection(source->GetOutputPort());
-  kept->SetCamera(camera);
-  kept->SetRidgeThreshold(1.0);
-  kept->SetSuggestiveThreshold(1.0);
+  vtkSmartPointer<vtkStylizeFeatureLines> kept = LinesOf(source, camera);
   const int interactive = (1 << Kind::CONTOUR) | (1 << Kind::BOUNDARY) | (1 << Kind::CREASE);
   const int still = 63;
   for (int frame = 0; frame < 6; ++frame)
@@ -379,19 +385,7 @@ void KindMaskSwitches()
   STYLIZE_CHECK(kept->GetViewIndependentBuilds() == 1 && kept->GetCurvatureBuilds() == 1,
     "interactive and still frames in turn: %d builds of the mesh, %d of the curvature (1 each)",
     kept->GetViewIndependentBuilds(), kept->GetCurvatureBuilds());
-  vtkNew<vtkStylizeFeatureLines> fresh;
-  fresh->SetInputConnection(source->GetOutputPort());
-  fresh->SetCamera(camera);
-  fresh->SetRidgeThreshold(1.0);
-  fresh->SetSuggestiveThreshold(1.0);
-  fresh->Update();
-  const Lines a = Measure(kept->GetOutput()), b = Measure(fresh->GetOutput());
-  for (int k = 0; k < Kind::NUMBER_OF_KINDS; ++k)
-  {
-    STYLIZE_CHECK(a.Count[k] == b.Count[k] && a.Length[k] == b.Length[k],
-      "after the switches: %s lines differ from a new filter's",
-      vtkStylizeFeatureLines::GetKindName(k));
-  }
+  SameAsNew(kept, source, camera, "after the switches");
   source->SetUResolution(50);
   kept->SetKindMask(interactive);
   kept->Update();
