@@ -7,6 +7,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataObjectTypes.h"
 #include "vtkDataSet.h"
 #include "vtkErrorCode.h"
 #include "vtkExodusIIReader.h"
@@ -44,9 +45,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <new>
+#include <sstream>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -56,13 +59,6 @@ vtkStandardNewMacro(vtkStylizeReader);
 
 namespace vtkStylizeReaderInternal
 {
-namespace
-{
-/** The warnings of the update in progress, and the window capturing VTK's messages. */
-std::vector<std::string>* CurrentWarnings = nullptr;
-vtkStylizeOutputWindow* Capture = nullptr;
-} // namespace
-
 //------------------------------------------------------------------------------
 void Fail(const std::string& message)
 {
@@ -70,12 +66,9 @@ void Fail(const std::string& message)
 }
 
 //------------------------------------------------------------------------------
-void Warn(const std::string& message)
+void ReadContext::Warn(const std::string& message)
 {
-  if (CurrentWarnings)
-  {
-    CurrentWarnings->push_back(message);
-  }
+  this->Warnings.push_back(message);
 }
 
 //------------------------------------------------------------------------------
@@ -85,20 +78,20 @@ std::string Quote(const std::string& text)
 }
 
 //------------------------------------------------------------------------------
-void ClearVTKErrors()
+void ReadContext::ClearVTKErrors()
 {
-  if (Capture)
+  if (this->Capture)
   {
-    Capture->ClearMessages();
+    this->Capture->ClearMessages();
   }
 }
 
 //------------------------------------------------------------------------------
-void CheckVTKErrors(const std::string& what)
+void ReadContext::CheckVTKErrors(const std::string& what)
 {
-  if (Capture && Capture->HasFailure())
+  if (this->Capture && this->Capture->HasFailure())
   {
-    Fail(what + ": " + Capture->GetFirstFailure());
+    Fail(what + ": " + this->Capture->GetFirstFailure());
   }
 }
 } // namespace vtkStylizeReaderInternal
@@ -117,7 +110,8 @@ using namespace vtkStylizeReaderInternal;
 class CaptureScope
 {
 public:
-  CaptureScope()
+  explicit CaptureScope(ReadContext& context)
+    : Context(context)
   {
     this->Previous = vtkOutputWindow::GetInstance();
     if (auto* outer = vtkStylizeOutputWindow::SafeDownCast(this->Previous))
@@ -125,8 +119,12 @@ public:
       this->Window->SetEchoDescriptor(outer->GetEchoDescriptor());
     }
     vtkOutputWindow::SetInstance(this->Window);
-    this->OuterCapture = Capture;
-    Capture = this->Window;
+    this->OuterCapture = context.Capture;
+    context.Capture = this->Window;
+    // (VTK's readers report failures only through their error macros, which say nothing while
+    // a host has turned the messages off: the captured window needs them on)
+    this->WarningDisplay = vtkObject::GetGlobalWarningDisplay();
+    vtkObject::GlobalWarningDisplayOn();
     this->LoggerLevel = vtkLogger::GetCurrentVerbosityCutoff();
     this->LoggerChanged = this->LoggerLevel >= vtkLogger::VERBOSITY_ERROR;
     if (this->LoggerChanged)
@@ -140,18 +138,21 @@ public:
     {
       vtkLogger::SetStderrVerbosity(this->LoggerLevel);
     }
-    Capture = this->OuterCapture; // (an enclosing scope's window captures again)
+    vtkObject::SetGlobalWarningDisplay(this->WarningDisplay);
+    this->Context.Capture = this->OuterCapture; // (an enclosing scope's window captures again)
     vtkOutputWindow::SetInstance(this->Previous);
   }
   CaptureScope(const CaptureScope&) = delete;
   CaptureScope& operator=(const CaptureScope&) = delete;
 
 private:
+  ReadContext& Context;
   vtkSmartPointer<vtkOutputWindow> Previous;
   vtkStylizeOutputWindow* OuterCapture = nullptr;
   vtkNew<vtkStylizeOutputWindow> Window;
   vtkLogger::Verbosity LoggerLevel = vtkLogger::VERBOSITY_OFF;
   bool LoggerChanged = false;
+  int WarningDisplay = 1;
 };
 
 std::string Extension(const std::string& path)
@@ -305,7 +306,7 @@ std::string ClaimsThen(const std::string& path)
  * readers crash, hang, allocate without bound or read garbage on broken files: the problem, or
  * an empty string.
  */
-std::string StructuralCheck(const std::string& path)
+std::string StructuralCheck(ReadContext& context, const std::string& path)
 {
   using Check = std::string (*)(const std::string&);
   static const std::map<std::string, Check> checks = {
@@ -329,7 +330,7 @@ std::string StructuralCheck(const std::string& path)
     return std::string();
   }
   const std::string problem = check->second(path);
-  ClearVTKErrors(); // (a check that reads with VTK leaves the reader's own complaints)
+  context.ClearVTKErrors(); // (a check that reads with VTK leaves the reader's own complaints)
   return problem;
 }
 
@@ -347,8 +348,8 @@ std::string Folder(const std::string& path)
  * multiblock file may not name itself through any chain of multiblock files. chain: the
  * multiblock files that led here.
  */
-void CheckReferencedFiles(const std::string& path, std::vector<std::string> chain = {},
-  const std::string& input = std::string())
+void CheckReferencedFiles(ReadContext& context, const std::string& path,
+  std::vector<std::string> chain = {}, const std::string& input = std::string())
 {
   const std::string& top = input.empty() ? path : input;
   const std::string extension = Extension(path);
@@ -369,14 +370,14 @@ void CheckReferencedFiles(const std::string& path, std::vector<std::string> chai
   chain.push_back(real);
   vtkNew<vtkXMLDataParser> parser;
   parser->SetFileName(path.c_str());
-  ClearVTKErrors();
+  context.ClearVTKErrors();
   if (!parser->Parse() || !parser->GetRootElement())
   {
-    ClearVTKErrors();
+    context.ClearVTKErrors();
     Fail("cannot read " + Quote(top) + ": " + (path == top ? std::string() : Quote(path) + " is ") +
       "not a well-formed VTK XML file");
   }
-  ClearVTKErrors();
+  context.ClearVTKErrors();
   const char* attribute = multiblock ? "file" : "Source";
   std::vector<vtkXMLDataElement*> pending = { parser->GetRootElement() };
   while (!pending.empty())
@@ -406,12 +407,12 @@ void CheckReferencedFiles(const std::string& path, std::vector<std::string> chai
                                         : std::string("is not a regular file")));
     }
     CheckInputFile(file);
-    const std::string problem = StructuralCheck(file);
+    const std::string problem = StructuralCheck(context, file);
     if (!problem.empty())
     {
       Fail("cannot read " + Quote(top) + ": " + Quote(file) + ": " + problem);
     }
-    CheckReferencedFiles(file, chain, top);
+    CheckReferencedFiles(context, file, chain, top);
   }
 }
 
@@ -419,11 +420,11 @@ void CheckReferencedFiles(const std::string& path, std::vector<std::string> chai
  * The data set files of a ParaView data (.pvd) collection, in time order, read with VTK's XML
  * parser; a relative file is relative to the .pvd's folder.
  */
-std::vector<std::string> CollectionFiles(const std::string& path)
+std::vector<std::string> CollectionFiles(ReadContext& context, const std::string& path)
 {
   vtkNew<vtkXMLDataParser> parser;
   parser->SetFileName(path.c_str());
-  ClearVTKErrors();
+  context.ClearVTKErrors();
   if (!parser->Parse() || !parser->GetRootElement())
   {
     Fail("cannot read " + Quote(path) + ": not a well-formed ParaView data (.pvd) file");
@@ -448,7 +449,7 @@ std::vector<std::string> CollectionFiles(const std::string& path)
     }
     entries.emplace_back(t, f);
   }
-  ClearVTKErrors();
+  context.ClearVTKErrors();
   if (entries.empty())
   {
     Fail("cannot read " + Quote(path) + ": the collection lists no data set file");
@@ -468,12 +469,13 @@ std::string StepsText(std::size_t n)
   return n == 1 ? "1 time step" : std::to_string(n) + " time steps";
 }
 
-vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
+vtkSmartPointer<vtkDataObject> ReadInput(
+  ReadContext& context, const std::string& path, int timeStep)
 {
   if (Extension(path) == ".pvd")
   {
     CheckInputFile(path);
-    const std::vector<std::string> files = CollectionFiles(path);
+    const std::vector<std::string> files = CollectionFiles(context, path);
     if (timeStep < 0 || static_cast<std::size_t>(timeStep) >= files.size())
     {
       Fail("cannot read " + Quote(path) + ": time step " + std::to_string(timeStep) +
@@ -484,7 +486,7 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
     {
       Fail("cannot read " + Quote(path) + ": unsupported data set file " + Quote(file));
     }
-    return ReadInput(file, 0);
+    return ReadInput(context, file, 0);
   }
   const auto it = Readers().find(Extension(path));
   if (it == Readers().end())
@@ -492,8 +494,8 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
     Fail("unsupported file type " + Quote(path) + " (supported: " + SupportedExtensions() + ")");
   }
   CheckInputFile(path, it->first == ".foam");
-  CheckReferencedFiles(path);
-  const std::string problem = StructuralCheck(path);
+  CheckReferencedFiles(context, path);
+  const std::string problem = StructuralCheck(context, path);
   if (!problem.empty())
   {
     Fail("cannot read " + Quote(path) + ": " + problem);
@@ -506,9 +508,9 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
       Fail("cannot read " + Quote(path) + ": time step " + std::to_string(timeStep) +
         " is out of range (the file has 1 time step)");
     }
-    return ReadPLYStrips(path, "cannot read " + Quote(path));
+    return ReadPLYStrips(context, path, "cannot read " + Quote(path));
   }
-  ClearVTKErrors();
+  context.ClearVTKErrors();
   vtkSmartPointer<vtkAlgorithm> reader = it->second(path);
   if (it->first == ".ply" && ASCIIPLYWithoutLastNewline(path))
   {
@@ -539,7 +541,7 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
     reader->Update();
   }
   const std::string what = "cannot read " + Quote(path);
-  CheckVTKErrors(what);
+  context.CheckVTKErrors(what);
   if (reader->GetErrorCode() != vtkErrorCode::NoError)
   {
     const char* code = vtkErrorCode::GetStringFromErrorCode(reader->GetErrorCode());
@@ -555,25 +557,67 @@ vtkSmartPointer<vtkDataObject> ReadInput(const std::string& path, int timeStep)
   data->ShallowCopy(output);
   return data;
 }
-/** Checks, reads and validates the file in this process. */
+/**
+ * The class a legacy .vtk file's header announces (its DATASET line, after the version, title
+ * and format lines, read in its first 8 KiB); empty when it announces none.
+ */
+std::string LegacyOutputClass(const std::string& path)
+{
+  static const std::map<std::string, std::string> classes = { { "POLYDATA", "vtkPolyData" },
+    { "STRUCTURED_POINTS", "vtkStructuredPoints" }, { "STRUCTURED_GRID", "vtkStructuredGrid" },
+    { "RECTILINEAR_GRID", "vtkRectilinearGrid" }, { "UNSTRUCTURED_GRID", "vtkUnstructuredGrid" },
+    { "TABLE", "vtkTable" }, { "DIRECTED_GRAPH", "vtkDirectedGraph" },
+    { "UNDIRECTED_GRAPH", "vtkUndirectedGraph" }, { "MOLECULE", "vtkMolecule" },
+    { "TREE", "vtkTree" } };
+  std::ifstream in(path, std::ios::binary);
+  std::string head(8192, '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  std::istringstream lines(head);
+  std::string line;
+  for (int number = 1; std::getline(lines, line); ++number)
+  {
+    if (number <= 3)
+    {
+      continue; // (the version, the title, ASCII or BINARY)
+    }
+    std::istringstream words(line);
+    std::string key, type;
+    if (!(words >> key))
+    {
+      continue;
+    }
+    words >> type;
+    std::transform(type.begin(), type.end(), type.begin(),
+      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    const auto found = classes.find(type);
+    return Lower(key) == "dataset" && found != classes.end() ? found->second : std::string();
+  }
+  return std::string();
+}
+} // namespace
+
+namespace vtkStylizeReaderInternal
+{
+//------------------------------------------------------------------------------
 ReadResult ReadChecked(const std::string& path, int timeStep)
 {
   ReadResult result;
   const std::string what = "cannot read " + Quote(path);
-  CaptureScope capture;
-  CurrentWarnings = &result.Warnings;
+  ReadContext context;
+  CaptureScope capture(context);
   try
   {
-    vtkSmartPointer<vtkDataObject> data = ReadInput(path, timeStep);
+    vtkSmartPointer<vtkDataObject> data = ReadInput(context, path, timeStep);
     if (auto* ds = vtkDataSet::SafeDownCast(data))
     {
-      vtkSmartPointer<vtkDataSet> kept = WithoutNonFinitePoints(ds, Quote(path));
-      ValidateDataSet(kept, Quote(path));
+      vtkSmartPointer<vtkDataSet> kept = WithoutNonFinitePoints(context, ds, Quote(path));
+      ValidateDataSet(context, kept, Quote(path));
       data = kept;
     }
     else
     {
-      ValidateBlocks(data, Quote(path));
+      ValidateBlocks(context, data, Quote(path));
     }
     result.Data = data;
   }
@@ -590,14 +634,62 @@ ReadResult ReadChecked(const std::string& path, int timeStep)
     // (a library's exception, e.g. std::length_error for a size it cannot hold)
     result.Error = what + ": " + vtkStylizeOutputWindow::OneLine(e.what());
   }
-  CurrentWarnings = nullptr;
+  result.Warnings = std::move(context.Warnings);
   if (!result.Error.empty())
   {
     result.Data = nullptr;
   }
   return result;
 }
-} // namespace
+
+//------------------------------------------------------------------------------
+std::string OutputClass(const std::string& path, int timeStep)
+{
+  static const std::map<std::string, std::string> classes = { { ".vtp", "vtkPolyData" },
+    { ".pvtp", "vtkPolyData" }, { ".stl", "vtkPolyData" }, { ".obj", "vtkPolyData" },
+    { ".ply", "vtkPolyData" }, { ".vtu", "vtkUnstructuredGrid" },
+    { ".pvtu", "vtkUnstructuredGrid" }, { ".vts", "vtkStructuredGrid" },
+    { ".pvts", "vtkStructuredGrid" }, { ".vtr", "vtkRectilinearGrid" },
+    { ".pvtr", "vtkRectilinearGrid" }, { ".vti", "vtkImageData" }, { ".pvti", "vtkImageData" },
+    { ".vtm", "vtkMultiBlockDataSet" }, { ".ex2", "vtkMultiBlockDataSet" },
+    { ".exo", "vtkMultiBlockDataSet" }, { ".e", "vtkMultiBlockDataSet" },
+    { ".g", "vtkMultiBlockDataSet" }, { ".case", "vtkMultiBlockDataSet" },
+    { ".foam", "vtkMultiBlockDataSet" } };
+  const std::string extension = Extension(path);
+  if (extension == ".vtk")
+  {
+    return LegacyOutputClass(path);
+  }
+  if (extension == ".pvd")
+  {
+    // (the collection's XML, parsed by VTK's expat-based parser; the data set file itself is
+    // read later, in the helper)
+    ReadContext context;
+    CaptureScope capture(context);
+    struct stat st;
+    try
+    {
+      if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || st.st_size > (64 << 20))
+      {
+        return std::string();
+      }
+      const std::vector<std::string> files = CollectionFiles(context, path);
+      if (timeStep < 0 || static_cast<std::size_t>(timeStep) >= files.size() ||
+        Extension(files[static_cast<std::size_t>(timeStep)]) == ".pvd")
+      {
+        return std::string();
+      }
+      return OutputClass(files[static_cast<std::size_t>(timeStep)], 0);
+    }
+    catch (const ReadFailure&)
+    {
+      return std::string();
+    }
+  }
+  const auto found = classes.find(extension);
+  return found == classes.end() ? std::string() : found->second;
+}
+} // namespace vtkStylizeReaderInternal
 
 //------------------------------------------------------------------------------
 vtkStylizeReader::vtkStylizeReader()
@@ -670,13 +762,44 @@ int vtkStylizeReader::FillOutputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizeReader::Read()
+int vtkStylizeReader::RequestDataObject(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
+  // The output's class is the file's, known here without reading the file (OutputClass): the
+  // file is read in RequestData, on the ranks that need the data only (this reader does not
+  // handle piece requests: the pipeline runs it for piece 0).
+  const std::string path = this->FileName ? this->FileName : "";
+  std::string type = path.empty() ? std::string() : OutputClass(path, this->TimeStep);
+  vtkSmartPointer<vtkDataObject> fresh;
+  if (!type.empty())
+  {
+    fresh.TakeReference(vtkDataObjectTypes::NewDataObject(type.c_str()));
+  }
+  if (!fresh)
+  {
+    type = "vtkPolyData"; // (the read says why it fails, or that the data is not this)
+  }
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkDataObject* output = vtkDataObject::GetData(outInfo);
+  if (!output || type != output->GetClassName())
+  {
+    if (!fresh)
+    {
+      fresh = vtkSmartPointer<vtkPolyData>::New();
+    }
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), fresh);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkDataObject* output = vtkDataObject::GetData(outputVector->GetInformationObject(0));
   this->ErrorMessage.clear();
   this->Warnings.clear();
-  this->Data = nullptr;
   const std::string path = this->FileName ? this->FileName : "";
-  const int timeStep = this->TimeStep;
   ReadResult result;
   if (path.empty())
   {
@@ -693,68 +816,31 @@ void vtkStylizeReader::Read()
     {
       limits.Seconds = this->TimeLimit;
     }
-    CaptureScope capture; // (VTK's messages while the data is handed back)
-    result = ReadIsolated(
-      path, [&path, timeStep]() { return ReadChecked(path, timeStep); }, limits);
+    ReadContext context;
+    CaptureScope capture(context); // (VTK's messages while the data is handed back)
+    result = ReadIsolated(context, path, this->TimeStep, limits);
   }
   else
   {
-    result = ReadChecked(path, timeStep);
+    result = ReadChecked(path, this->TimeStep);
   }
   this->Warnings = result.Warnings;
-  if (result.Error.empty())
+  if (result.Error.empty() && !result.Data->IsA(output->GetClassName()))
   {
-    this->Data = result.Data;
+    result.Error = "cannot read " + Quote(path) + ": it holds a " + result.Data->GetClassName() +
+      ", not the " + output->GetClassName() + " its " +
+      (Extension(path) == ".vtk" ? "header" : "extension") + " announces";
   }
-  else
+  if (!result.Error.empty())
   {
     this->ErrorMessage = vtkStylizeOutputWindow::OneLine(result.Error, 1000);
-  }
-}
-
-//------------------------------------------------------------------------------
-int vtkStylizeReader::RequestDataObject(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
-  // The output's type is the file's, known once it is read: the file is read here (again only
-  // after a change of the settings), and RequestData hands the result on.
-  if (this->GetMTime() > this->ReadTime)
-  {
-    this->Read();
-    this->ReadTime.Modified();
-  }
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkDataObject* output = vtkDataObject::GetData(outInfo);
-  const char* type = this->Data ? this->Data->GetClassName() : "vtkPolyData";
-  if (!output || std::strcmp(output->GetClassName(), type) != 0)
-  {
-    vtkSmartPointer<vtkDataObject> fresh;
-    if (this->Data)
-    {
-      fresh.TakeReference(this->Data->NewInstance());
-    }
-    else
-    {
-      fresh = vtkSmartPointer<vtkPolyData>::New();
-    }
-    outInfo->Set(vtkDataObject::DATA_OBJECT(), fresh);
-  }
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkStylizeReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
-  vtkDataObject* output = vtkDataObject::GetData(outputVector->GetInformationObject(0));
-  if (!this->Data)
-  {
     this->SetErrorCode(vtkErrorCode::FileFormatError);
+    output->Initialize();
     vtkErrorMacro(<< this->ErrorMessage);
     return 0;
   }
   this->SetErrorCode(vtkErrorCode::NoError);
-  output->ShallowCopy(this->Data);
+  output->ShallowCopy(result.Data);
   return 1;
 }
 

@@ -12,6 +12,10 @@
  * REASON"), also reported as a VTK error; the messages of the readers run inside are captured,
  * so that this line is all a caller sees.
  *
+ * The file is read in RequestData: the output's class comes from the extension (or a legacy
+ * file's header, or the file a .pvd names) without reading the data, and only the ranks that
+ * update piece 0 read it (the reader does not split data into pieces).
+ *
  * Not thread-safe: VTK's output window is process-wide, and the reader installs its own
  * (vtkStylizeOutputWindow) while it reads.
  *
@@ -25,9 +29,6 @@
 
 #include "vtkDataObjectAlgorithm.h"
 #include "vtkStylizeIOModule.h" // for export macro
-
-#include "vtkSmartPointer.h" // for vtkSmartPointer
-#include "vtkTimeStamp.h"    // for vtkTimeStamp
 
 #include <functional> // for std::function
 #include <string>     // for std::string
@@ -61,11 +62,15 @@ public:
 
   ///@{
   /**
-   * Whether the file is read in a child process (fork) under limits, and the data handed back
-   * through memory files: a crash, a hang or a runaway allocation of VTK's reader on a damaged
-   * file then ends the child, not the caller, and is the reader's error ("VTK's reader crashed
-   * on it (segmentation fault)..."). Off, the file is read in this process (the checks before
-   * reading still run).
+   * Whether the file is read in the helper program vtkstylize-read (installed beside the IO
+   * library; the environment variable VTKSTYLIZE_READ_HELPER names another), started with
+   * posix_spawn under limits, and the data handed back through memory files: a crash, a hang or
+   * a runaway allocation of VTK's reader on a damaged file then ends the helper, not the caller,
+   * and is the reader's error ("VTK's reader crashed on it (segmentation fault)..."). The helper
+   * is a new program, not a copy of the caller (fork): no lock another thread of the caller
+   * holds (the allocator's, a thread pool's, Python's) can be inherited, so a multithreaded host
+   * (ParaView, a Qt application, MPI, TBB) reads safely. Off, the file is read in this process
+   * (the checks before reading still run). Default on.
    */
   vtkSetMacro(Isolated, bool);
   vtkGetMacro(Isolated, bool);
@@ -74,7 +79,8 @@ public:
 
   ///@{
   /**
-   * The memory the isolated read may take beyond what the calling process holds, in MiB; 0:
+   * The memory the isolated read may take (the helper's heap and resident size beyond what it
+   * holds when it starts), in MiB; 0:
    * automatic, 512 MiB + 16 times the size of the input (the file, or the folder of a file that
    * names others), at most 3/4 of the machine's memory. Range [0, 1e9], default 0.
    */
@@ -140,10 +146,6 @@ protected:
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /** Checks and reads the file (in a child process when Isolated): Data, or ErrorMessage; Warnings.
-   */
-  void Read();
-
   char* FileName = nullptr;
   int TimeStep = 0;
   bool Isolated = true;
@@ -151,8 +153,6 @@ protected:
   double TimeLimit = 0.0;
   std::string ErrorMessage;
   std::vector<std::string> Warnings;
-  vtkSmartPointer<vtkDataObject> Data; // what the last Read() gave (null after a failure)
-  vtkTimeStamp ReadTime;
 
 private:
   vtkStylizeReader(const vtkStylizeReader&) = delete;

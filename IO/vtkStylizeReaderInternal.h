@@ -1,21 +1,24 @@
 /**
  * What the parts of vtkStylizeReader share (a private header of the IO module): the failure
- * every check throws, the warnings and VTK messages of the read in progress, the PLY
- * triangle-strip reading (vtkStylizeReaderPLY.cxx) and the validation of what was read
- * (vtkStylizeReaderValidate.cxx).
+ * every check throws, the state of one read (its warnings, the window capturing VTK's messages),
+ * the isolated read through the helper program vtkstylize-read, the PLY triangle-strip reading
+ * (vtkStylizeReaderPLY.cxx) and the validation of what was read (vtkStylizeReaderValidate.cxx).
  */
 
 #ifndef vtkStylizeReaderInternal_h
 #define vtkStylizeReaderInternal_h
 
 #include "vtkSmartPointer.h"
+#include "vtkStylizeIOModule.h" // for export macro
 
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
 
 class vtkDataObject;
 class vtkDataSet;
+class vtkStylizeOutputWindow;
 
 namespace vtkStylizeReaderInternal
 {
@@ -27,17 +30,27 @@ struct ReadFailure
 
 [[noreturn]] void Fail(const std::string& message);
 
-/** Adds a warning to the read in progress. */
-void Warn(const std::string& message);
+/**
+ * The state of one read, handed to every part of it (no part keeps state of its own between
+ * calls): the warnings so far, and the window that captures VTK's messages (none: null).
+ */
+struct ReadContext
+{
+  std::vector<std::string> Warnings;
+  vtkStylizeOutputWindow* Capture = nullptr;
+
+  /** Adds a warning to the read. */
+  void Warn(const std::string& message);
+
+  /** Forgets the messages VTK's readers reported so far. */
+  void ClearVTKErrors();
+
+  /** Fails with what + ": " + the first failure VTK reported since ClearVTKErrors(). */
+  void CheckVTKErrors(const std::string& what);
+};
 
 /** text in single quotes, as the messages name files, blocks and arrays. */
 std::string Quote(const std::string& text);
-
-/** Forgets the messages VTK's readers reported so far. */
-void ClearVTKErrors();
-
-/** Fails with what + ": " + the first failure VTK reported since ClearVTKErrors(). */
-void CheckVTKErrors(const std::string& what);
 
 /** text in lower case (ASCII). */
 std::string Lower(std::string text);
@@ -53,7 +66,37 @@ struct ReadResult
   std::vector<std::string> Warnings;
 };
 
-/** The bounds of an isolated read: memory above what the caller holds (MiB), time (s). */
+/**
+ * Checks, reads and validates the file in this process (what vtkStylizeReader does with
+ * Isolated off, and what the helper program does for an isolated read).
+ */
+ReadResult ReadChecked(const std::string& path, int timeStep);
+
+/**
+ * The class of the data the file holds, as far as it is known without reading it: from the
+ * extension, from the header of a legacy .vtk file (its first lines), from the data set file a
+ * .pvd collection names for timeStep. Empty when unknown (the read then says why).
+ */
+std::string OutputClass(const std::string& path, int timeStep);
+
+#if defined(__SANITIZE_ADDRESS__)
+#define VTKSTYLIZE_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define VTKSTYLIZE_ASAN 1
+#endif
+#endif
+
+/** Bytes per MiB. */
+constexpr double MiB = 1024.0 * 1024.0;
+
+/** The longest text of a record of the helper's protocol (messages are one line). */
+constexpr std::size_t MaxRecord = 8192;
+
+/** A value of the form "Name:   123 kB" from /proc/self/status, in bytes (0 if absent). */
+double StatusBytes(const char* name);
+
+/** The bounds of an isolated read: the helper's memory (MiB), its processor time (s). */
 struct IsolationLimits
 {
   double MemoryMiB = 512.0;
@@ -74,14 +117,31 @@ double InputBytes(const std::string& path);
 IsolationLimits AutomaticLimits(double inputBytes);
 
 /**
- * Runs read() in a child process (fork) under the limits and returns what it gave: the data
- * comes back through memory files in VTK's XML format. A crash, a limit or a hang of the child
- * is the result's Error, one line naming path and the cause. The child's processor time is
- * bounded by RLIMIT_CPU, its heap by RLIMIT_DATA (except under AddressSanitizer), its resident
- * size and its wall-clock time by the caller, which kills it past 2 x Seconds + 5 s.
+ * The helper program an isolated read runs: the environment variable VTKSTYLIZE_READ_HELPER
+ * when set, else vtkstylize-read in the folder of the IO library (or of the program it is
+ * linked into). Empty when it is not there: why is then the reason, one line.
+ */
+std::string HelperPath(std::string& why);
+
+/**
+ * Reads the file in the helper program (posix_spawn: no code of the calling process runs in the
+ * new one, so no lock held by another of its threads is inherited), with a clean environment, no
+ * inherited descriptor but the socket, the default action for every signal, under the limits,
+ * and returns what it gave: the data comes back through memory files in VTK's XML format, read
+ * here with context's capture of VTK's messages. A
+ * crash, a limit or a hang of the helper, or a helper that cannot be found or started, is the
+ * result's Error, one line naming path and the cause. The helper bounds its own processor time
+ * (RLIMIT_CPU) and heap (RLIMIT_DATA, except under AddressSanitizer) before it opens the file;
+ * the caller bounds its resident size and wall-clock time, and kills it past 2 x Seconds + 5 s.
  */
 ReadResult ReadIsolated(
-  const std::string& path, const std::function<ReadResult()>& read, const IsolationLimits& limits);
+  ReadContext& context, const std::string& path, int timeStep, const IsolationLimits& limits);
+
+/**
+ * The helper program's main (vtkstylize-read PARENT_PID MEMORY_MIB SECONDS TIME_STEP PATH, the
+ * socket on descriptor 3): sets its limits, reads with ReadChecked and sends the result.
+ */
+VTKSTYLIZEIO_EXPORT int ReadHelperMain(int argc, char* argv[]);
 
 //------------------------------------------------------------------------------
 // PLY (vtkStylizeReaderPLY.cxx)
@@ -102,7 +162,8 @@ bool HasPLYStrips(const std::string& path);
  * Reads a PLY file whose surface is stored as triangle strips, which VTK 9.1's vtkPLYReader does
  * not read, as a polydata of triangles. what: the start of the failure's message.
  */
-vtkSmartPointer<vtkDataObject> ReadPLYStrips(const std::string& path, const std::string& what);
+vtkSmartPointer<vtkDataObject> ReadPLYStrips(
+  ReadContext& context, const std::string& path, const std::string& what);
 
 //------------------------------------------------------------------------------
 // Validation of what was read (vtkStylizeReaderValidate.cxx)
@@ -113,7 +174,7 @@ vtkSmartPointer<vtkDataObject> ReadPLYStrips(const std::string& path, const std:
  * are left out, a linear cell of an unstructured grid that lists more points than its type has
  * keeps its corners. ds is changed in place (it is the reader's copy).
  */
-void ValidateDataSet(vtkDataSet* ds, const std::string& what);
+void ValidateDataSet(ReadContext& context, vtkDataSet* ds, const std::string& what);
 
 /**
  * The point set without its points whose coordinates are not finite (NaN or infinity) and the
@@ -121,13 +182,14 @@ void ValidateDataSet(vtkDataSet* ds, const std::string& what);
  * finite, or when no cell is left of a dataset that had cells. The connectivity is checked first
  * (a cell may not name a point that does not exist).
  */
-vtkSmartPointer<vtkDataSet> WithoutNonFinitePoints(vtkDataSet* ds, const std::string& what);
+vtkSmartPointer<vtkDataSet> WithoutNonFinitePoints(
+  ReadContext& context, vtkDataSet* ds, const std::string& what);
 
 /**
  * Every dataset of a composite (every leaf, named as the vtkstylize command names its
  * parts: the block's name, else "block N"), without its non-finite points and validated.
  */
-void ValidateBlocks(vtkDataObject* data, const std::string& what);
+void ValidateBlocks(ReadContext& context, vtkDataObject* data, const std::string& what);
 }
 
 #endif

@@ -1,9 +1,14 @@
-// The isolated read of vtkStylizeReader: the file is read in a child process under limits and
-// the data comes back through memory files. VTK's readers crash, loop or allocate without bound
-// on damaged files along paths no check before reading can reach (issue 39); in a child process
-// such a failure ends the child and becomes one line, and the caller's process is untouched.
+// The isolated read of vtkStylizeReader: the file is read by the helper program vtkstylize-read
+// under limits and the data comes back through memory files. VTK's readers crash, loop or
+// allocate without bound on damaged files along paths no check before reading can reach (issue
+// 39); in another process such a failure ends that process and becomes one line, and the
+// caller's process is untouched. The helper is started with posix_spawn, not fork(): a fork of a
+// multithreaded host (ParaView, Qt, MPI, TBB's workers) copies locks other threads hold, held
+// forever in the child (issue 53); an exec'd program starts with none of the host's state.
 //
-// The protocol, over a socket pair of type SOCK_SEQPACKET (one record per message, in order):
+// The protocol, over a socket pair of type SOCK_SEQPACKET (one record per message, in order;
+// the helper's end is its descriptor 3):
+//   'H'               the helper started and set its limits
 //   'W' text          a warning
 //   'E' text          the read failed (then 'D')
 //   'M' count name    a multiblock dataset with count children, which follow (pre-order)
@@ -12,9 +17,9 @@
 //   'L' class name    a dataset, written in VTK's XML format (raw appended binary) to a memory
 //                     file (memfd) whose descriptor travels with the record (SCM_RIGHTS)
 //   'G' class name    other data (a table), likewise in VTK's legacy binary format
-//   'D'               done: the child exits
+//   'D'               done: the helper exits
 // A count or class is followed by a newline, the name (possibly empty) is the rest of the
-// message. The child writes nothing else: its standard error goes to /dev/null, its core dumps
+// message. The helper writes nothing else: its standard streams are /dev/null, its core dumps
 // are off, it dies with its parent.
 #include "vtkStylizeReaderInternal.h"
 
@@ -22,14 +27,10 @@
 #include "vtkDataObjectTypes.h"
 #include "vtkDataSet.h"
 #include "vtkGenericDataObjectReader.h"
-#include "vtkGenericDataObjectWriter.h"
 #include "vtkInformation.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkMultiPieceDataSet.h"
 #include "vtkNew.h"
-#include "vtkSMPTools.h"
-#include "vtkStylizeOutputWindow.h"
-#include "vtkXMLDataSetWriter.h"
 #include "vtkXMLGenericDataObjectReader.h"
 
 #include <algorithm>
@@ -47,35 +48,23 @@
 #include <vector>
 
 #include <dirent.h>
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <poll.h>
+#include <spawn.h>
 #include <sys/mman.h>
-#include <sys/prctl.h>
-#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#if defined(__SANITIZE_ADDRESS__)
-#define VTKSTYLIZE_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define VTKSTYLIZE_ASAN 1
-#endif
-#endif
+extern char** environ;
 
 namespace vtkStylizeReaderInternal
 {
-namespace
-{
-constexpr double MiB = 1024.0 * 1024.0;
-constexpr std::size_t MaxRecord = 8192; // (a record's longest text; messages are one line)
-
 //------------------------------------------------------------------------------
 // Limits
 
-/** A value of the form "Name:   123 kB" from /proc/self/status, in bytes (0 if absent). */
 double StatusBytes(const char* name)
 {
   std::ifstream status("/proc/self/status");
@@ -91,6 +80,8 @@ double StatusBytes(const char* name)
   return 0.0;
 }
 
+namespace
+{
 /**
  * The anonymous resident size of process pid in bytes (0 when it cannot be read): resident less
  * shared (file and shared-memory pages). A forked child has the parent's anonymous pages from its
@@ -198,196 +189,6 @@ IsolationLimits AutomaticLimits(double inputBytes)
 namespace
 {
 //------------------------------------------------------------------------------
-// Child: sending
-
-bool SendRecord(int socket, char kind, const std::string& text, int fd = -1)
-{
-  std::string message(1, kind);
-  message += text.substr(0, MaxRecord);
-  iovec io{ &message[0], message.size() };
-  msghdr header{};
-  header.msg_iov = &io;
-  header.msg_iovlen = 1;
-  alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int))];
-  if (fd >= 0)
-  {
-    std::memset(control, 0, sizeof(control));
-    header.msg_control = control;
-    header.msg_controllen = sizeof(control);
-    cmsghdr* c = CMSG_FIRSTHDR(&header);
-    c->cmsg_level = SOL_SOCKET;
-    c->cmsg_type = SCM_RIGHTS;
-    c->cmsg_len = CMSG_LEN(sizeof(int));
-    std::memcpy(CMSG_DATA(c), &fd, sizeof(int));
-  }
-  ssize_t sent;
-  do
-  {
-    sent = ::sendmsg(socket, &header, MSG_NOSIGNAL);
-  } while (sent < 0 && errno == EINTR);
-  return sent == static_cast<ssize_t>(message.size());
-}
-
-std::string BlockName(vtkCompositeDataSet* parent, unsigned int index)
-{
-  vtkInformation* meta = nullptr;
-  if (auto* mb = vtkMultiBlockDataSet::SafeDownCast(parent))
-  {
-    meta = mb->HasMetaData(index) ? mb->GetMetaData(index) : nullptr;
-  }
-  else if (auto* mp = vtkMultiPieceDataSet::SafeDownCast(parent))
-  {
-    meta = mp->HasMetaData(index) ? mp->GetMetaData(index) : nullptr;
-  }
-  return meta && meta->Has(vtkCompositeDataSet::NAME()) ? meta->Get(vtkCompositeDataSet::NAME())
-                                                        : std::string();
-}
-
-/** Sends object (and its children); throws ReadFailure on what cannot be sent. */
-void SendTree(int socket, vtkDataObject* object, const std::string& name)
-{
-  if (!object)
-  {
-    SendRecord(socket, '0', name);
-    return;
-  }
-  auto* mb = vtkMultiBlockDataSet::SafeDownCast(object);
-  auto* mp = vtkMultiPieceDataSet::SafeDownCast(object);
-  if (mb || mp)
-  {
-    const unsigned int n = mb ? mb->GetNumberOfBlocks() : mp->GetNumberOfPieces();
-    SendRecord(socket, mb ? 'M' : 'P', std::to_string(n) + "\n" + name);
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      auto* composite = static_cast<vtkCompositeDataSet*>(object);
-      SendTree(socket, mb ? mb->GetBlock(i) : mp->GetPieceAsDataObject(i), BlockName(composite, i));
-    }
-    return;
-  }
-  auto* ds = vtkDataSet::SafeDownCast(object);
-  const int fd = ::memfd_create("vtkstylize-read", MFD_CLOEXEC);
-  if (fd < 0)
-  {
-    Fail(std::string("cannot create a memory file: ") + std::strerror(errno));
-  }
-  const std::string file = "/proc/self/fd/" + std::to_string(fd);
-  ClearVTKErrors();
-  int written = 0;
-  if (ds)
-  {
-    // Datasets: VTK's XML format, raw binary, which keeps every class and attribute.
-    // (without its time step, which the writer would add as a field array "TimeValue")
-    vtkSmartPointer<vtkDataSet> copy;
-    copy.TakeReference(ds->NewInstance());
-    copy->ShallowCopy(ds);
-    copy->GetInformation()->Remove(vtkDataObject::DATA_TIME_STEP());
-    vtkNew<vtkXMLDataSetWriter> writer;
-    writer->SetInputData(copy);
-    writer->SetFileName(file.c_str());
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToNone();
-    writer->SetHeaderTypeToUInt64();
-    writer->SetIdTypeToInt64();
-    written = writer->Write();
-  }
-  else
-  {
-    // Other data (a table, a graph): VTK's legacy format, binary.
-    vtkNew<vtkGenericDataObjectWriter> writer;
-    writer->SetInputData(object);
-    writer->SetFileName(file.c_str());
-    writer->SetFileTypeToBinary();
-    written = writer->Write();
-  }
-  if (!written)
-  {
-    ::close(fd);
-    Fail("cannot hand the data over: writing it to memory failed");
-  }
-  SendRecord(socket, ds ? 'L' : 'G', std::string(object->GetClassName()) + "\n" + name, fd);
-  ::close(fd);
-}
-
-[[noreturn]] void RunChild(int socket, const std::function<ReadResult()>& read,
-  const IsolationLimits& limits, double dataBytes, const std::string& what)
-{
-  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-  const int null = ::open("/dev/null", O_WRONLY);
-  if (null >= 0)
-  {
-    ::dup2(null, STDOUT_FILENO);
-    ::dup2(null, STDERR_FILENO);
-    ::close(null);
-  }
-  // (a sanitizer's report of a fault in VTK's reader would be the caller's stderr otherwise)
-  vtkStylizeOutputWindow::ReportSanitizersTo(STDERR_FILENO);
-  // The default actions, unblocked: a host that ignores or blocks a signal passes that on through
-  // fork(), and an ignored or blocked SIGXCPU turns the time limit into the hard limit's SIGKILL.
-  for (int sig : { SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGINT, SIGTERM, SIGPIPE, SIGXCPU })
-  {
-    std::signal(sig, SIG_DFL);
-  }
-  sigset_t unblocked;
-  sigemptyset(&unblocked);
-  ::sigprocmask(SIG_SETMASK, &unblocked, nullptr);
-  rlimit none{ 0, 0 };
-  ::setrlimit(RLIMIT_CORE, &none);
-  const rlim_t seconds = static_cast<rlim_t>(std::ceil(limits.Seconds));
-  rlimit cpu{ seconds, seconds + 2 };
-  ::setrlimit(RLIMIT_CPU, &cpu);
-#ifndef VTKSTYLIZE_ASAN
-  // The heap and the private mappings: what the parent had, and the allowance (AddressSanitizer
-  // reserves terabytes: there the parent watches the resident size alone).
-  rlimit data;
-  if (::getrlimit(RLIMIT_DATA, &data) == 0)
-  {
-    const double wanted = dataBytes + limits.MemoryMiB * MiB;
-    if (data.rlim_cur == RLIM_INFINITY || wanted < static_cast<double>(data.rlim_cur))
-    {
-      data.rlim_cur = static_cast<rlim_t>(wanted);
-      ::setrlimit(RLIMIT_DATA, &data);
-    }
-  }
-#else
-  (void)dataBytes;
-#endif
-  // The parent's thread pools do not exist here.
-  vtkSMPTools::SetBackend("Sequential");
-  ReadResult result;
-  try
-  {
-    result = read();
-    for (const std::string& warning : result.Warnings)
-    {
-      SendRecord(socket, 'W', warning);
-    }
-    if (result.Error.empty())
-    {
-      SendTree(socket, result.Data, std::string());
-    }
-  }
-  catch (const ReadFailure& failure)
-  {
-    result.Error = what + ": " + failure.Message;
-  }
-  catch (const std::bad_alloc&)
-  {
-    result.Error = what + ": out of memory";
-  }
-  catch (...)
-  {
-    result.Error = what + ": the data cannot be handed over";
-  }
-  if (!result.Error.empty())
-  {
-    SendRecord(socket, 'E', result.Error);
-  }
-  SendRecord(socket, 'D', std::string());
-  ::_exit(0);
-}
-
-//------------------------------------------------------------------------------
 // Parent: receiving
 
 struct Record
@@ -455,7 +256,8 @@ void Split(const std::string& text, std::string& head, std::string& rest)
  * Reads the data the child wrote to the memory file fd (closed here): VTK's XML format, or its
  * legacy format when legacy.
  */
-vtkSmartPointer<vtkDataObject> ReadMemoryFile(int fd, const std::string& type, bool legacy)
+vtkSmartPointer<vtkDataObject> ReadMemoryFile(
+  ReadContext& context, int fd, const std::string& type, bool legacy)
 {
   // (closed also when something throws: the memory file holds the whole dataset)
   struct Closer
@@ -492,10 +294,10 @@ vtkSmartPointer<vtkDataObject> ReadMemoryFile(int fd, const std::string& type, b
     xml->SetFileName(file.c_str());
     reader = xml;
   }
-  ClearVTKErrors();
+  context.ClearVTKErrors();
   reader->Update();
   closer.Close();
-  CheckVTKErrors("the data read cannot be handed over");
+  context.CheckVTKErrors("the data read cannot be handed over");
   // The XML format keeps the class, or its superclass (vtkStructuredPoints is written as image
   // data): the data is given the class it was read as.
   vtkDataObject* output = reader->GetOutputDataObject(0);
@@ -582,10 +384,12 @@ struct Reception
   bool ChildFailed = false; // Failure is the child's
   std::string Killed;       // the limit the parent killed the child for
   bool Done = false;        // 'D' received
+  bool Started = false;     // 'H' received
+  double Baseline = 0.0;    // the helper's resident size then (bytes)
 };
 
 /** Handles one record; throws ReadFailure on what does not follow the protocol. */
-void Handle(const Record& record, Reception& in)
+void Handle(ReadContext& context, const Record& record, Reception& in)
 {
   std::string head, rest;
   Split(record.Text, head, rest);
@@ -600,6 +404,9 @@ void Handle(const Record& record, Reception& in)
       break;
     case 'D':
       in.Done = true;
+      break;
+    case 'H':
+      in.Started = true;
       break;
     case '0':
       in.Tree.Add(nullptr, record.Text, 0);
@@ -630,7 +437,7 @@ void Handle(const Record& record, Reception& in)
       {
         Fail("the data read cannot be handed over");
       }
-      in.Tree.Add(ReadMemoryFile(record.Descriptor, head, record.Kind == 'G'), rest, 0);
+      in.Tree.Add(ReadMemoryFile(context, record.Descriptor, head, record.Kind == 'G'), rest, 0);
       break;
     default:
       Fail("the data read cannot be handed over");
@@ -642,7 +449,7 @@ void Handle(const Record& record, Reception& in)
  * (checked every 20 ms) or the wall-clock time.
  */
 void Receive(
-  int socket, pid_t pid, const IsolationLimits& limits, double residentLimit, Reception& in)
+  ReadContext& context, int socket, pid_t pid, const IsolationLimits& limits, Reception& in)
 {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -653,7 +460,7 @@ void Receive(
     {
       pollfd p{ socket, POLLIN, 0 };
       const int ready = ::poll(&p, 1, 20);
-      if (ResidentBytes(pid) > residentLimit)
+      if (in.Started && ResidentBytes(pid) > in.Baseline + limits.MemoryMiB * MiB)
       {
         in.Killed = "needs more than " + std::to_string(static_cast<long>(limits.MemoryMiB)) +
           " MiB of memory to read (the reader's limit)";
@@ -672,7 +479,11 @@ void Receive(
       }
       if (ready > 0)
       {
-        Handle(record, in);
+        Handle(context, record, in);
+        if (record.Kind == 'H')
+        {
+          in.Baseline = ResidentBytes(pid); // (the libraries it loaded, before the read)
+        }
       }
     }
   }
@@ -721,53 +532,193 @@ std::string Lower(std::string text)
 }
 
 //------------------------------------------------------------------------------
+std::string HelperPath(std::string& why)
+{
+  const char* name = "vtkstylize-read";
+  if (const char* given = std::getenv("VTKSTYLIZE_READ_HELPER"))
+  {
+    if (*given && ::access(given, X_OK) == 0)
+    {
+      return given;
+    }
+    why = std::string("the reading helper ") + Quote(given) +
+      " (VTKSTYLIZE_READ_HELPER) is not an executable file";
+    return std::string();
+  }
+  // Beside the IO library (or the program it is linked into).
+  Dl_info info;
+  std::string folder;
+  if (::dladdr(reinterpret_cast<void*>(&HelperPath), &info) != 0 && info.dli_fname)
+  {
+    char* real = ::realpath(info.dli_fname, nullptr);
+    folder = real ? real : info.dli_fname;
+    std::free(real);
+    const auto slash = folder.find_last_of('/');
+    folder = slash == std::string::npos ? std::string(".") : folder.substr(0, slash);
+  }
+  const std::string path = folder + "/" + name;
+  if (!folder.empty() && ::access(path.c_str(), X_OK) == 0)
+  {
+    return path;
+  }
+  why = std::string("the reading helper ") + name + " is not in " +
+    (folder.empty() ? std::string("the IO library's folder") : Quote(folder)) +
+    " (install it there, or name it in VTKSTYLIZE_READ_HELPER)";
+  return std::string();
+}
+
+namespace
+{
+/**
+ * The helper's environment: the sanitizers' settings and nothing else (no LD_PRELOAD, no
+ * locale, no Python or ParaView variable of the host reaches VTK's readers).
+ */
+std::vector<std::string> HelperEnvironment()
+{
+  std::vector<std::string> kept;
+  for (char** e = environ; e && *e; ++e)
+  {
+    const std::string entry = *e;
+    for (const char* prefix :
+      { "ASAN_OPTIONS=", "UBSAN_OPTIONS=", "LSAN_OPTIONS=", "TSAN_OPTIONS=" })
+    {
+      if (entry.compare(0, std::strlen(prefix), prefix) == 0)
+      {
+        kept.push_back(entry);
+      }
+    }
+  }
+  return kept;
+}
+
+/** Starts the helper on socket (its descriptor 3); its pid, or -1 with why. */
+pid_t SpawnHelper(const std::string& helper, int socket, const std::vector<std::string>& arguments,
+  std::string& why)
+{
+  posix_spawn_file_actions_t actions;
+  posix_spawnattr_t attributes;
+  ::posix_spawn_file_actions_init(&actions);
+  ::posix_spawnattr_init(&attributes);
+  ::posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  ::posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  ::posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  ::posix_spawn_file_actions_adddup2(&actions, socket, 3); // (dup2 clears close-on-exec)
+  // Every signal's default action, none blocked (a host that ignores SIGXCPU or blocks SIGSEGV
+  // would pass that on), and a process group of its own (a terminal's Ctrl-C goes to the caller,
+  // which stops the read; the helper dies with it).
+  sigset_t all, none;
+  sigfillset(&all);
+  sigemptyset(&none);
+  ::posix_spawnattr_setsigdefault(&attributes, &all);
+  ::posix_spawnattr_setsigmask(&attributes, &none);
+  ::posix_spawnattr_setpgroup(&attributes, 0);
+  ::posix_spawnattr_setflags(&attributes,
+    static_cast<short>(POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP));
+  std::vector<std::string> args = arguments;
+  args.insert(args.begin(), helper);
+  std::vector<char*> argv;
+  for (std::string& a : args)
+  {
+    argv.push_back(&a[0]);
+  }
+  argv.push_back(nullptr);
+  std::vector<std::string> environment = HelperEnvironment();
+  std::vector<char*> envp;
+  for (std::string& e : environment)
+  {
+    envp.push_back(&e[0]);
+  }
+  envp.push_back(nullptr);
+  pid_t pid = -1;
+  const int error =
+    ::posix_spawn(&pid, helper.c_str(), &actions, &attributes, argv.data(), envp.data());
+  ::posix_spawn_file_actions_destroy(&actions);
+  ::posix_spawnattr_destroy(&attributes);
+  if (error != 0)
+  {
+    why = "cannot start the reading helper " + Quote(helper) + ": " + std::strerror(error);
+    return -1;
+  }
+  return pid;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
 ReadResult ReadIsolated(
-  const std::string& path, const std::function<ReadResult()>& read, const IsolationLimits& limits)
+  ReadContext& context, const std::string& path, int timeStep, const IsolationLimits& limits)
 {
   const std::string what = "cannot read " + Quote(path);
   ReadResult result;
+  std::string why;
+  const std::string helper = HelperPath(why);
+  if (helper.empty())
+  {
+    result.Error = what + ": " + why;
+    return result;
+  }
   int sockets[2];
   if (::socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, sockets) != 0)
   {
-    result.Error = what + ": cannot start the reading process: " + std::strerror(errno);
+    result.Error = what + ": cannot start the reading helper: " + std::strerror(errno);
     return result;
   }
-  const double dataBytes = StatusBytes("VmData");
-  const double residentLimit = ResidentBytes(::getpid()) + limits.MemoryMiB * MiB;
-  std::fflush(nullptr); // (the child must not print what the parent buffered)
-  const pid_t pid = ::fork();
+  // (the helper's end must not be descriptor 3 itself: dup2(3, 3) would keep close-on-exec)
+  if (sockets[1] == 3)
+  {
+    const int moved = ::fcntl(sockets[1], F_DUPFD_CLOEXEC, 4);
+    ::close(sockets[1]);
+    sockets[1] = moved;
+  }
+  char memory[64], seconds[64];
+  std::snprintf(memory, sizeof(memory), "%.17g", limits.MemoryMiB);
+  std::snprintf(seconds, sizeof(seconds), "%.17g", limits.Seconds);
+  const pid_t pid = sockets[1] < 0
+    ? -1
+    : SpawnHelper(helper, sockets[1],
+        { std::to_string(::getpid()), memory, seconds, std::to_string(timeStep), path }, why);
+  if (sockets[1] >= 0)
+  {
+    ::close(sockets[1]);
+  }
   if (pid < 0)
   {
-    result.Error = what + ": cannot start the reading process: " + std::strerror(errno);
     ::close(sockets[0]);
-    ::close(sockets[1]);
+    result.Error = what + ": " + (why.empty() ? "cannot start the reading helper" : why);
     return result;
   }
-  if (pid == 0)
-  {
-    ::close(sockets[0]);
-    RunChild(sockets[1], read, limits, dataBytes, what);
-  }
-  ::close(sockets[1]);
   Reception in;
-  Receive(sockets[0], pid, limits, residentLimit, in);
+  Receive(context, sockets[0], pid, limits, in);
   ::close(sockets[0]);
   if (!in.Done)
   {
     ::kill(pid, SIGKILL);
   }
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+  bool waited = true;
+  while (::waitpid(pid, &status, 0) < 0)
   {
+    if (errno != EINTR)
+    {
+      waited = false; // (a host that reaps every child itself: SIGCHLD ignored)
+      break;
+    }
   }
   result.Warnings = in.Warnings;
   if (!in.Killed.empty())
   {
     result.Error = what + ": it " + in.Killed;
   }
+  else if (!in.Started)
+  {
+    result.Error = what + ": the reading helper " + Quote(helper) + " did not start" +
+      (waited && WIFEXITED(status) ? " (exit status " + std::to_string(WEXITSTATUS(status)) + ")"
+          : waited && WIFSIGNALED(status) ? " (" + SignalText(WTERMSIG(status)) + ")"
+                                          : "");
+  }
   else if (!in.Done)
   {
-    result.Error = what + ": " + ChildFailure(status, limits);
+    result.Error =
+      what + ": " + (waited ? ChildFailure(status, limits) : "VTK's reader stopped on it");
   }
   else if (!in.Failure.empty())
   {
@@ -792,4 +743,5 @@ ReadResult ReadIsolated(
   }
   return result;
 }
+
 } // namespace vtkStylizeReaderInternal

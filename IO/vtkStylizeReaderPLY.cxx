@@ -158,7 +158,8 @@ bool HasPLYStrips(const std::string& path)
  * strips) and any faces (element "face"), as a polydata of triangles (vtkTriangleFilter). Indices
  * outside the vertices fail with one line.
  */
-vtkSmartPointer<vtkDataObject> ReadPLYStrips(const std::string& path, const std::string& what)
+vtkSmartPointer<vtkDataObject> ReadPLYStrips(
+  ReadContext& context, const std::string& path, const std::string& what)
 {
   int elementCount = 0;
   char** elementNames = nullptr;
@@ -250,9 +251,9 @@ vtkSmartPointer<vtkDataObject> ReadPLYStrips(const std::string& path, const std:
   triangles->SetInputData(surface);
   triangles->PassVertsOff();
   triangles->PassLinesOff();
-  ClearVTKErrors();
+  context.ClearVTKErrors();
   triangles->Update();
-  CheckVTKErrors(what + ": triangulating the strips failed");
+  context.CheckVTKErrors(what + ": triangulating the strips failed");
   vtkSmartPointer<vtkPolyData> result = vtkSmartPointer<vtkPolyData>::New();
   result->ShallowCopy(triangles->GetOutput());
   return result;

@@ -185,7 +185,7 @@ const char* LinearCellName(int type)
  * hexahedron of 20 points), keeps its first points, its corners, with a warning: VTK's and
  * ParaView's filters draw such a cell by its corners too.
  */
-void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
+void CheckCellTypes(ReadContext& context, vtkUnstructuredGrid* ug, const std::string& what)
 {
   vtkCellArray* cells = ug->GetCells();
   vtkUnsignedCharArray* types = ug->GetCellTypesArray();
@@ -261,7 +261,7 @@ void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
   {
     ug->SetCells(keptTypes, corners);
   }
-  Warn(what + ": " + std::to_string(static_cast<long long>(longCells)) +
+  context.Warn(what + ": " + std::to_string(static_cast<long long>(longCells)) +
     (longCells == 1 ? " cell lists" : " cells list") +
     " more points than a cell of its linear type has (cell " +
     std::to_string(static_cast<long long>(firstLong)) + ": a " + LinearCellName(type) + ", type " +
@@ -276,7 +276,7 @@ void CheckCellTypes(vtkUnstructuredGrid* ug, const std::string& what)
  * file whose lists were shifted (a PLY face that lists 0 vertices), and VTK's filters read
  * outside the connectivity for them (vtkPolyDataNormals crashed in vtkCellLinks::BuildLinks).
  */
-void DropDegenerateCells(vtkPolyData* pd, const std::string& what)
+void DropDegenerateCells(ReadContext& context, vtkPolyData* pd, const std::string& what)
 {
   vtkCellArray* arrays[4] = { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() };
   const vtkIdType minimum[4] = { 1, 2, 3, 3 };
@@ -340,7 +340,7 @@ void DropDegenerateCells(vtkPolyData* pd, const std::string& what)
     }
   }
   pd->GetCellData()->ShallowCopy(kept);
-  Warn(what + ": " + std::to_string(static_cast<long long>(dropped)) + " cell" +
+  context.Warn(what + ": " + std::to_string(static_cast<long long>(dropped)) + " cell" +
     (dropped == 1 ? " has" : "s have") + " fewer points than a cell of " +
     (dropped == 1 ? "its" : "their") + " kind needs (cell " +
     std::to_string(static_cast<long long>(first)) + " lists " +
@@ -378,7 +378,7 @@ bool AllFinite(vtkDataArray* array)
 } // namespace
 
 //------------------------------------------------------------------------------
-void ValidateDataSet(vtkDataSet* ds, const std::string& what)
+void ValidateDataSet(ReadContext& context, vtkDataSet* ds, const std::string& what)
 {
   const vtkIdType n = ds->GetNumberOfPoints();
   if (auto* pd = vtkPolyData::SafeDownCast(ds))
@@ -387,12 +387,12 @@ void ValidateDataSet(vtkDataSet* ds, const std::string& what)
     CheckCells(pd->GetLines(), n, what);
     CheckCells(pd->GetPolys(), n, what);
     CheckCells(pd->GetStrips(), n, what);
-    DropDegenerateCells(pd, what);
+    DropDegenerateCells(context, pd, what);
   }
   else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds))
   {
     CheckCells(ug->GetCells(), n, what);
-    CheckCellTypes(ug, what);
+    CheckCellTypes(context, ug, what);
   }
   else if (auto* image = vtkImageData::SafeDownCast(ds))
   {
@@ -486,7 +486,8 @@ void ValidateDataSet(vtkDataSet* ds, const std::string& what)
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkDataSet> WithoutNonFinitePoints(vtkDataSet* ds, const std::string& what)
+vtkSmartPointer<vtkDataSet> WithoutNonFinitePoints(
+  ReadContext& context, vtkDataSet* ds, const std::string& what)
 {
   auto* ps = vtkPointSet::SafeDownCast(ds);
   vtkDataArray* coordinates = ps && ps->GetPoints() ? ps->GetPoints()->GetData() : nullptr;
@@ -579,7 +580,7 @@ vtkSmartPointer<vtkDataSet> WithoutNonFinitePoints(vtkDataSet* ds, const std::st
     kept = extract->GetOutput();
   }
   const vtkIdType dropped = cells - keep->GetNumberOfIds();
-  Warn(what + ": " + std::to_string(static_cast<long long>(badPoints)) + " of " +
+  context.Warn(what + ": " + std::to_string(static_cast<long long>(badPoints)) + " of " +
     std::to_string(static_cast<long long>(n)) + " points " + (badPoints == 1 ? "has" : "have") +
     " coordinates that are not finite (NaN or infinity): " + (badPoints == 1 ? "it" : "they") +
     " and the " + std::to_string(static_cast<long long>(dropped)) + " cell" +
@@ -588,7 +589,7 @@ vtkSmartPointer<vtkDataSet> WithoutNonFinitePoints(vtkDataSet* ds, const std::st
 }
 
 //------------------------------------------------------------------------------
-void ValidateBlocks(vtkDataObject* data, const std::string& what)
+void ValidateBlocks(ReadContext& context, vtkDataObject* data, const std::string& what)
 {
   auto* composite = vtkCompositeDataSet::SafeDownCast(data);
   if (!composite)
@@ -604,8 +605,8 @@ void ValidateBlocks(vtkDataObject* data, const std::string& what)
         return; // (not a dataset: the caller decides what to do with it)
       }
       const std::string leafWhat = what + " (block " + Quote(name) + ")";
-      vtkSmartPointer<vtkDataSet> kept = WithoutNonFinitePoints(ds, leafWhat);
-      ValidateDataSet(kept, leafWhat);
+      vtkSmartPointer<vtkDataSet> kept = WithoutNonFinitePoints(context, ds, leafWhat);
+      ValidateDataSet(context, kept, leafWhat);
       if (kept.GetPointer() != ds)
       {
         composite->SetDataSet(it, kept);

@@ -76,7 +76,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   try
   {
-    vtkStylizeReaderInternal::ValidateDataSet(ds, "'fuzz'");
+    vtkStylizeReaderInternal::ReadContext context;
+    vtkStylizeReaderInternal::ValidateDataSet(context, ds, "'fuzz'");
   }
   catch (const vtkStylizeReaderInternal::ReadFailure&)
   {
