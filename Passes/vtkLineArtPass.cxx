@@ -122,11 +122,10 @@ vtkPolyData* vtkLineArtPass::ComputeFigureStrokes(int width, int height, int til
   view.ViewportSize[0] = view.Size[0];
   view.ViewportSize[1] = view.Size[1];
   view.PointSize = this->GetPixelsPerPoint(view.Size[1], tiles);
-  if (view.Renderer)
-  {
-    // the frame's strokes replaced: the lines of the same camera are kept per surface
-    this->Internal->Strokes->Build(view, StrokeSettings(this), nullptr);
-  }
+  // the frame's strokes replaced: the lines of the same camera are kept per surface (on several
+  // processes, collective: the whole data's lines on process 0)
+  this->Internal->Strokes->BuildFigure(
+    view, StrokeSettings(this), this->GetGBufferPass()->GetController());
   return this->Internal->Strokes->GetStrokes();
 }
 

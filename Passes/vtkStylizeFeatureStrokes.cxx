@@ -1,9 +1,11 @@
 #include "vtkStylizeFeatureStrokes.h"
 
 #include "vtkActor.h"
+#include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCleanPolyData.h"
 #include "vtkCommunicator.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
@@ -213,17 +215,51 @@ std::vector<vtkActor*> LineActors(vtkRenderer* ren)
   return actors;
 }
 
-/** The datasets of the actors. */
-std::vector<Item> SurfacesOf(const std::vector<vtkActor*>& actors)
+/** The datasets of the actors (or those that replace them: View::Surfaces). */
+std::vector<Item> SurfacesOf(
+  const std::vector<vtkActor*>& actors, const vtkStylizeFeatureStrokes::View& view)
 {
   std::vector<Item> items;
   for (size_t a = 0; a < actors.size(); ++a)
   {
     vtkActor* actor = actors[a];
-    AddSurface(actor->GetMapper()->GetInputDataObject(0, 0), actor->GetMatrix(),
-      actor->GetProperty()->GetRepresentation() == VTK_WIREFRAME, a, items);
+    vtkDataObject* data = a < view.Surfaces.size() && view.Surfaces[a]
+      ? view.Surfaces[a].GetPointer()
+      : actor->GetMapper()->GetInputDataObject(0, 0);
+    AddSurface(data, actor->GetMatrix(), actor->GetProperty()->GetRepresentation() == VTK_WIREFRAME,
+      a, items);
   }
   return items;
+}
+
+/** The polygonal data of an actor's input (every leaf of a composite), ghost cells left out. */
+vtkSmartPointer<vtkPolyData> PolygonsOf(vtkDataObject* data)
+{
+  std::vector<Item> leaves;
+  AddSurface(data, nullptr, false, 0, leaves);
+  vtkNew<vtkAppendPolyData> append;
+  for (const Item& leaf : leaves)
+  {
+    vtkSmartPointer<vtkPolyData> pd = vtkPolyData::SafeDownCast(leaf.Data);
+    if (!pd)
+    {
+      vtkNew<vtkDataSetSurfaceFilter> surface;
+      surface->SetInputData(leaf.Data);
+      surface->Update();
+      pd = surface->GetOutput();
+    }
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->ShallowCopy(pd);
+    copy->RemoveGhostCells();
+    append->AddInputData(copy);
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  if (!leaves.empty())
+  {
+    append->Update();
+    out->ShallowCopy(append->GetOutput());
+  }
+  return out;
 }
 
 /**
@@ -522,7 +558,7 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
   const int mask = KindMask(settings, view.Interactive);
   vtkCamera* camera = view.Renderer ? view.Renderer->GetActiveCamera() : nullptr;
   const std::vector<Item> items =
-    camera && mask ? SurfacesOf(LineActors(view.Renderer)) : std::vector<Item>();
+    camera && mask ? SurfacesOf(LineActors(view.Renderer), view) : std::vector<Item>();
   if (linearDepth)
   {
     in.Depth->SetDimensions(in.Size[0], in.Size[1], 1);
@@ -589,6 +625,80 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
   }
   in.Depth->GetPointData()->SetScalars(nullptr);
   return sink.Finish(in.Strokes);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkStylizeFeatureStrokes::BuildFigure(
+  const View& view, const Settings& settings, vtkMultiProcessController* c)
+{
+  if (!c || c->GetNumberOfProcesses() < 2)
+  {
+    return this->Build(view, settings, nullptr);
+  }
+  // Every process shows the same actors (ParaView's representations), each its own pieces.
+  const std::vector<vtkActor*> actors =
+    view.Renderer ? LineActors(view.Renderer) : std::vector<vtkActor*>();
+  const int count = static_cast<int>(actors.size());
+  int least = count, most = count;
+  c->AllReduce(&count, &least, 1, vtkCommunicator::MIN_OP);
+  c->AllReduce(&count, &most, 1, vtkCommunicator::MAX_OP);
+  if (least != most)
+  {
+    vtkWarningMacro("the processes show different actors: the figure's lines are process 0's");
+    return c->GetLocalProcessId() == 0 ? this->Build(view, settings, nullptr)
+                                       : (this->Internal->Strokes->Initialize(), 0);
+  }
+  constexpr int tag = 95317;
+  const int rank = c->GetLocalProcessId();
+  std::vector<vtkSmartPointer<vtkPolyData>> local;
+  for (vtkActor* actor : actors)
+  {
+    local.push_back(PolygonsOf(actor->GetMapper()->GetInputDataObject(0, 0)));
+  }
+  if (rank != 0)
+  {
+    for (const auto& piece : local)
+    {
+      c->Send(piece, 0, tag);
+    }
+    this->Internal->Strokes->Initialize();
+    return 0;
+  }
+  View whole = view;
+  whole.Surfaces.assign(actors.size(), nullptr);
+  for (size_t a = 0; a < actors.size(); ++a)
+  {
+    vtkNew<vtkAppendPolyData> append;
+    append->AddInputData(local[a]);
+    for (int r = 1; r < c->GetNumberOfProcesses(); ++r)
+    {
+      auto piece = vtkSmartPointer<vtkPolyData>::New();
+      c->Receive(piece, r, tag);
+      append->AddInputData(piece);
+    }
+    // (the points the pieces share at a cut are copies with the same coordinates: merged, the
+    // cut is no boundary)
+    vtkNew<vtkCleanPolyData> merge;
+    merge->SetInputConnection(append->GetOutputPort());
+    merge->SetTolerance(0.0);
+    merge->ConvertLinesToPointsOff();
+    merge->ConvertPolysToLinesOff();
+    merge->ConvertStripsToPolysOff();
+    merge->Update();
+    auto joined = vtkSmartPointer<vtkPolyData>::New();
+    joined->ShallowCopy(merge->GetOutput());
+    whole.Surfaces[a] = joined;
+  }
+  // (the Surfaces are the whole data: their own bounds are the objects')
+  whole.ObjectBounds.clear();
+  const vtkIdType strokes = this->Build(whole, settings, nullptr);
+  // The joined surfaces are this figure's only: the frames' cache keeps the pieces.
+  for (const auto& surface : whole.Surfaces)
+  {
+    this->Internal->Cache.erase({ surface.GetPointer(), false });
+    this->Internal->Cache.erase({ surface.GetPointer(), true });
+  }
+  return strokes;
 }
 
 //------------------------------------------------------------------------------

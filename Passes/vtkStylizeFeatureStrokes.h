@@ -27,6 +27,7 @@
 #define vtkStylizeFeatureStrokes_h
 
 #include "vtkObject.h"
+#include "vtkSmartPointer.h"        // for vtkSmartPointer
 #include "vtkStylizePassesModule.h" // for export macro
 #include "vtkStylizeStylePass.h"    // for vtkStylizeStylePass::Frame
 
@@ -34,7 +35,9 @@
 #include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
 
+class vtkDataSet;
 class vtkFloatArray;
+class vtkMultiProcessController;
 class vtkOpenGLRenderWindow;
 class vtkPolyData;
 class vtkRenderer;
@@ -108,6 +111,12 @@ public:
      * (the default): each dataset's own.
      */
     std::vector<std::array<double, 6>> ObjectBounds;
+    /**
+     * Per actor (in the same order): the data whose lines are drawn in its place, null for the
+     * actor's own; empty (the default): every actor's own (BuildFigure() gives the whole data
+     * gathered from several processes).
+     */
+    std::vector<vtkSmartPointer<vtkDataSet>> Surfaces;
   };
 
   /**
@@ -117,6 +126,17 @@ public:
    * of strokes.
    */
   vtkIdType Build(const View& view, const Settings& settings, vtkFloatArray* linearDepth);
+
+  /**
+   * Build() for a vector figure: visibility by ray casting. Over several processes (controller
+   * with more than one), each holding pieces of the actors' data, the pieces go to process 0,
+   * which joins each actor's pieces into one surface (ghost cells left out, the points two pieces
+   * share merged, so that no line is drawn along the cuts) and finds the lines of the whole
+   * scene against all of it; the other processes are left with no strokes. Collective: every
+   * process calls it. Returns the number of strokes.
+   */
+  vtkIdType BuildFigure(
+    const View& view, const Settings& settings, vtkMultiProcessController* controller);
 
   /**
    * Build() for a style's frame: the lines against the style's G-buffer (its linear depth,

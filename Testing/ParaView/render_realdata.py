@@ -2,7 +2,8 @@
 
     mpiexec -n N pvbatch-stylize render_realdata.py OUTPUT_PREFIX DATA_DIR
 
-Two datasets of the real-data set, each through ParaView's Redistribute DataSet filter so that on
+Two datasets of the real-data set (the bunny read by the plugin's Stylize Checked Reader), each
+through ParaView's Redistribute DataSet filter so that on
 several ranks every rank holds part of it (the script prints "pieces NAME K": how many ranks hold
 part of NAME):
   bunny   the Stanford bunny scan (PLY, a scanned triangle mesh)
@@ -10,14 +11,16 @@ part of NAME):
 (Extract Surface after the split, as a ParaView user would show them.)
 For each dataset and style it writes OUTPUT_PREFIX-<dataset>-<style>.png (none, comic, pixel,
 sketch), and for the bunny also -bunny-sketch-model.png: the sketch along the Principal
-Curvatures filter's directions (Direction Source Model), the filter run on each rank's piece.
+Curvatures filter's directions (Direction Source Model), the filter run on each rank's piece,
+and -bunny-lines.svg: the line art's vector figure (SaveStylizedFigure) of the split bunny.
 """
 import sys
 
 import paraview.simple as simple
-from paraview.simple import (CreateView, Delete, ExtractSurface, Hide, IOSSReader, PLYReader,
-                             Render, SaveScreenshot, Show)
+from paraview.simple import (CreateView, Delete, ExtractSurface, Hide, IOSSReader, Render,
+                             SaveScreenshot, Show)
 from stylize_pv_scene import make_view
+import stylize_paraview as stylize
 
 prefix, data = sys.argv[1], sys.argv[2]
 SIZE = [360, 300]
@@ -62,7 +65,10 @@ def shots(source, name, direction, up):
 
 # (the redistributed pieces are unstructured grids: Extract Surface makes them polygonal data again,
 # which the Principal Curvatures filter takes)
-bunny = ExtractSurface(Input=split(PLYReader(FileNames=[data + "/bunny.ply"]), "bunny"))
+# (the bunny through the plugin's checked reader: its helper reads on the rank that needs the
+# data, which test_ranks.py counts)
+bunny = ExtractSurface(Input=split(simple.StylizeCheckedReader(FileName=data + "/bunny.ply"),
+                                   "bunny"))
 shots(bunny, "bunny", [0.0, 0.0, 1.0], [0.0, 1.0, 0.0])
 # the sketch along the scan's principal directions, computed per rank on its piece
 curvatures = simple.PrincipalCurvatures(Input=bunny)
@@ -76,6 +82,19 @@ SaveScreenshot("%s-bunny-sketch-model.png" % prefix, view, ImageResolution=SIZE)
 view.SketchDirectionSource = 0
 view.Style = 0
 Hide(curvatures, view)
+
+# the line art's vector figure of the split bunny (every rank's lines, no line along the cut)
+display = Show(bunny, view)
+display.ColorArrayName = ["POINTS", ""]
+frame([0.0, 0.0, 1.0], [0.0, 1.0, 0.0])
+view.Style = "Line art"
+background = list(view.Background)
+view.Background = [1.0, 1.0, 1.0]  # (white paper: the lines are the figure's dark pixels)
+Render(view)
+stylize.SaveStylizedFigure("%s-bunny-lines.svg" % prefix, view)
+view.Background = background
+view.Style = 0
+Hide(bunny, view)
 
 reader = IOSSReader(FileName=[data + "/vessel.ex2"])
 # smooth point normals, as a user gives a curved simulation surface (Generate Surface Normals),
