@@ -11,7 +11,14 @@
 # 3. The leak stage: the program refusing broken input (the tests labelled leaks: cli.bad.*, where
 #    no OpenGL context opens) with LeakSanitizer; Testing/Sanitizers/lsan.supp suppresses leaks
 #    inside libraries the project cannot fix.
-# 4. The libFuzzer targets (Testing/Fuzz, built with clang in build-fuzz) fuzz the format checks,
+# 4. ThreadSanitizer (build-tsan: VTKSTYLIZE_SANITIZE_THREAD, only the targets it runs): the
+#    multithreaded code, the feature-line, hidden-line and curvature filters' tests and the
+#    reader's caller side in a busy multithreaded host (reader.threaded_host), with vtkSMPTools on
+#    its STDThread backend, whose pool synchronises through pthread calls the sanitizer sees. Not
+#    on TBB: Debian's libtbb is not instrumented, so the sanitizer cannot see a task's start and
+#    end as synchronisation and reports every handed-over value (in TBB's own headers too), and
+#    TBB's source, to build it instrumented, is not among what CI can reach. No suppression.
+# 5. The libFuzzer targets (Testing/Fuzz, built with clang in build-fuzz) fuzz the format checks,
 #    the isolated reader and the validation of what a reader gave, at once, from a copy of the
 #    committed seed corpus, for STYLIZE_FUZZ_SECONDS (default 60) of one core each. A crash, a
 #    hang, a leak or a sanitizer report fails the stage and leaves the input in
@@ -47,6 +54,22 @@ stylize_stage "sanitizer suite" ctest --output-on-failure -j "$STYLIZE_JOBS" --t
 echo "== leaks: vtkstylize refusing broken input (no window opens)"
 ASAN_OPTIONS="${ASAN_OPTIONS}:detect_leaks=1" \
   stylize_stage leaks ctest --output-on-failure -j "$STYLIZE_JOBS" --timeout 1200 -L '^leaks$'
+
+tsan_build="${STYLIZE_TSAN_BUILD:-$STYLIZE_ROOT/build-tsan}"
+thread_build() {
+  echo "== configuring and building with ThreadSanitizer in $tsan_build"
+  cmake -S "$STYLIZE_ROOT" -B "$tsan_build" -DCMAKE_BUILD_TYPE=Release \
+    -DVTKSTYLIZE_SANITIZE_THREAD=ON -DVTKSTYLIZE_PARAVIEW_PLUGIN=OFF -DVTKSTYLIZE_WRAP_PYTHON=OFF \
+    -DVTKSTYLIZE_BUILD_BENCHMARK=OFF >/dev/null || return
+  cmake --build "$tsan_build" -j "$STYLIZE_JOBS" --target vtkStylizeFiltersCxxTests \
+    vtkStylizeIOCxxTests vtkstylize-read vtkStylizeCliMakeData
+}
+stylize_stage "thread build" thread_build
+echo "== ThreadSanitizer: the filters and the reader's caller side, vtkSMPTools on STDThread"
+stylize_stage "thread suite" env VTK_SMP_BACKEND_IN_USE=STDThread \
+  TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:${TSAN_OPTIONS:-}" \
+  ctest --test-dir "$tsan_build" --output-on-failure -j 1 --timeout 1200 \
+    -R '^(curvature.analytic|lines.analytic|lines.visibility_input|reader.threaded_host)$'
 
 fuzz_build="$STYLIZE_ROOT/build-fuzz"
 fuzz_configure_and_build() {

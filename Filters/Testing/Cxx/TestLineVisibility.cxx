@@ -10,13 +10,18 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
+
+#include <string>
+#include <vector>
 
 using namespace stylizetest;
 
@@ -64,7 +69,8 @@ struct Errors
 };
 
 /** Runs the filter on `lines` against `depth`; returns the errors it reported. */
-int Run(vtkPolyData* lines, vtkImageData* depth, vtkIdType& outputLines)
+int Run(vtkPolyData* lines, vtkImageData* depth, vtkIdType& outputLines,
+  std::vector<double>* outputKinds = nullptr)
 {
   vtkNew<vtkCamera> camera;
   vtkNew<vtkStylizeLineVisibility> vis;
@@ -80,6 +86,11 @@ int Run(vtkPolyData* lines, vtkImageData* depth, vtkIdType& outputLines)
   vis->SetDepthImage(depth);
   vis->Update();
   outputLines = vis->GetOutput()->GetNumberOfLines();
+  vtkDataArray* kinds = vis->GetOutput()->GetCellData()->GetArray("FeatureKind");
+  for (vtkIdType c = 0; outputKinds && kinds && c < kinds->GetNumberOfTuples(); ++c)
+  {
+    outputKinds->push_back(kinds->GetComponent(c, 0));
+  }
   return errors.Count;
 }
 }
@@ -111,5 +122,38 @@ int TestLineVisibility(int, char*[])
     static_cast<long long>(n));
   STYLIZE_CHECK(errors == 0 && n == 3, "short FeatureKind: %d errors, %lld lines", errors,
     static_cast<long long>(n));
+
+  // Many lines of every kind, traced by vtkSMPTools' threads: the same lines and kinds as one
+  // thread gives (the threads read the kinds from a copy made before them; under
+  // ThreadSanitizer, scripts/test-sanitizers.sh, this is the filter's threaded path).
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkUnsignedCharArray> manyKinds;
+  manyKinds->SetName("FeatureKind");
+  for (int i = 0; i < 4000; ++i)
+  {
+    const double x = -0.3 + 0.6 * (i % 80) / 80.0, y = -0.2 + 0.4 * (i / 80) / 50.0;
+    const vtkIdType ids[2] = { points->InsertNextPoint(x, y, 0.0),
+      points->InsertNextPoint(x + 0.005, y + 0.003, 0.0) };
+    cells->InsertNextCell(2, ids);
+    manyKinds->InsertNextValue(static_cast<unsigned char>(i % 6));
+  }
+  auto many = vtkSmartPointer<vtkPolyData>::New();
+  many->SetPoints(points);
+  many->SetLines(cells);
+  many->GetCellData()->AddArray(manyKinds);
+  const std::string backend = vtkSMPTools::GetBackend();
+  vtkIdType threaded = 0, sequential = 0;
+  std::vector<double> threadedKinds, sequentialKinds;
+  errors = Run(many, DepthImage(W * H), threaded, &threadedKinds);
+  vtkSMPTools::SetBackend("Sequential");
+  errors += Run(many, DepthImage(W * H), sequential, &sequentialKinds);
+  vtkSMPTools::SetBackend(backend.c_str());
+  std::printf("4000 lines of 6 kinds: %lld lines on %s, %lld on one thread\n",
+    static_cast<long long>(threaded), backend.c_str(), static_cast<long long>(sequential));
+  STYLIZE_CHECK(errors == 0 && threaded == sequential && threaded > 0 &&
+      threadedKinds == sequentialKinds && threadedKinds.size() == 4000,
+    "4000 lines: %lld threaded, %lld sequential, %d errors", static_cast<long long>(threaded),
+    static_cast<long long>(sequential), errors);
   return Failures == 0 ? 0 : 1;
 }
