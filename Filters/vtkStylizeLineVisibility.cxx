@@ -1,5 +1,6 @@
 #include "vtkStylizeLineVisibility.h"
 
+#include "vtkAbstractCellLocator.h"
 #include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -37,6 +38,7 @@ struct vtkStylizeLineVisibility::Internals
     vtkSmartPointer<vtkMatrix4x4> Matrix;
   };
   std::vector<Occluder> Occluders;
+  std::vector<vtkSmartPointer<vtkAbstractCellLocator>> Locators; // (built, shared)
 };
 
 namespace
@@ -256,18 +258,16 @@ public:
   /** An occluder, in world coordinates through its matrix (may be null). */
   void AddOccluder(vtkPolyData* surface, vtkMatrix4x4* matrix)
   {
-    vtkSmartPointer<vtkPolyData> world = surface;
-    if (matrix)
-    {
-      vtkNew<vtkTransform> t;
-      t->SetMatrix(matrix);
-      vtkNew<vtkTransformPolyDataFilter> f;
-      f->SetInputData(surface);
-      f->SetTransform(t);
-      f->Update();
-      world = f->GetOutput();
-    }
-    const vtkIdType cells = world->GetNumberOfCells();
+    vtkSmartPointer<vtkAbstractCellLocator> locator;
+    locator.TakeReference(vtkStylizeLineVisibility::NewOccluderLocator(surface, matrix));
+    this->AddLocator(locator);
+  }
+
+  /** An occluder's built locator (world coordinates), shared with its other users. */
+  void AddLocator(vtkAbstractCellLocator* locator)
+  {
+    auto* world = locator ? vtkPolyData::SafeDownCast(locator->GetDataSet()) : nullptr;
+    const vtkIdType cells = world ? world->GetNumberOfCells() : 0;
     if (cells == 0)
     {
       return;
@@ -288,9 +288,6 @@ public:
         ++this->EdgeCount;
       }
     }
-    auto locator = vtkSmartPointer<vtkModifiedBSPTree>::New();
-    locator->SetDataSet(world);
-    locator->BuildLocator();
     this->Locators.push_back(locator);
   }
 
@@ -340,7 +337,7 @@ public:
 
 private:
   const Tester& View;
-  std::vector<vtkSmartPointer<vtkModifiedBSPTree>> Locators;
+  std::vector<vtkSmartPointer<vtkAbstractCellLocator>> Locators;
   vtkBoundingBox Box;
   double EdgeSum = 0.0;
   vtkIdType EdgeCount = 0;
@@ -570,9 +567,48 @@ void vtkStylizeLineVisibility::AddOccluder(vtkPolyData* surface, vtkMatrix4x4* m
 }
 
 //------------------------------------------------------------------------------
+void vtkStylizeLineVisibility::AddOccluderLocator(vtkAbstractCellLocator* locator)
+{
+  if (locator)
+  {
+    this->Internal->Locators.push_back(locator);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkAbstractCellLocator* vtkStylizeLineVisibility::NewOccluderLocator(
+  vtkPolyData* surface, vtkMatrix4x4* matrix)
+{
+  vtkSmartPointer<vtkPolyData> world = surface;
+  if (surface && matrix)
+  {
+    vtkNew<vtkTransform> t;
+    t->SetMatrix(matrix);
+    vtkNew<vtkTransformPolyDataFilter> f;
+    f->SetInputData(surface);
+    f->SetTransform(t);
+    f->Update();
+    world = f->GetOutput();
+  }
+  if (!world)
+  {
+    world = vtkSmartPointer<vtkPolyData>::New();
+  }
+  vtkModifiedBSPTree* locator = vtkModifiedBSPTree::New();
+  locator->SetDataSet(world);
+  if (world->GetNumberOfCells() > 0)
+  {
+    locator->BuildLocator();
+  }
+  return locator;
+}
+
+//------------------------------------------------------------------------------
 void vtkStylizeLineVisibility::RemoveAllOccluders()
 {
   this->Internal->Occluders.clear();
+  this->Internal->Locators.clear();
   this->Modified();
 }
 
@@ -641,6 +677,10 @@ int vtkStylizeLineVisibility::RequestData(
     for (const auto& o : this->Internal->Occluders)
     {
       rays.AddOccluder(o.Surface, o.Matrix);
+    }
+    for (const auto& locator : this->Internal->Locators)
+    {
+      rays.AddLocator(locator);
     }
   }
   // Lines without a FeatureKind count as contours (the WorldTolerance applies to them). Read
@@ -733,7 +773,8 @@ void vtkStylizeLineVisibility::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthKind: " << (this->DepthKind == VIEW_DEPTH ? "view" : "window") << "\n";
   os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";
   os << indent << "ImageOffset: " << this->ImageOffset[0] << " " << this->ImageOffset[1] << "\n";
-  os << indent << "Occluders: " << this->Internal->Occluders.size() << "\n";
+  os << indent << "Occluders: " << this->Internal->Occluders.size() << " surfaces, "
+     << this->Internal->Locators.size() << " shared locators\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "DepthTolerance: " << this->DepthTolerance << "\n";
   os << indent << "WorldTolerance: " << this->WorldTolerance << "\n";

@@ -31,6 +31,7 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkAbstractCellLocator;
 class vtkImageData;
 class vtkMatrix4x4;
 class vtkPolyData;
@@ -102,10 +103,28 @@ public:
   ///@}
 
   ///@{
-  /** Surfaces that hide lines for RAY_CAST, each with its model matrix (may be null). */
+  /**
+   * Surfaces that hide lines for RAY_CAST, each with its model matrix (may be null): a cell
+   * locator is built over each at every update. RemoveAllOccluders() also forgets the locators
+   * of AddOccluderLocator().
+   */
   void AddOccluder(vtkPolyData* surface, vtkMatrix4x4* matrix);
   void RemoveAllOccluders();
   ///@}
+
+  /**
+   * A surface that hides lines for RAY_CAST, as a built cell locator over it in world
+   * coordinates (its data set a vtkPolyData; NewOccluderLocator() makes one). The filter only
+   * queries it: one locator serves the filters of every surface of a scene, built once rather
+   * than once per filter.
+   */
+  void AddOccluderLocator(vtkAbstractCellLocator* locator);
+
+  /**
+   * A built locator (a vtkModifiedBSPTree) over surface in world coordinates, through matrix
+   * (may be null), for AddOccluderLocator(). The caller owns the reference.
+   */
+  static vtkAbstractCellLocator* NewOccluderLocator(vtkPolyData* surface, vtkMatrix4x4* matrix);
 
   ///@{
   /** Distance between samples, in pixels. Range [0.01, 100], default 0.25. */

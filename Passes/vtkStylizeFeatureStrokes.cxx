@@ -1,5 +1,6 @@
 #include "vtkStylizeFeatureStrokes.h"
 
+#include "vtkAbstractCellLocator.h"
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
@@ -579,6 +580,18 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
     }
     s->Seen = true;
   }
+  // Ray casting: one locator per occluding surface, built once and queried by every surface's
+  // visibility (a locator per pair of surfaces was quadratic in their number).
+  std::vector<vtkSmartPointer<vtkAbstractCellLocator>> occluders;
+  for (const Item& other : linearDepth ? std::vector<Item>() : items)
+  {
+    if (!other.Wireframe)
+    {
+      occluders.emplace_back();
+      occluders.back().TakeReference(vtkStylizeLineVisibility::NewOccluderLocator(
+        in.Cache[{ other.Data, other.Wireframe }]->SurfaceOf(), other.Matrix));
+    }
+  }
   for (const Item& item : items)
   {
     Surface& s = *in.Cache[{ item.Data, item.Wireframe }];
@@ -597,16 +610,9 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
     fl->SetObjectBounds(
       item.Actor < view.ObjectBounds.size() ? view.ObjectBounds[item.Actor].data() : invalid);
     SetVisibility(s, item.Matrix, view, in.Size, linearDepth ? in.Depth.GetPointer() : nullptr);
-    if (!linearDepth)
+    for (const auto& locator : occluders)
     {
-      for (const Item& other : items)
-      {
-        if (!other.Wireframe)
-        {
-          s.Visibility->AddOccluder(
-            in.Cache[{ other.Data, other.Wireframe }]->SurfaceOf(), other.Matrix);
-        }
-      }
+      s.Visibility->AddOccluderLocator(locator);
     }
     s.Visibility->Update();
     sink.Append(s.Visibility->GetOutput(), item.Matrix);
