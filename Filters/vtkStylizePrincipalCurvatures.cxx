@@ -1,4 +1,7 @@
 #include "vtkStylizePrincipalCurvatures.h"
+
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
 #include "vtkStylizeMeshGeometry.h"
 
 #include "vtkCellArray.h"
@@ -537,56 +540,88 @@ std::vector<std::array<double, 3>> vtkStylizePrincipalCurvatures::SmoothTensors(
   const double radius2 = radius * radius;
   const size_t most = static_cast<size_t>(this->MaximumNeighbors);
   std::vector<std::array<double, 3>> out(tensor);
-  std::vector<size_t> stamp(np, np);
-  std::vector<size_t> queue;
-  for (size_t i = 0; i < np; ++i)
+  // Each point's sum is its own (out[i] alone is written): the points are shared among
+  // vtkSMPTools' threads, each with its own visit stamps and queue, and the result does not
+  // depend on the thread count.
+  struct Scratch
   {
-    if (!(area[i] > 0.0))
+    std::vector<size_t> Stamp;
+    std::vector<size_t> Queue;
+  };
+  vtkSMPThreadLocal<Scratch> scratch;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(np), 1024,
+    [&](vtkIdType first, vtkIdType last)
     {
-      continue;
-    }
-    double sum[3] = { 0, 0, 0 };
-    double wsum = 0.0;
-    queue.assign(1, i);
-    stamp[i] = i;
-    // Breadth first through the edges, within the radius, up to MaximumNeighbors points.
-    for (size_t head = 0; head < queue.size() && head < most; ++head)
-    {
-      const size_t j = queue[head];
-      const Vec dj = Sub(p[j], p[i]);
-      if (area[j] > 0.0 && Dot(normal[j], normal[i]) > -0.999999)
+      Scratch& local = scratch.Local();
+      if (local.Stamp.size() != np)
       {
-        // j's frame turned onto i's tangent plane, then j's tensor in i's frame.
-        const Vec u = Rotate(normal[j], normal[i], frameU[j]);
-        const Vec v = Rotate(normal[j], normal[i], frameV[j]);
-        const double a = Dot(frameU[i], u), b = Dot(frameU[i], v);
-        const double c = Dot(frameV[i], u), d = Dot(frameV[i], v);
-        const double A = tensor[j][0], B = tensor[j][1], C = tensor[j][2];
-        const double w = area[j] * std::exp(-0.5 * Dot(dj, dj) / sigma2);
-        sum[0] += w * (A * a * a + 2.0 * B * a * b + C * b * b);
-        sum[1] += w * (A * a * c + B * (a * d + b * c) + C * b * d);
-        sum[2] += w * (A * c * c + 2.0 * B * c * d + C * d * d);
-        wsum += w;
+        local.Stamp.assign(np, np);
       }
-      for (size_t e = start[j]; e < start[j + 1]; ++e)
+      std::vector<size_t>& stamp = local.Stamp;
+      std::vector<size_t>& queue = local.Queue;
+      for (size_t i = static_cast<size_t>(first); i < static_cast<size_t>(last); ++i)
       {
-        const size_t k = static_cast<size_t>(edges[e].second);
-        if (stamp[k] == i)
-        {
-          continue;
-        }
-        stamp[k] = i;
-        const Vec dk = Sub(p[k], p[i]);
-        if (Dot(dk, dk) <= radius2)
-        {
-          queue.push_back(k);
-        }
+        this->SmoothPoint(i, p, normal, frameU, frameV, tensor, area, edges, start, radius2, sigma2,
+          most, stamp, queue, out[i]);
       }
-    }
-    if (wsum > 0.0 && std::isfinite(sum[0] + sum[1] + sum[2]))
+    });
+  return out;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizePrincipalCurvatures::SmoothPoint(size_t i,
+  const std::vector<std::array<double, 3>>& p, const std::vector<std::array<double, 3>>& normal,
+  const std::vector<std::array<double, 3>>& frameU,
+  const std::vector<std::array<double, 3>>& frameV,
+  const std::vector<std::array<double, 3>>& tensor, const std::vector<double>& area,
+  const std::vector<std::pair<vtkIdType, vtkIdType>>& edges, const std::vector<size_t>& start,
+  double radius2, double sigma2, size_t most, std::vector<size_t>& stamp,
+  std::vector<size_t>& queue, std::array<double, 3>& out) const
+{
+  if (!(area[i] > 0.0))
+  {
+    return;
+  }
+  double sum[3] = { 0, 0, 0 };
+  double wsum = 0.0;
+  queue.assign(1, i);
+  stamp[i] = i;
+  // Breadth first through the edges, within the radius, up to MaximumNeighbors points.
+  for (size_t head = 0; head < queue.size() && head < most; ++head)
+  {
+    const size_t j = queue[head];
+    const Vec dj = Sub(p[j], p[i]);
+    if (area[j] > 0.0 && Dot(normal[j], normal[i]) > -0.999999)
     {
-      out[i] = { sum[0] / wsum, sum[1] / wsum, sum[2] / wsum };
+      // j's frame turned onto i's tangent plane, then j's tensor in i's frame.
+      const Vec u = Rotate(normal[j], normal[i], frameU[j]);
+      const Vec v = Rotate(normal[j], normal[i], frameV[j]);
+      const double a = Dot(frameU[i], u), b = Dot(frameU[i], v);
+      const double c = Dot(frameV[i], u), d = Dot(frameV[i], v);
+      const double A = tensor[j][0], B = tensor[j][1], C = tensor[j][2];
+      const double w = area[j] * std::exp(-0.5 * Dot(dj, dj) / sigma2);
+      sum[0] += w * (A * a * a + 2.0 * B * a * b + C * b * b);
+      sum[1] += w * (A * a * c + B * (a * d + b * c) + C * b * d);
+      sum[2] += w * (A * c * c + 2.0 * B * c * d + C * d * d);
+      wsum += w;
+    }
+    for (size_t e = start[j]; e < start[j + 1]; ++e)
+    {
+      const size_t k = static_cast<size_t>(edges[e].second);
+      if (stamp[k] == i)
+      {
+        continue;
+      }
+      stamp[k] = i;
+      const Vec dk = Sub(p[k], p[i]);
+      if (Dot(dk, dk) <= radius2)
+      {
+        queue.push_back(k);
+      }
     }
   }
-  return out;
+  if (wsum > 0.0 && std::isfinite(sum[0] + sum[1] + sum[2]))
+  {
+    out = { sum[0] / wsum, sum[1] / wsum, sum[2] / wsum };
+  }
 }

@@ -27,8 +27,9 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkStylizeFiltersModule.h" // for export macro
 
-#include <array>  // for std::array
-#include <vector> // for std::vector
+#include <array>   // for std::array
+#include <utility> // for std::pair
+#include <vector>  // for std::vector
 
 class vtkMultiProcessController;
 
@@ -146,6 +147,20 @@ protected:
     const std::vector<std::array<vtkIdType, 3>>& faces,
     const std::vector<std::array<double, 3>>& tensor, const std::vector<double>& area,
     double radius) const;
+
+  /**
+   * SmoothTensors() for point i (out: its smoothed tensor, unchanged when it has no area):
+   * breadth first from i through the edges (compressed rows: edges from start[j]), within the
+   * radius (squared), at most `most` points; stamp and queue are the calling thread's scratch.
+   */
+  void SmoothPoint(size_t i, const std::vector<std::array<double, 3>>& p,
+    const std::vector<std::array<double, 3>>& normal,
+    const std::vector<std::array<double, 3>>& frameU,
+    const std::vector<std::array<double, 3>>& frameV,
+    const std::vector<std::array<double, 3>>& tensor, const std::vector<double>& area,
+    const std::vector<std::pair<vtkIdType, vtkIdType>>& edges, const std::vector<size_t>& start,
+    double radius2, double sigma2, size_t most, std::vector<size_t>& stamp,
+    std::vector<size_t>& queue, std::array<double, 3>& out) const;
 
   bool UseInputNormals = true;
   double SmoothingRadius = 0.0;

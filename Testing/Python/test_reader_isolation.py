@@ -169,6 +169,20 @@ for how in ("ignored", "blocked"):
           f"SIGXCPU {how}: the time limit is not the error: {error!r}")
 os.remove(slow)
 
+# 5. The helper program: one named by VTKSTYLIZE_READ_HELPER that is not there, or that is not
+# the helper (it exits without a word), is one line naming it.
+sphere = os.path.join(data, "sphere.vtp")
+for helper, expected in (("/nonexistent/vtkstylize-read", "is not an executable file"),
+                         ("/bin/false", "did not start (exit status 1)")):
+    os.environ["VTKSTYLIZE_READ_HELPER"] = helper
+    try:
+        _, error, _ = read(sphere, True)
+    finally:
+        del os.environ["VTKSTYLIZE_READ_HELPER"]
+    print("helper %s:" % helper, error)
+    check(expected in error and helper in error and "\n" not in error,
+          f"helper {helper}: {error!r}")
+
 if failures:
     sys.exit(f"{len(failures)} failures")
 print("reader isolation: all checks passed")
