@@ -1,6 +1,6 @@
 #include "vtkStylizeLineVisibility.h"
+#include "vtkStylizeRayOccluder.h"
 
-#include "vtkAbstractCellLocator.h"
 #include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -11,7 +11,6 @@
 #include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
-#include "vtkModifiedBSPTree.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -38,7 +37,7 @@ struct vtkStylizeLineVisibility::Internals
     vtkSmartPointer<vtkMatrix4x4> Matrix;
   };
   std::vector<Occluder> Occluders;
-  std::vector<vtkSmartPointer<vtkAbstractCellLocator>> Locators; // (built, shared)
+  std::vector<vtkSmartPointer<vtkStylizeRayOccluder>> Shared; // (built, shared)
 };
 
 namespace
@@ -255,40 +254,30 @@ public:
   {
   }
 
-  /** An occluder, in world coordinates through its matrix (may be null). */
+  /** An occluder, in world coordinates through its matrix (may be null): built here. */
   void AddOccluder(vtkPolyData* surface, vtkMatrix4x4* matrix)
   {
-    vtkSmartPointer<vtkAbstractCellLocator> locator;
-    locator.TakeReference(vtkStylizeLineVisibility::NewOccluderLocator(surface, matrix));
-    this->AddLocator(locator);
+    vtkNew<vtkStylizeRayOccluder> occluder;
+    occluder->SetSurface(surface, matrix);
+    this->Add(occluder);
   }
 
-  /** An occluder's built locator (world coordinates), shared with its other users. */
-  void AddLocator(vtkAbstractCellLocator* locator)
+  /** A built occluder, shared with its other users (it is only read). */
+  void Add(vtkStylizeRayOccluder* occluder)
   {
-    auto* world = locator ? vtkPolyData::SafeDownCast(locator->GetDataSet()) : nullptr;
-    const vtkIdType cells = world ? world->GetNumberOfCells() : 0;
-    if (cells == 0)
+    if (!occluder || occluder->GetNumberOfTriangles() == 0)
     {
       return;
     }
-    this->Box.AddBounds(world->GetBounds());
-    // The mean edge length of (up to 10000 of) the occluder's cells.
-    const vtkIdType stride = std::max<vtkIdType>(1, cells / 10000);
-    vtkNew<vtkIdList> ids;
-    for (vtkIdType c = 0; c < cells; c += stride)
-    {
-      world->GetCellPoints(c, ids);
-      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-      {
-        double a[3], b[3];
-        world->GetPoint(ids->GetId(k), a);
-        world->GetPoint(ids->GetId((k + 1) % ids->GetNumberOfIds()), b);
-        this->EdgeSum += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
-        ++this->EdgeCount;
-      }
-    }
-    this->Locators.push_back(locator);
+    double bounds[6];
+    occluder->GetBounds(bounds);
+    this->Box.AddBounds(bounds);
+    // (the mean edge over the occluders, each weighted by its sampled edges, at most 30000)
+    const double samples =
+      3.0 * static_cast<double>(std::min<vtkIdType>(occluder->GetNumberOfTriangles(), 10000));
+    this->EdgeSum += occluder->GetMeanEdgeLength() * samples;
+    this->EdgeCount += samples;
+    this->Occluders.push_back(occluder);
   }
 
   /** Whether a sample p (window position win) sees the viewer. */
@@ -323,11 +312,9 @@ public:
       to[i] = from[i] + length * dir[i];
       from[i] += start * dir[i];
     }
-    double t, x[3], pcoords[3];
-    int subId;
-    for (const auto& locator : this->Locators)
+    for (const auto& occluder : this->Occluders)
     {
-      if (locator->IntersectWithLine(from, to, 0.0, t, x, pcoords, subId))
+      if (occluder->Blocks(from, to))
       {
         return false;
       }
@@ -337,10 +324,10 @@ public:
 
 private:
   const Tester& View;
-  std::vector<vtkSmartPointer<vtkAbstractCellLocator>> Locators;
+  std::vector<vtkSmartPointer<vtkStylizeRayOccluder>> Occluders;
   vtkBoundingBox Box;
   double EdgeSum = 0.0;
-  vtkIdType EdgeCount = 0;
+  double EdgeCount = 0.0;
 };
 
 /** Cuts the input's polylines into runs of one visibility, into the output. */
@@ -567,48 +554,20 @@ void vtkStylizeLineVisibility::AddOccluder(vtkPolyData* surface, vtkMatrix4x4* m
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizeLineVisibility::AddOccluderLocator(vtkAbstractCellLocator* locator)
+void vtkStylizeLineVisibility::AddSharedOccluder(vtkStylizeRayOccluder* occluder)
 {
-  if (locator)
+  if (occluder)
   {
-    this->Internal->Locators.push_back(locator);
+    this->Internal->Shared.push_back(occluder);
     this->Modified();
   }
-}
-
-//------------------------------------------------------------------------------
-vtkAbstractCellLocator* vtkStylizeLineVisibility::NewOccluderLocator(
-  vtkPolyData* surface, vtkMatrix4x4* matrix)
-{
-  vtkSmartPointer<vtkPolyData> world = surface;
-  if (surface && matrix)
-  {
-    vtkNew<vtkTransform> t;
-    t->SetMatrix(matrix);
-    vtkNew<vtkTransformPolyDataFilter> f;
-    f->SetInputData(surface);
-    f->SetTransform(t);
-    f->Update();
-    world = f->GetOutput();
-  }
-  if (!world)
-  {
-    world = vtkSmartPointer<vtkPolyData>::New();
-  }
-  vtkModifiedBSPTree* locator = vtkModifiedBSPTree::New();
-  locator->SetDataSet(world);
-  if (world->GetNumberOfCells() > 0)
-  {
-    locator->BuildLocator();
-  }
-  return locator;
 }
 
 //------------------------------------------------------------------------------
 void vtkStylizeLineVisibility::RemoveAllOccluders()
 {
   this->Internal->Occluders.clear();
-  this->Internal->Locators.clear();
+  this->Internal->Shared.clear();
   this->Modified();
 }
 
@@ -678,9 +637,9 @@ int vtkStylizeLineVisibility::RequestData(
     {
       rays.AddOccluder(o.Surface, o.Matrix);
     }
-    for (const auto& locator : this->Internal->Locators)
+    for (const auto& occluder : this->Internal->Shared)
     {
-      rays.AddLocator(locator);
+      rays.Add(occluder);
     }
   }
   // Lines without a FeatureKind count as contours (the WorldTolerance applies to them). Read
@@ -747,14 +706,8 @@ int vtkStylizeLineVisibility::RequestData(
         { return visible(p, a, b, contour, boundary); });
     }
   };
-  if (this->Method == DEPTH_BUFFER)
-  {
-    vtkSMPTools::For(0, cells, trace);
-  }
-  else
-  {
-    trace(0, cells); // VTK 9.1's BSP tree is not safe to query from several threads
-  }
+  // (both methods only read: the depth image, or the occluders' hierarchies)
+  vtkSMPTools::For(0, cells, trace);
   for (vtkIdType c = 0; c < cells; ++c)
   {
     splitter.Emit(c, offsets[c + 1] - offsets[c], ids.data() + offsets[c], changes[c]);
@@ -774,7 +727,7 @@ void vtkStylizeLineVisibility::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";
   os << indent << "ImageOffset: " << this->ImageOffset[0] << " " << this->ImageOffset[1] << "\n";
   os << indent << "Occluders: " << this->Internal->Occluders.size() << " surfaces, "
-     << this->Internal->Locators.size() << " shared locators\n";
+     << this->Internal->Shared.size() << " shared\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << "\n";
   os << indent << "DepthTolerance: " << this->DepthTolerance << "\n";
   os << indent << "WorldTolerance: " << this->WorldTolerance << "\n";

@@ -31,10 +31,10 @@
 
 #include <memory> // for std::unique_ptr
 
-class vtkAbstractCellLocator;
 class vtkImageData;
 class vtkMatrix4x4;
 class vtkPolyData;
+class vtkStylizeRayOccluder;
 
 class VTKSTYLIZEFILTERS_EXPORT vtkStylizeLineVisibility : public vtkStylizeViewFilter
 {
@@ -104,27 +104,21 @@ public:
 
   ///@{
   /**
-   * Surfaces that hide lines for RAY_CAST, each with its model matrix (may be null): a cell
-   * locator is built over each at every update. RemoveAllOccluders() also forgets the locators
-   * of AddOccluderLocator().
+   * Surfaces that hide lines for RAY_CAST, each with its model matrix (may be null): an
+   * occluder (vtkStylizeRayOccluder) is built over each at every update. RemoveAllOccluders()
+   * also forgets the shared occluders.
    */
   void AddOccluder(vtkPolyData* surface, vtkMatrix4x4* matrix);
   void RemoveAllOccluders();
   ///@}
 
   /**
-   * A surface that hides lines for RAY_CAST, as a built cell locator over it in world
-   * coordinates (its data set a vtkPolyData; NewOccluderLocator() makes one). The filter only
-   * queries it: one locator serves the filters of every surface of a scene, built once rather
-   * than once per filter.
+   * A surface that hides lines for RAY_CAST, built (vtkStylizeRayOccluder: its triangles in
+   * world coordinates under a hierarchy). The filter only reads it: one occluder serves the
+   * filters of every surface of a scene and their threads, built once rather than once per
+   * filter and update.
    */
-  void AddOccluderLocator(vtkAbstractCellLocator* locator);
-
-  /**
-   * A built locator (a vtkModifiedBSPTree) over surface in world coordinates, through matrix
-   * (may be null), for AddOccluderLocator(). The caller owns the reference.
-   */
-  static vtkAbstractCellLocator* NewOccluderLocator(vtkPolyData* surface, vtkMatrix4x4* matrix);
+  void AddSharedOccluder(vtkStylizeRayOccluder* occluder);
 
   ///@{
   /** Distance between samples, in pixels. Range [0.01, 100], default 0.25. */

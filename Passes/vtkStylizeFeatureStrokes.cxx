@@ -1,6 +1,5 @@
 #include "vtkStylizeFeatureStrokes.h"
 
-#include "vtkAbstractCellLocator.h"
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
@@ -32,6 +31,7 @@
 #include "vtkStylizeFeatureLines.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLineVisibility.h"
+#include "vtkStylizeRayOccluder.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
@@ -582,14 +582,14 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
   }
   // Ray casting: one locator per occluding surface, built once and queried by every surface's
   // visibility (a locator per pair of surfaces was quadratic in their number).
-  std::vector<vtkSmartPointer<vtkAbstractCellLocator>> occluders;
+  std::vector<vtkSmartPointer<vtkStylizeRayOccluder>> occluders;
   for (const Item& other : linearDepth ? std::vector<Item>() : items)
   {
     if (!other.Wireframe)
     {
-      occluders.emplace_back();
-      occluders.back().TakeReference(vtkStylizeLineVisibility::NewOccluderLocator(
-        in.Cache[{ other.Data, other.Wireframe }]->SurfaceOf(), other.Matrix));
+      occluders.push_back(vtkSmartPointer<vtkStylizeRayOccluder>::New());
+      occluders.back()->SetSurface(
+        in.Cache[{ other.Data, other.Wireframe }]->SurfaceOf(), other.Matrix);
     }
   }
   for (const Item& item : items)
@@ -610,9 +610,9 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
     fl->SetObjectBounds(
       item.Actor < view.ObjectBounds.size() ? view.ObjectBounds[item.Actor].data() : invalid);
     SetVisibility(s, item.Matrix, view, in.Size, linearDepth ? in.Depth.GetPointer() : nullptr);
-    for (const auto& locator : occluders)
+    for (const auto& occluder : occluders)
     {
-      s.Visibility->AddOccluderLocator(locator);
+      s.Visibility->AddSharedOccluder(occluder);
     }
     s.Visibility->Update();
     sink.Append(s.Visibility->GetOutput(), item.Matrix);

@@ -32,6 +32,8 @@ Filters (module ``vtkstylize.vtkStylizeFilters``):
   (contours, boundaries, creases, ridges, valleys, suggestive contours), as polylines.
 - ``vtkStylizeLineVisibility``: hidden-line removal for those lines, against a rendering's depth
   buffer or by ray casting: the lines split where they pass behind a surface.
+- ``vtkStylizeRayOccluder``: a surface's triangles under a bounding volume hierarchy, built once
+  and shared by the ray casting of every line filter and thread.
 - ``vtkStylizeViewFilter``: the base of those two (the camera and the model matrix).
 
 Checked reading and the animation encoder (module ``vtkstylize.vtkStylizeIO``):
