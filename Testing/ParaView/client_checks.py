@@ -4,7 +4,8 @@
 
 both: pvpython-stylize against pvserver-stylize. The server lists VTKStylize as loaded (so
 LoadDistributedPlugin finds it), LoadDistributedPlugin("VTKStylize", remote=False) succeeds,
-and the view renders a style. server-only: a pvpython without the plugin against
+the view renders a style, and the Stylize Checked Reader reads a file on the server (through
+its helper program there). server-only: a pvpython without the plugin against
 pvserver-stylize; client-only: pvpython-stylize against a pvserver without it. In both, creating
 the view must raise an error that the script can catch (no abort), and a render view still works.
 Prints "checks passed" at the end.
@@ -44,6 +45,30 @@ if mode == "both":
     Show(Sphere(), view)
     Render(view)
     print("rendered the comic style")
+    # The checked reader on the server: its helper (vtkstylize-read) reads there and the data
+    # arrives as the file holds it.
+    import os
+    import tempfile
+    from vtkmodules.vtkFiltersSources import vtkSphereSource
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+    sphere = vtkSphereSource()
+    sphere.SetThetaResolution(20)
+    sphere.SetPhiResolution(12)
+    writer = vtkXMLPolyDataWriter()
+    path = os.path.join(tempfile.mkdtemp(), "sphere.vtp")
+    writer.SetFileName(path)
+    writer.SetInputConnection(sphere.GetOutputPort())
+    writer.Write()
+    sphere.Update()
+    reader = StylizeCheckedReader(FileName=path)
+    reader.UpdatePipeline()
+    cells = reader.GetDataInformation().GetNumberOfCells()
+    print("the checked reader on the server: %d cells (the file: %d)"
+          % (cells, sphere.GetOutput().GetNumberOfCells()))
+    if cells != sphere.GetOutput().GetNumberOfCells():
+        sys.exit("FAIL: the checked reader gave %d cells" % cells)
+    os.remove(path)
+    os.rmdir(os.path.dirname(path))
 else:
     try:
         CreateView("StylizeView")

@@ -148,8 +148,8 @@ for mode, server_program, client in [("both", pvserver, [pvpython]),
     server = Server(server_program)
     rc, log = run(client + [checks, "localhost:%d" % server.port, mode])
     server.stop()
-    lines = [line for line in log.splitlines() if line.startswith(("plugin on", "CreateView",
-                                                                    "rendered", "a render"))]
+    lines = [line for line in log.splitlines() if line.startswith((
+        "plugin on", "CreateView", "rendered", "a render", "the checked reader"))]
     print("%s: %s" % (mode, "; ".join(lines)))
     if rc != 0 or "checks passed" not in log:
         failures.append("%s: pvpython exited with %d (134 is an abort):\n%s"

@@ -1,0 +1,221 @@
+#!/usr/bin/python3
+"""How the line art, the sketch's model directions and figures scale with the triangle count
+(issue 54): whole `vtkstylize` runs on a scan refined and tiled to about 75k, 300k, 1.2M, 4.8M
+and 9.7M triangles.
+
+    scaling.py VTKSTYLIZE SCAN.ply WORK_DIR OUTPUT.md [--sizes 0,1,2,3,3x2] [--size WxH]
+    scaling.py --from-log LOG WORK_DIR OUTPUT.md     (the table of a run cut short)
+
+The meshes are made here (not committed): the scan Loop-subdivided 0 to 3 times (x4 triangles
+each), and "3x2" two copies of the 3-times one side by side, written to WORK_DIR as binary PLY.
+Per size, one run each at WxH (default 1280x720), in this order: `--style comic` (the
+reference), `--style lines`, `--style lines --orbit 2` (the second frame: after a camera
+change), `--style sketch --direction-source model`, and `--style lines` to an SVG figure. The
+seconds and the peak resident size (wait4) of each run; the line art's first frame and its figure
+as the extra time over the comic run; the frame after a camera change as the 2-frame orbit's
+time less the 1-frame run's. Writes OUTPUT.md (the table and the log-log slopes from 300k up)
+and OUTPUT.png (a log-log plot, matplotlib). Needs a display or Xvfb (vtkstylize starts one).
+"""
+import math
+import os
+import resource
+import subprocess
+import sys
+import time
+
+
+def make_meshes(scan, work, sizes):
+    """The meshes, made in a child process: the peak resident size a child reports (wait4)
+    starts from its parent's at the fork, so this process stays small."""
+    paths = {size: os.path.join(work, "scan-%s.ply" % size) for size in sizes}
+    if not all(os.path.exists(p) for p in paths.values()):
+        subprocess.run([sys.executable, __file__, "--make", scan, work, ",".join(sizes)],
+                       check=True)
+    return paths
+
+
+def make_meshes_here(scan, work, sizes):
+    from vtkmodules.vtkFiltersCore import (vtkAppendPolyData, vtkCleanPolyData,
+                                           vtkTriangleFilter)
+    from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
+    from vtkmodules.vtkFiltersModeling import vtkLoopSubdivisionFilter
+    from vtkmodules.vtkIOPLY import vtkPLYReader, vtkPLYWriter
+    from vtkmodules.vtkCommonTransforms import vtkTransform
+    reader = vtkPLYReader()
+    reader.SetFileName(scan)
+    triangles = vtkTriangleFilter()
+    triangles.SetInputConnection(reader.GetOutputPort())
+    clean = vtkCleanPolyData()
+    clean.SetInputConnection(triangles.GetOutputPort())
+    clean.Update()
+    paths = {}
+    for size in sizes:
+        path = os.path.join(work, "scan-%s.ply" % size)
+        paths[size] = path
+        if os.path.exists(path):
+            continue
+        levels, copies = (size.split("x") + ["1"])[:2]
+        mesh = clean.GetOutput()
+        if int(levels):
+            loop = vtkLoopSubdivisionFilter()
+            loop.SetNumberOfSubdivisions(int(levels))
+            loop.SetInputData(mesh)
+            loop.Update()
+            mesh = loop.GetOutput()
+        if int(copies) > 1:
+            append = vtkAppendPolyData()
+            width = mesh.GetBounds()[1] - mesh.GetBounds()[0]
+            for c in range(int(copies)):
+                move = vtkTransform()
+                move.Translate(1.1 * width * c, 0.0, 0.0)
+                place = vtkTransformPolyDataFilter()
+                place.SetTransform(move)
+                place.SetInputData(mesh)
+                place.Update()
+                append.AddInputData(place.GetOutput())
+            append.Update()
+            mesh = append.GetOutput()
+        writer = vtkPLYWriter()
+        writer.SetFileName(path)
+        writer.SetFileTypeToBinary()
+        writer.SetInputData(mesh)
+        writer.Write()
+        print("made %s: %d triangles" % (path, mesh.GetNumberOfCells()), flush=True)
+    return paths
+
+
+def triangles_of(path):
+    with open(path, "rb") as f:
+        for line in f.read(4096).split(b"\n"):
+            if line.startswith(b"element face"):
+                return int(line.split()[2])
+    return 0
+
+
+def run(command):
+    """Seconds and peak resident MiB of one run."""
+    start = time.perf_counter()
+    process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    _, status, usage = os.wait4(process.pid, 0)
+    seconds = time.perf_counter() - start
+    error = process.stderr.read().decode(errors="replace").strip()
+    if os.waitstatus_to_exitcode(status) != 0:
+        sys.exit("scaling.py: %s failed: %s" % (" ".join(command), error[-500:]))
+    return seconds, usage.ru_maxrss / 1024.0
+
+
+def row(triangles, measures):
+    """A table row from one size's runs: {name: (seconds, peak MiB)}."""
+    comic = measures["comic"][0]
+    return {
+        "triangles": triangles,
+        "comic": comic,
+        "lines first frame": measures["lines"][0] - comic,
+        "lines next frame": measures["lines orbit 2"][0] - measures["lines"][0],
+        "sketch model first frame": measures["sketch model"][0] - comic,
+        "lines svg": measures["lines svg"][0] - comic,
+        "peak MiB": max(m[1] for m in measures.values()),
+    }
+
+
+def report(rows, output, image):
+    curves = ["comic", "lines first frame", "lines next frame", "sketch model first frame",
+              "lines svg", "peak MiB"]
+
+    def slope(curve):
+        points = [(math.log(r["triangles"]), math.log(max(r[curve], 1e-3))) for r in rows
+                  if r["triangles"] >= 250000]
+        if len(points) < 2:
+            return float("nan")
+        n = len(points)
+        mx = sum(p[0] for p in points) / n
+        my = sum(p[1] for p in points) / n
+        return sum((p[0] - mx) * (p[1] - my) for p in points) / \
+            sum((p[0] - mx) ** 2 for p in points)
+    with open(output, "w") as f:
+        f.write("| triangles | comic run (s) | line art first frame (s, over comic) | line art "
+                "after a camera change (s) | sketch, model directions (s, over comic) | "
+                "line-art SVG (s, over comic) | peak resident (MiB) |\n")
+        f.write("|---:|---:|---:|---:|---:|---:|---:|\n")
+        for r in rows:
+            f.write("| {:,} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:,.0f} |\n".format(
+                r["triangles"], r["comic"], r["lines first frame"], r["lines next frame"],
+                r["sketch model first frame"], r["lines svg"], r["peak MiB"]))
+        f.write("\nLog-log slopes from 300k triangles up: " + ", ".join(
+            "%s %.2f" % (c, slope(c)) for c in curves) + ".\n")
+        f.write("\n%s, one run per cell, vtkstylize --size %s.\n" % (
+            time.strftime("%Y-%m-%d"), image))
+    print(open(output).read())
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        figure, axes = plt.subplots(figsize=(7, 4.5))
+        for c in curves[:-1]:
+            axes.loglog([r["triangles"] for r in rows], [max(r[c], 1e-2) for r in rows],
+                        marker="o", label="%s (slope %.2f)" % (c, slope(c)))
+        axes.set_xlabel("triangles")
+        axes.set_ylabel("seconds")
+        axes.grid(True, which="both", alpha=0.3)
+        axes.legend(fontsize=8)
+        figure.tight_layout()
+        figure.savefig(output[:-3] + ".png" if output.endswith(".md") else output + ".png",
+                       dpi=110)
+    except ImportError:
+        print("(matplotlib is not installed: no plot)")
+
+
+
+def main():
+    args = sys.argv[1:]
+    if args[:1] == ["--make"]:
+        make_meshes_here(args[1], args[2], args[3].split(","))
+        return
+    sizes, image = ["0", "1", "2", "3", "3x2"], "1280x720"
+    for flag in ("--sizes", "--size"):
+        if flag in args:
+            i = args.index(flag)
+            value = args[i + 1]
+            del args[i:i + 2]
+            if flag == "--sizes":
+                sizes = value.split(",")
+            else:
+                image = value
+    if args[:1] == ["--from-log"]:
+        # (the table of a run cut short: its printed lines, the sizes it finished)
+        log, work, output = args[1:4]
+        found = {}
+        for line in open(log):
+            parts = line.split(":")
+            if len(parts) == 2 and line.strip().endswith("MiB"):
+                size, name = parts[0].split(" ", 1)
+                seconds, mib = parts[1].replace("s,", "").replace("MiB", "").split()
+                found.setdefault(size, {})[name] = (float(seconds), float(mib))
+        rows = [row(triangles_of(os.path.join(work, "scan-%s.ply" % size)), m)
+                for size, m in found.items() if len(m) == 5]
+        report(rows, output, image)
+        return
+    program, scan, work, output = args
+    os.makedirs(work, exist_ok=True)
+    paths = make_meshes(scan, work, sizes)
+    rows = []
+    for size in sizes:
+        path = paths[size]
+        out = os.path.join(work, "out-" + size)
+        base = [program, "--size", image]
+        measures = {}
+        for name, extra, target in (
+                ("comic", ["--style", "comic"], out + "-comic.png"),
+                ("lines", ["--style", "lines"], out + "-lines.png"),
+                ("lines orbit 2", ["--style", "lines", "--orbit", "2"], out + "-orbit.png"),
+                ("sketch model", ["--style", "sketch", "--direction-source", "model"],
+                 out + "-sketch.png"),
+                ("lines svg", ["--style", "lines"], out + "-lines.svg")):
+            measures[name] = run(base + extra + ["--output", target, path])
+            print("%s %s: %.1f s, %.0f MiB" % (size, name, *measures[name]), flush=True)
+        rows.append(row(triangles_of(path), measures))
+    report(rows, output, image)
+
+
+if __name__ == "__main__":
+    main()
