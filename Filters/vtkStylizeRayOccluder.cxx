@@ -32,11 +32,11 @@ struct Node
 
 struct vtkStylizeRayOccluder::Internals
 {
-  double Centre[3] = { 0, 0, 0 };    // world = Centre + stored point
-  std::vector<float> Points;         // 3 per point, relative to Centre
-  std::vector<std::uint32_t> Tris;   // 3 point indices per triangle
-  std::vector<std::uint32_t> Order;  // triangles in the leaves' order
-  std::vector<Node> Nodes;           // Nodes[0]: the root
+  double Centre[3] = { 0, 0, 0 };   // world = Centre + stored point
+  std::vector<float> Points;        // 3 per point, relative to Centre
+  std::vector<std::uint32_t> Tris;  // 3 point indices per triangle
+  std::vector<std::uint32_t> Order; // triangles in the leaves' order
+  std::vector<Node> Nodes;          // Nodes[0]: the root
   double MeanEdge = 0.0;
   double Bounds[6] = { 1, -1, 1, -1, 1, -1 };
 
@@ -183,9 +183,9 @@ void vtkStylizeRayOccluder::Internals::Build()
     this->Order[t] = t;
     for (int r = 0; r < 3; ++r)
     {
-      centroids[3 * t + r] = (this->Points[3 * this->Tris[3 * t] + r] +
-                               this->Points[3 * this->Tris[3 * t + 1] + r] +
-                               this->Points[3 * this->Tris[3 * t + 2] + r]) /
+      centroids[3 * t + r] =
+        (this->Points[3 * this->Tris[3 * t] + r] + this->Points[3 * this->Tris[3 * t + 1] + r] +
+          this->Points[3 * this->Tris[3 * t + 2] + r]) /
         3.0f;
     }
   }

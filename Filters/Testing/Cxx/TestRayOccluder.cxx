@@ -79,8 +79,8 @@ bool Crosses(const Tri& t, const double a[3], const double b[3], double& margin)
   vtkMath::Cross(s, e1, r);
   const double v = vtkMath::Dot(d, r) / det;
   const double along = vtkMath::Dot(e2, r) / det;
-  margin = std::min({ std::abs(u), std::abs(v), std::abs(1.0 - u - v), std::abs(along),
-    std::abs(1.0 - along) });
+  margin = std::min(
+    { std::abs(u), std::abs(v), std::abs(1.0 - u - v), std::abs(along), std::abs(1.0 - along) });
   return u >= 0.0 && v >= 0.0 && u + v <= 1.0 && along >= 0.0 && along <= 1.0;
 }
 }
@@ -119,9 +119,9 @@ int TestRayOccluder(int, char*[])
 
   double bounds[6];
   occluder->GetBounds(bounds);
-  const double size = std::sqrt(vtkMath::Distance2BetweenPoints(
-    std::array<double, 3>{ bounds[0], bounds[2], bounds[4] }.data(),
-    std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
+  const double size = std::sqrt(
+    vtkMath::Distance2BetweenPoints(std::array<double, 3>{ bounds[0], bounds[2], bounds[4] }.data(),
+      std::array<double, 3>{ bounds[1], bounds[3], bounds[5] }.data()));
   vtkNew<vtkMinimalStandardRandomSequence> random;
   random->SetSeed(54);
   const int segments = 3000;
@@ -156,8 +156,8 @@ int TestRayOccluder(int, char*[])
               "(%d crossing), %d left out within 1e-6 of an edge\n",
     tris.size(), size, agree, checked, hits, segments - checked);
   STYLIZE_CHECK(checked > 2900 && agree == checked, "%d of %d agree", agree, checked);
-  STYLIZE_CHECK(hits > 300 && hits < segments - 300, "%d of %d cross: not a mixed test", hits,
-    segments);
+  STYLIZE_CHECK(
+    hits > 300 && hits < segments - 300, "%d of %d cross: not a mixed test", hits, segments);
 
   // From the threads: the same answers as one thread.
   std::atomic<int> differ{ 0 };
