@@ -234,6 +234,13 @@ int ReadHelperMain(int argc, char* argv[])
   // No descriptor of the caller's but the socket (posix_spawn passes on those without
   // close-on-exec).
   CloseDescriptorsFrom(socket + 1);
+  // A crash of VTK's reader ends the helper by its signal, which the caller names ("segmentation
+  // fault"): the sanitizers' runtimes install handlers of their own at start-up (posix_spawn set
+  // the defaults before), which would turn it into their exit status.
+  for (int sig : { SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT })
+  {
+    std::signal(sig, SIG_DFL);
+  }
   SetLimits(memoryMiB, seconds);
   if (!SendRecord(socket, 'H', std::string()))
   {
