@@ -16,6 +16,7 @@ as the extra time over the comic run; the frame after a camera change as the 2-f
 time less the 1-frame run's. Writes OUTPUT.md (the table and the log-log slopes from 300k up)
 and OUTPUT.png (a log-log plot, matplotlib). Needs a display or Xvfb (vtkstylize starts one).
 """
+import argparse
 import math
 import os
 import resource
@@ -167,25 +168,26 @@ def report(rows, output, image):
 
 
 def main():
-    args = sys.argv[1:]
-    if args[:1] == ["--make"]:
-        make_meshes_here(args[1], args[2], args[3].split(","))
+    if sys.argv[1:2] == ["--make"]:
+        make_meshes_here(sys.argv[2], sys.argv[3], sys.argv[4].split(","))
         return
-    sizes, image = ["0", "1", "2", "3", "3x2"], "1280x720"
-    for flag in ("--sizes", "--size"):
-        if flag in args:
-            i = args.index(flag)
-            value = args[i + 1]
-            del args[i:i + 2]
-            if flag == "--sizes":
-                sizes = value.split(",")
-            else:
-                image = value
-    if args[:1] == ["--from-log"]:
+    parser = argparse.ArgumentParser(description="Scaling of the line art, the sketch's model "
+                                     "directions and figures (issue 54).")
+    parser.add_argument("--sizes", default="0,1,2,3,3x2",
+                        help="Loop subdivision levels, LxN for N copies (default 0,1,2,3,3x2)")
+    parser.add_argument("--size", default="1280x720", help="image size (default 1280x720)")
+    parser.add_argument("--from-log", metavar="LOG",
+                        help="the table of a run cut short: LOG WORK_DIR OUTPUT.md")
+    parser.add_argument("paths", nargs="+",
+                        help="VTKSTYLIZE SCAN.ply WORK_DIR OUTPUT.md (or, with --from-log, "
+                        "WORK_DIR OUTPUT.md)")
+    options = parser.parse_args()
+    sizes, image, args = options.sizes.split(","), options.size, options.paths
+    if options.from_log:
         # (the table of a run cut short: its printed lines, the sizes it finished)
-        log, work, output = args[1:4]
+        work, output = args
         found = {}
-        for line in open(log):
+        for line in open(options.from_log):
             parts = line.split(":")
             if len(parts) == 2 and line.strip().endswith("MiB"):
                 size, name = parts[0].split(" ", 1)
