@@ -2,10 +2,10 @@
 #include "vtkStylizeFeatureLinesInternals.h"
 #include "vtkStylizePrincipalCurvatures.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
@@ -15,6 +15,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -27,51 +28,105 @@ using namespace vtkStylizeMesh;
 namespace
 {
 /** The input's surface, points within 1e-7 of its diagonal merged (so that split normals and
- * seams make no boundary). */
+ * seams make no boundary), in the order of their first input point; points of no face left
+ * out. Empty when a point of a face is not finite. */
 FL::Mesh WeldedMesh(vtkPolyData* input)
 {
   FL::Mesh m;
-  vtkNew<vtkPolyData> surface;
-  surface->SetPoints(input->GetPoints());
-  surface->SetPolys(input->GetPolys());
-  surface->SetStrips(input->GetStrips());
-  if (!input->GetPoints() || input->GetNumberOfPoints() == 0)
+  vtkPoints* points = input->GetPoints();
+  if (!points || input->GetNumberOfPoints() == 0)
   {
     return m;
   }
-  // (vtkCleanPolyData, not the threaded vtkStaticCleanPolyData, whose merging within a
-  // tolerance differs from run to run in VTK 9.1)
-  vtkNew<vtkCleanPolyData> clean;
-  clean->SetInputData(surface);
-  clean->SetTolerance(1e-7); // of the diagonal: seams of parametric and CAD surfaces
-  clean->ConvertLinesToPointsOff();
-  clean->ConvertPolysToLinesOff();
-  clean->ConvertStripsToPolysOff();
-  clean->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  clean->Update();
-  vtkPolyData* welded = clean->GetOutput();
-  m.Faces = Triangles(welded);
-  m.P.resize(static_cast<size_t>(welded->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < welded->GetNumberOfPoints(); ++i)
-  {
-    welded->GetPoint(i, m.P[i].data());
-  }
-  // Points of no face play no part; non-finite points would poison the diagonal.
-  for (const Vec& p : m.P)
-  {
-    if (!std::isfinite(p[0] + p[1] + p[2]))
+  const std::vector<FL::Face> faces = Triangles(input);
+  const size_t np = static_cast<size_t>(input->GetNumberOfPoints());
+  std::vector<Vec> p(np);
+  std::vector<char> use(np, 0);
+  vtkDataArray* coordinates = points->GetData();
+  vtkSMPTools::For(0, static_cast<vtkIdType>(np),
+    [&](vtkIdType first, vtkIdType last)
     {
-      m.Faces.clear();
-      m.P.clear();
-      return m;
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        coordinates->GetTuple(i, p[i].data());
+      }
+    });
+  for (const FL::Face& f : faces)
+  {
+    for (const vtkIdType i : f)
+    {
+      use[i] = 1;
+    }
+  }
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (size_t i = 0; i < np; ++i)
+  {
+    if (use[i])
+    {
+      if (!std::isfinite(p[i][0] + p[i][1] + p[i][2]))
+      {
+        return m; // non-finite points would poison the diagonal
+      }
+      for (int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], p[i][a]);
+        hi[a] = std::max(hi[a], p[i][a]);
+      }
+    }
+  }
+  const double diagonal = lo[0] <= hi[0]
+    ? std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+        (hi[2] - lo[2]) * (hi[2] - lo[2]))
+    : 0.0;
+  // 1e-7 of the diagonal: seams of parametric and CAD surfaces.
+  const std::vector<vtkIdType> representative = MergeCoincidentPoints(p, use, 1e-7 * diagonal);
+  std::vector<vtkIdType> id(np, -1);
+  for (size_t i = 0; i < np; ++i)
+  {
+    if (representative[i] == static_cast<vtkIdType>(i))
+    {
+      id[i] = static_cast<vtkIdType>(m.P.size());
+      m.P.push_back(p[i]);
+    }
+  }
+  m.Faces.reserve(faces.size());
+  for (const FL::Face& f : faces)
+  {
+    const FL::Face g{ id[representative[f[0]]], id[representative[f[1]]],
+      id[representative[f[2]]] };
+    if (g[0] != g[1] && g[1] != g[2] && g[0] != g[2])
+    {
+      m.Faces.push_back(g);
     }
   }
   FL::FinishMesh(m);
   return m;
 }
 
-/** The principal curvatures of the mesh, smoothed over `smoothing` times its diagonal. */
-FL::Curvature Curvatures(const FL::Mesh& m, double smoothing)
+/** Forwards an inner filter's progress to its owner's range [From, To], and the owner's abort
+ * to the inner filter. */
+struct ForwardProgress
+{
+  vtkAlgorithm* Owner;
+  double From, To;
+
+  static void Call(vtkObject* caller, unsigned long, void* self, void* data)
+  {
+    const auto* f = static_cast<ForwardProgress*>(self);
+    f->Owner->UpdateProgress(f->From + (f->To - f->From) * *static_cast<double*>(data));
+    if (f->Owner->GetAbortExecute())
+    {
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    }
+  }
+};
+
+/**
+ * The principal curvatures of the mesh, smoothed over `smoothing` times its diagonal; the
+ * filter's progress is owner's from 0.1 to 0.8, and owner's abort stops it (empty arrays).
+ */
+FL::Curvature Curvatures(const FL::Mesh& m, double smoothing, vtkAlgorithm* owner)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -99,6 +154,11 @@ FL::Curvature Curvatures(const FL::Mesh& m, double smoothing)
   filter->SetInputData(mesh);
   filter->UseInputNormalsOn();
   filter->SetSmoothingRadius(smoothing);
+  ForwardProgress forward{ owner, 0.1, 0.8 };
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(&forward);
+  progress->SetCallback(&ForwardProgress::Call);
+  filter->AddObserver(vtkCommand::ProgressEvent, progress);
   filter->Update();
   vtkPointData* pd = filter->GetOutput()->GetPointData();
   FL::Curvature c;
@@ -242,6 +302,7 @@ int vtkStylizeFeatureLines::RequestData(
         cache.Surface.Diagonal = d;
       }
     }
+    this->UpdateProgress(0.05);
     if (cache.Surface.Usable())
     {
       // Creases are found for the interior kinds too: they keep those off the creases.
@@ -252,12 +313,18 @@ int vtkStylizeFeatureLines::RequestData(
   {
     // (the curvature filter's radius is a fraction of the piece's own diagonal)
     const double own = cache.OwnDiagonal;
-    cache.Curvatures = Curvatures(
-      cache.Surface, own > 0.0 ? this->CurvatureSmoothing * cache.Surface.Diagonal / own : 0.0);
+    cache.Curvatures = Curvatures(cache.Surface,
+      own > 0.0 ? this->CurvatureSmoothing * cache.Surface.Diagonal / own : 0.0, this);
+    if (this->GetAbortExecute())
+    {
+      cache.Curvatures = FL::Curvature();
+      return 1; // interrupted: no lines, and the curvature is computed again next time
+    }
     FL::RidgesAndValleys(
       cache.Surface, cache.Curvatures, this->RidgeThreshold, cache.Ridges, cache.Valleys);
     cache.HasCurvature = true;
     ++this->CurvatureBuilds;
+    this->UpdateProgress(0.9);
   }
   const FL::Mesh& mesh = cache.Surface;
   std::vector<FL::Segments> viewSegments(NUMBER_OF_KINDS);

@@ -212,7 +212,7 @@ void FL::EdgeLines(Mesh& m, double creaseAngle, Segments& boundaries, Segments& 
       edges.emplace_back(EdgeKey(t[k], t[(k + 1) % 3], m.P.size()), f);
     }
   }
-  std::sort(edges.begin(), edges.end());
+  vtkSMPTools::Sort(edges.begin(), edges.end()); // (each entry distinct: deterministic)
   const double cosLimit = std::cos(vtkMath::RadiansFromDegrees(creaseAngle));
   for (size_t i = 0; i < edges.size();)
   {

@@ -6,6 +6,8 @@
 #include "vtkTriangleFilter.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <utility>
 
 //------------------------------------------------------------------------------
 std::vector<std::array<vtkIdType, 3>> vtkStylizeMesh::Triangles(vtkPolyData* input)
@@ -46,24 +48,159 @@ std::vector<vtkStylizeMesh::Vec> vtkStylizeMesh::AngleWeightedNormals(
   const std::vector<Vec>& p, const std::vector<std::array<vtkIdType, 3>>& faces)
 {
   std::vector<Vec> normal(p.size(), Vec{ 0, 0, 0 });
-  for (const auto& f : faces)
-  {
-    Vec fn = Cross(Sub(p[f[1]], p[f[0]]), Sub(p[f[2]], p[f[0]]));
-    if (!Normalize(fn))
+  // Per face: its unit normal times each corner's angle (zeros where undefined).
+  ForFacesInOrder<9>(
+    faces.size(),
+    [&](size_t i, std::array<double, 9>& out)
     {
-      continue;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      Vec a = Sub(p[f[(k + 1) % 3]], p[f[k]]);
-      Vec b = Sub(p[f[(k + 2) % 3]], p[f[k]]);
-      if (!Normalize(a) || !Normalize(b))
+      out.fill(0.0);
+      const auto& f = faces[i];
+      Vec fn = Cross(Sub(p[f[1]], p[f[0]]), Sub(p[f[2]], p[f[0]]));
+      if (!Normalize(fn))
       {
-        continue;
+        return;
       }
-      const double angle = std::acos(std::max(-1.0, std::min(1.0, Dot(a, b))));
-      normal[f[k]] = Add(normal[f[k]], Scale(fn, angle));
+      for (int k = 0; k < 3; ++k)
+      {
+        Vec a = Sub(p[f[(k + 1) % 3]], p[f[k]]);
+        Vec b = Sub(p[f[(k + 2) % 3]], p[f[k]]);
+        if (!Normalize(a) || !Normalize(b))
+        {
+          continue;
+        }
+        const double angle = std::acos(std::max(-1.0, std::min(1.0, Dot(a, b))));
+        for (int c = 0; c < 3; ++c)
+        {
+          out[3 * k + c] = fn[c] * angle;
+        }
+      }
+    },
+    [&](size_t i, const std::array<double, 9>& v)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        Vec& n = normal[faces[i][k]];
+        n = Add(n, Vec{ v[3 * k], v[3 * k + 1], v[3 * k + 2] });
+      }
+    });
+  return normal;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkIdType> vtkStylizeMesh::MergeCoincidentPoints(
+  const std::vector<Vec>& p, const std::vector<char>& use, double tolerance)
+{
+  const size_t np = p.size();
+  std::vector<vtkIdType> parent(np, -1);
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (size_t i = 0; i < np; ++i)
+  {
+    if (use[i])
+    {
+      parent[i] = static_cast<vtkIdType>(i);
+      for (int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], p[i][a]);
+        hi[a] = std::max(hi[a], p[i][a]);
+      }
     }
   }
-  return normal;
+  if (!(lo[0] <= hi[0]))
+  {
+    return parent;
+  }
+  // Grid cells of 1024 tolerances (at most 2^21 along an axis): a point's partners lie in its
+  // own cell or, when it is within the tolerance of a side, in the cells across that side.
+  tolerance = std::max(tolerance, 0.0);
+  const double axisCells = static_cast<double>((1 << 21) - 4);
+  double side = tolerance > 0.0 ? 1024.0 * tolerance : 1.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    side = std::max(side, (hi[a] - lo[a]) / axisCells);
+  }
+  auto cellOf = [&](const Vec& x, int a) { return std::floor((x[a] - lo[a]) / side) + 1.0; };
+  auto keyOf = [](const double g[3])
+  {
+    return (static_cast<uint64_t>(g[0]) << 42) | (static_cast<uint64_t>(g[1]) << 21) |
+      static_cast<uint64_t>(g[2]);
+  };
+  std::vector<std::pair<uint64_t, vtkIdType>> keyed;
+  keyed.reserve(np);
+  for (size_t i = 0; i < np; ++i)
+  {
+    if (use[i])
+    {
+      const double g[3] = { cellOf(p[i], 0), cellOf(p[i], 1), cellOf(p[i], 2) };
+      keyed.emplace_back(keyOf(g), static_cast<vtkIdType>(i));
+    }
+  }
+  vtkSMPTools::Sort(keyed.begin(), keyed.end());
+  auto find = [&parent](vtkIdType i)
+  {
+    while (parent[i] != i)
+    {
+      parent[i] = parent[parent[i]];
+      i = parent[i];
+    }
+    return i;
+  };
+  const double t2 = tolerance * tolerance;
+  auto join = [&](vtkIdType a, vtkIdType b)
+  {
+    const Vec d = Sub(p[a], p[b]);
+    if (Dot(d, d) <= t2)
+    {
+      const vtkIdType ra = find(a), rb = find(b);
+      parent[std::max(ra, rb)] = std::min(ra, rb);
+    }
+  };
+  const size_t n = keyed.size();
+  for (size_t e = 0; e < n; ++e)
+  {
+    const vtkIdType i = keyed[e].second;
+    // The points before it in its cell (sorted by index), at most 64 back.
+    for (size_t b = e; b > 0 && e - b < 64 && keyed[b - 1].first == keyed[e].first; --b)
+    {
+      join(i, keyed[b - 1].second);
+    }
+    // The cells across the sides it is within the tolerance of.
+    int low[3], high[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double g = cellOf(p[i], a);
+      const double x = (p[i][a] - lo[a]) / side - (g - 1.0); // in [0, 1): its place in the cell
+      low[a] = x * side <= tolerance ? -1 : 0;
+      high[a] = (1.0 - x) * side <= tolerance ? 1 : 0;
+    }
+    for (int dx = low[0]; dx <= high[0]; ++dx)
+    {
+      for (int dy = low[1]; dy <= high[1]; ++dy)
+      {
+        for (int dz = low[2]; dz <= high[2]; ++dz)
+        {
+          if (dx == 0 && dy == 0 && dz == 0)
+          {
+            continue;
+          }
+          const double g[3] = { cellOf(p[i], 0) + dx, cellOf(p[i], 1) + dy, cellOf(p[i], 2) + dz };
+          const uint64_t key = keyOf(g);
+          auto it = std::lower_bound(
+            keyed.begin(), keyed.end(), std::pair<uint64_t, vtkIdType>(key, VTK_ID_MIN));
+          for (int k = 0; it != keyed.end() && it->first == key && k < 64; ++it, ++k)
+          {
+            join(i, it->second);
+          }
+        }
+      }
+    }
+  }
+  for (size_t i = 0; i < np; ++i)
+  {
+    if (parent[i] >= 0)
+    {
+      parent[i] = find(static_cast<vtkIdType>(i));
+    }
+  }
+  return parent;
 }

@@ -5,8 +5,10 @@
 #ifndef vtkStylizeMeshGeometry_h
 #define vtkStylizeMeshGeometry_h
 
+#include "vtkSMPTools.h"
 #include "vtkType.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -67,6 +69,45 @@ inline Vec Rotate(const Vec& a, const Vec& b, const Vec& x)
   const Vec v = Cross(a, b);
   return Add(Add(Scale(x, c), Cross(v, x)), Scale(v, Dot(v, x) / (1.0 + c)));
 }
+
+/**
+ * Per-face work on vtkSMPTools' threads, summed in face order on the calling thread: for each
+ * face f of [0, n), compute(f, values) fills `values` (K doubles) on some thread, then
+ * add(f, values) runs for f in increasing order, in blocks of 2^18 faces (bounded memory). The
+ * sums are those of a serial loop, whatever the thread count.
+ */
+template <size_t K, typename Compute, typename Add>
+void ForFacesInOrder(size_t n, Compute&& compute, Add&& add)
+{
+  const size_t block = size_t{ 1 } << 18;
+  std::vector<std::array<double, K>> values(std::min(n, block));
+  for (size_t begin = 0; begin < n; begin += block)
+  {
+    const size_t end = std::min(n, begin + block);
+    vtkSMPTools::For(static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end),
+      [&](vtkIdType first, vtkIdType last)
+      {
+        for (vtkIdType f = first; f < last; ++f)
+        {
+          compute(static_cast<size_t>(f), values[static_cast<size_t>(f) - begin]);
+        }
+      });
+    for (size_t f = begin; f < end; ++f)
+    {
+      add(f, values[f - begin]);
+    }
+  }
+}
+
+/**
+ * Points within `tolerance` (world units, >= 0) of each other, transitively, merged: for each
+ * point its representative, the smallest index of its group; -1 where use[i] is 0 (such
+ * points are not merged). The points used must be finite. Deterministic; within one grid cell
+ * of 1024 tolerances a point is compared with the 64 points before it (identical points, however
+ * many, still merge: they are next to each other).
+ */
+std::vector<vtkIdType> MergeCoincidentPoints(
+  const std::vector<Vec>& p, const std::vector<char>& use, double tolerance);
 
 /** The triangles of the input's polygons and strips (the points are unchanged); triangles with
  * a repeated point id are left out. */

@@ -1,8 +1,8 @@
 #include "vtkStylizePrincipalCurvatures.h"
 
-#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkStylizeMeshGeometry.h"
+#include "vtkStylizeTensorSmoothing.h"
 
 #include "vtkCellArray.h"
 #include "vtkCommunicator.h"
@@ -53,20 +53,23 @@ void ComputeNormals(vtkPolyData* input, bool useInput, Surface& s)
 {
   const vtkIdType np = input->GetNumberOfPoints();
   s.P.assign(static_cast<size_t>(np), Vec{ 0, 0, 0 });
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    input->GetPoint(i, s.P[i].data());
-  }
   s.Normal.assign(static_cast<size_t>(np), Vec{ 0, 0, 0 });
   vtkDataArray* inNormals = input->GetPointData()->GetNormals();
-  if (useInput && inNormals && inNormals->GetNumberOfComponents() == 3)
-  {
-    for (vtkIdType i = 0; i < np; ++i)
+  const bool given = useInput && inNormals && inNormals->GetNumberOfComponents() == 3;
+  vtkDataArray* points = np > 0 ? input->GetPoints()->GetData() : nullptr;
+  vtkSMPTools::For(0, np,
+    [&](vtkIdType first, vtkIdType last)
     {
-      inNormals->GetTuple(i, s.Normal[i].data());
-    }
-  }
-  else
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        points->GetTuple(i, s.P[i].data());
+        if (given)
+        {
+          inNormals->GetTuple(i, s.Normal[i].data());
+        }
+      }
+    });
+  if (!given)
   {
     s.Normal = vtkStylizeMesh::AngleWeightedNormals(s.P, s.Faces);
   }
@@ -238,35 +241,54 @@ void AccumulateTensors(
 {
   tensor.assign(s.P.size(), { 0, 0, 0 });
   weight.assign(s.P.size(), 0.0);
-  for (const auto& f : s.Faces)
-  {
-    FaceForm form;
-    if (!s.Valid[f[0]] || !s.Valid[f[1]] || !s.Valid[f[2]] || !FitFaceForm(s, f, form))
+  // Per face, on threads: each corner's (area times (A, B, C), area), zeros where undefined;
+  // summed at the vertices in face order.
+  ForFacesInOrder<12>(
+    s.Faces.size(),
+    [&](size_t index, std::array<double, 12>& out)
     {
-      continue;
-    }
-    double corner[3];
-    CornerAreas(form, corner);
-    const Vec &t = form.T, &b = form.B, &n = form.N;
-    for (int k = 0; k < 3; ++k)
-    {
-      const vtkIdType i = f[k];
-      const double c = Dot(s.Normal[i], n);
-      if (c <= -0.999999)
+      out.fill(0.0);
+      const auto& f = s.Faces[index];
+      FaceForm form;
+      if (!s.Valid[f[0]] || !s.Valid[f[1]] || !s.Valid[f[2]] || !FitFaceForm(s, f, form))
       {
-        continue; // the vertex faces away from the face: no defined rotation
+        return;
       }
-      const Vec a1 = Rotate(s.Normal[i], n, s.FrameU[i]);
-      const Vec a2 = Rotate(s.Normal[i], n, s.FrameV[i]);
-      const double au = Dot(a1, t), av = Dot(a1, b);
-      const double bu = Dot(a2, t), bv = Dot(a2, b);
-      const double w = corner[k];
-      tensor[i][0] += w * (au * au * form.FE + 2.0 * au * av * form.FF + av * av * form.FG);
-      tensor[i][1] += w * (au * bu * form.FE + (au * bv + av * bu) * form.FF + av * bv * form.FG);
-      tensor[i][2] += w * (bu * bu * form.FE + 2.0 * bu * bv * form.FF + bv * bv * form.FG);
-      weight[i] += w;
-    }
-  }
+      double corner[3];
+      CornerAreas(form, corner);
+      const Vec &t = form.T, &b = form.B, &n = form.N;
+      for (int k = 0; k < 3; ++k)
+      {
+        const vtkIdType i = f[k];
+        const double c = Dot(s.Normal[i], n);
+        if (c <= -0.999999)
+        {
+          continue; // the vertex faces away from the face: no defined rotation
+        }
+        const Vec a1 = Rotate(s.Normal[i], n, s.FrameU[i]);
+        const Vec a2 = Rotate(s.Normal[i], n, s.FrameV[i]);
+        const double au = Dot(a1, t), av = Dot(a1, b);
+        const double bu = Dot(a2, t), bv = Dot(a2, b);
+        const double w = corner[k];
+        double* o = out.data() + 4 * k;
+        o[0] = w * (au * au * form.FE + 2.0 * au * av * form.FF + av * av * form.FG);
+        o[1] = w * (au * bu * form.FE + (au * bv + av * bu) * form.FF + av * bv * form.FG);
+        o[2] = w * (bu * bu * form.FE + 2.0 * bu * bv * form.FF + bv * bv * form.FG);
+        o[3] = w;
+      }
+    },
+    [&](size_t index, const std::array<double, 12>& v)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const vtkIdType i = s.Faces[index][k];
+        for (int c = 0; c < 3; ++c)
+        {
+          tensor[i][c] += v[4 * k + c];
+        }
+        weight[i] += v[4 * k + 3];
+      }
+    });
   // The tensors per unit area, in each point's frame; zero (and no weight) where undefined.
   for (size_t i = 0; i < s.P.size(); ++i)
   {
@@ -340,54 +362,61 @@ struct CurvatureArrays
 };
 
 /**
- * The principal curvatures and directions of each point's 2x2 tensor (A, B, C) in its frame,
- * written to arrays. The MinAbs/MaxAbs directions stay zero at planar points (the larger |k|
- * times diagonal not above planarTolerance) and umbilic points (k1 - k2 not above
+ * The principal curvatures and directions of point i's 2x2 tensor (A, B, C) in its frame,
+ * written to the arrays' tuple i. The MinAbs/MaxAbs directions stay zero at planar points (the
+ * larger |k| times diagonal not above planarTolerance) and umbilic points (k1 - k2 not above
  * umbilicTolerance times |k1| + |k2|).
  */
+void DecomposePoint(const Surface& s, const std::array<double, 3>& tensor, double weight,
+  double diagonal, double planarTolerance, double umbilicTolerance, size_t i, CurvatureArrays& out)
+{
+  const double A = tensor[0], B = tensor[1], C = tensor[2];
+  if (!(weight > 0.0) || !s.Framed[i] || !std::isfinite(A) || !std::isfinite(B) ||
+    !std::isfinite(C))
+  {
+    return;
+  }
+  const double half = 0.5 * (A + C);
+  const double radius = std::hypot(0.5 * (A - C), B);
+  const double k1 = half + radius, k2 = half - radius;
+  const double theta = 0.5 * std::atan2(2.0 * B, A - C);
+  const double ct = std::cos(theta), st = std::sin(theta);
+  const Vec d1 = Add(Scale(s.FrameU[i], ct), Scale(s.FrameV[i], st));
+  const Vec d2 = Add(Scale(s.FrameU[i], -st), Scale(s.FrameV[i], ct));
+  const Vec bis = Scale(Add(d1, d2), 1.0 / std::sqrt(2.0));
+  const vtkIdType id = static_cast<vtkIdType>(i);
+  out.KMax->SetValue(id, k1);
+  out.KMin->SetValue(id, k2);
+  out.DMax->SetTuple(id, d1.data());
+  out.DMin->SetTuple(id, d2.data());
+  out.Bisector->SetTuple(id, bis.data());
+  out.Mean->SetValue(id, half);
+  out.Gauss->SetValue(id, k1 * k2);
+  const double larger = std::max(std::abs(k1), std::abs(k2));
+  const bool planar = !(larger * diagonal > planarTolerance);
+  const bool umbilic = !(k1 - k2 > umbilicTolerance * (std::abs(k1) + std::abs(k2)));
+  if (!planar && !umbilic)
+  {
+    const bool maxIsLarger = std::abs(k1) >= std::abs(k2);
+    out.DMinAbs->SetTuple(id, (maxIsLarger ? d2 : d1).data());
+    out.DMaxAbs->SetTuple(id, (maxIsLarger ? d1 : d2).data());
+  }
+}
+
+/** DecomposePoint() for every point, on vtkSMPTools' threads (each writes its own tuples). */
 void Decompose(const Surface& s, const std::vector<std::array<double, 3>>& tensor,
   const std::vector<double>& weight, double diagonal, double planarTolerance,
   double umbilicTolerance, CurvatureArrays& out)
 {
-  for (size_t i = 0; i < s.P.size(); ++i)
-  {
-    if (!(weight[i] > 0.0) || !s.Framed[i])
+  vtkSMPTools::For(0, static_cast<vtkIdType>(s.P.size()),
+    [&](vtkIdType first, vtkIdType last)
     {
-      continue;
-    }
-    const double A = tensor[i][0];
-    const double B = tensor[i][1];
-    const double C = tensor[i][2];
-    if (!std::isfinite(A) || !std::isfinite(B) || !std::isfinite(C))
-    {
-      continue;
-    }
-    const double half = 0.5 * (A + C);
-    const double radius = std::hypot(0.5 * (A - C), B);
-    const double k1 = half + radius, k2 = half - radius;
-    const double theta = 0.5 * std::atan2(2.0 * B, A - C);
-    const double ct = std::cos(theta), st = std::sin(theta);
-    const Vec d1 = Add(Scale(s.FrameU[i], ct), Scale(s.FrameV[i], st));
-    const Vec d2 = Add(Scale(s.FrameU[i], -st), Scale(s.FrameV[i], ct));
-    const Vec bis = Scale(Add(d1, d2), 1.0 / std::sqrt(2.0));
-    const vtkIdType id = static_cast<vtkIdType>(i);
-    out.KMax->SetValue(id, k1);
-    out.KMin->SetValue(id, k2);
-    out.DMax->SetTuple(id, d1.data());
-    out.DMin->SetTuple(id, d2.data());
-    out.Bisector->SetTuple(id, bis.data());
-    out.Mean->SetValue(id, half);
-    out.Gauss->SetValue(id, k1 * k2);
-    const double larger = std::max(std::abs(k1), std::abs(k2));
-    const bool planar = !(larger * diagonal > planarTolerance);
-    const bool umbilic = !(k1 - k2 > umbilicTolerance * (std::abs(k1) + std::abs(k2)));
-    if (!planar && !umbilic)
-    {
-      const bool maxIsLarger = std::abs(k1) >= std::abs(k2);
-      out.DMinAbs->SetTuple(id, (maxIsLarger ? d2 : d1).data());
-      out.DMaxAbs->SetTuple(id, (maxIsLarger ? d1 : d2).data());
-    }
-  }
+      for (vtkIdType p = first; p < last; ++p)
+      {
+        DecomposePoint(s, tensor[p], weight[p], diagonal, planarTolerance, umbilicTolerance,
+          static_cast<size_t>(p), out);
+      }
+    });
 }
 }
 
@@ -397,6 +426,7 @@ void vtkStylizePrincipalCurvatures::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "UseInputNormals: " << this->UseInputNormals << "\n";
   os << indent << "SmoothingRadius: " << this->SmoothingRadius << "\n";
+  os << indent << "SmoothingCellSize: " << this->SmoothingCellSize << "\n";
   os << indent << "MaximumNeighbors: " << this->MaximumNeighbors << "\n";
   os << indent << "PlanarTolerance: " << this->PlanarTolerance << "\n";
   os << indent << "UmbilicTolerance: " << this->UmbilicTolerance << "\n";
@@ -488,140 +518,36 @@ int vtkStylizePrincipalCurvatures::RequestData(
   std::vector<std::array<double, 3>> tensor;
   std::vector<double> weight;
   AccumulateTensors(s, tensor, weight);
+  this->UpdateProgress(0.2);
 
   const double smoothing =
     np > 0 && std::isfinite(diagonal) ? this->SmoothingRadius * diagonal : 0.0;
   if (smoothing > 0.0)
   {
-    tensor =
-      this->SmoothTensors(s.P, s.Normal, s.FrameU, s.FrameV, s.Faces, tensor, weight, smoothing);
+    // The smoothing is the long part on large meshes: progress from 0.2 to 0.9, and an abort
+    // (AbortExecute, ParaView's and the program's interrupt) leaves the output without arrays.
+    const vtkStylizeTensorSmoothing::Surface surface{ s.P, s.Normal, s.FrameU, s.FrameV, s.Faces,
+      tensor, weight };
+    auto progress = [this](double done)
+    {
+      this->UpdateProgress(0.2 + 0.7 * done);
+      return !this->GetAbortExecute();
+    };
+    bool stopped = false;
+    const size_t most = static_cast<size_t>(this->MaximumNeighbors);
+    tensor = this->SmoothingCellSize > 0.0
+      ? vtkStylizeTensorSmoothing::Clustered(
+          surface, smoothing, this->SmoothingCellSize * smoothing, most, progress, stopped)
+      : vtkStylizeTensorSmoothing::Exact(surface, smoothing, most, progress, stopped);
+    if (stopped)
+    {
+      return 1;
+    }
   }
+  this->UpdateProgress(0.9);
 
   CurvatureArrays arrays(np);
   Decompose(s, tensor, weight, diagonal, this->PlanarTolerance, this->UmbilicTolerance, arrays);
   arrays.AddTo(output->GetPointData(), this->TangentDirection);
   return 1;
-}
-
-//------------------------------------------------------------------------------
-std::vector<std::array<double, 3>> vtkStylizePrincipalCurvatures::SmoothTensors(
-  const std::vector<std::array<double, 3>>& p, const std::vector<std::array<double, 3>>& normal,
-  const std::vector<std::array<double, 3>>& frameU,
-  const std::vector<std::array<double, 3>>& frameV,
-  const std::vector<std::array<vtkIdType, 3>>& faces,
-  const std::vector<std::array<double, 3>>& tensor, const std::vector<double>& area,
-  double radius) const
-{
-  const size_t np = p.size();
-  // Edge adjacency (compressed rows).
-  std::vector<std::pair<vtkIdType, vtkIdType>> edges;
-  edges.reserve(faces.size() * 6);
-  for (const auto& f : faces)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      edges.emplace_back(f[k], f[(k + 1) % 3]);
-      edges.emplace_back(f[(k + 1) % 3], f[k]);
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  std::vector<size_t> start(np + 1, 0);
-  for (const auto& e : edges)
-  {
-    ++start[static_cast<size_t>(e.first) + 1];
-  }
-  for (size_t i = 0; i < np; ++i)
-  {
-    start[i + 1] += start[i];
-  }
-
-  const double sigma2 = 0.25 * radius * radius; // a Gaussian of sigma radius / 2
-  const double radius2 = radius * radius;
-  const size_t most = static_cast<size_t>(this->MaximumNeighbors);
-  std::vector<std::array<double, 3>> out(tensor);
-  // Each point's sum is its own (out[i] alone is written): the points are shared among
-  // vtkSMPTools' threads, each with its own visit stamps and queue, and the result does not
-  // depend on the thread count.
-  struct Scratch
-  {
-    std::vector<size_t> Stamp;
-    std::vector<size_t> Queue;
-  };
-  vtkSMPThreadLocal<Scratch> scratch;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(np), 1024,
-    [&](vtkIdType first, vtkIdType last)
-    {
-      Scratch& local = scratch.Local();
-      if (local.Stamp.size() != np)
-      {
-        local.Stamp.assign(np, np);
-      }
-      std::vector<size_t>& stamp = local.Stamp;
-      std::vector<size_t>& queue = local.Queue;
-      for (size_t i = static_cast<size_t>(first); i < static_cast<size_t>(last); ++i)
-      {
-        this->SmoothPoint(i, p, normal, frameU, frameV, tensor, area, edges, start, radius2, sigma2,
-          most, stamp, queue, out[i]);
-      }
-    });
-  return out;
-}
-
-//------------------------------------------------------------------------------
-void vtkStylizePrincipalCurvatures::SmoothPoint(size_t i,
-  const std::vector<std::array<double, 3>>& p, const std::vector<std::array<double, 3>>& normal,
-  const std::vector<std::array<double, 3>>& frameU,
-  const std::vector<std::array<double, 3>>& frameV,
-  const std::vector<std::array<double, 3>>& tensor, const std::vector<double>& area,
-  const std::vector<std::pair<vtkIdType, vtkIdType>>& edges, const std::vector<size_t>& start,
-  double radius2, double sigma2, size_t most, std::vector<size_t>& stamp,
-  std::vector<size_t>& queue, std::array<double, 3>& out) const
-{
-  if (!(area[i] > 0.0))
-  {
-    return;
-  }
-  double sum[3] = { 0, 0, 0 };
-  double wsum = 0.0;
-  queue.assign(1, i);
-  stamp[i] = i;
-  // Breadth first through the edges, within the radius, up to MaximumNeighbors points.
-  for (size_t head = 0; head < queue.size() && head < most; ++head)
-  {
-    const size_t j = queue[head];
-    const Vec dj = Sub(p[j], p[i]);
-    if (area[j] > 0.0 && Dot(normal[j], normal[i]) > -0.999999)
-    {
-      // j's frame turned onto i's tangent plane, then j's tensor in i's frame.
-      const Vec u = Rotate(normal[j], normal[i], frameU[j]);
-      const Vec v = Rotate(normal[j], normal[i], frameV[j]);
-      const double a = Dot(frameU[i], u), b = Dot(frameU[i], v);
-      const double c = Dot(frameV[i], u), d = Dot(frameV[i], v);
-      const double A = tensor[j][0], B = tensor[j][1], C = tensor[j][2];
-      const double w = area[j] * std::exp(-0.5 * Dot(dj, dj) / sigma2);
-      sum[0] += w * (A * a * a + 2.0 * B * a * b + C * b * b);
-      sum[1] += w * (A * a * c + B * (a * d + b * c) + C * b * d);
-      sum[2] += w * (A * c * c + 2.0 * B * c * d + C * d * d);
-      wsum += w;
-    }
-    for (size_t e = start[j]; e < start[j + 1]; ++e)
-    {
-      const size_t k = static_cast<size_t>(edges[e].second);
-      if (stamp[k] == i)
-      {
-        continue;
-      }
-      stamp[k] = i;
-      const Vec dk = Sub(p[k], p[i]);
-      if (Dot(dk, dk) <= radius2)
-      {
-        queue.push_back(k);
-      }
-    }
-  }
-  if (wsum > 0.0 && std::isfinite(sum[0] + sum[1] + sum[2]))
-  {
-    out = { sum[0] / wsum, sum[1] / wsum, sum[2] / wsum };
-  }
 }

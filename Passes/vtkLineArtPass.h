@@ -24,6 +24,9 @@
  * its paper or tone, without lines, over the line art with its opacity.
  * Lengths are in points (one pixel of an image ReferenceHeight pixels tall). Method, measures
  * and costs: docs/algorithms.md ("Feature lines").
+ * The pass invokes ProgressEvent (a double in [0, 1]) while a frame finds the lines of its
+ * surfaces (seconds for the first frame of millions of triangles): the vtkstylize program's
+ * progress bar.
  *
  * @sa vtkStylizeFeatureLines vtkStylizeLineVisibility vtkComicPass vtkSketchPass
  */

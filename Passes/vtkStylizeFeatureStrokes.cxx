@@ -2,6 +2,7 @@
 
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -592,6 +593,22 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
         in.Cache[{ other.Data, other.Wireframe }]->SurfaceOf(), other.Matrix);
     }
   }
+  // Each surface's lines report their progress as this object's (ProgressEvent, over all the
+  // surfaces): the line art's first frame of a large mesh takes seconds.
+  struct Progress
+  {
+    vtkObject* Self;
+    double Done, Share;
+    static void Call(vtkObject*, unsigned long, void* self, void* data)
+    {
+      const auto* p = static_cast<Progress*>(self);
+      double fraction = p->Done + p->Share * *static_cast<double*>(data);
+      p->Self->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+    }
+  } progress{ this, 0.0, items.empty() ? 1.0 : 1.0 / static_cast<double>(items.size()) };
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetClientData(&progress);
+  forward->SetCallback(&Progress::Call);
   for (const Item& item : items)
   {
     Surface& s = *in.Cache[{ item.Data, item.Wireframe }];
@@ -614,7 +631,10 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
     {
       s.Visibility->AddSharedOccluder(occluder);
     }
+    const unsigned long tag = s.Lines->AddObserver(vtkCommand::ProgressEvent, forward);
     s.Visibility->Update();
+    s.Lines->RemoveObserver(tag);
+    progress.Done += progress.Share;
     sink.Append(s.Visibility->GetOutput(), item.Matrix);
   }
   // A surface is dropped when its data is gone, or once 8 still frames in a row did not draw it.

@@ -77,6 +77,7 @@ int ErrorDescriptor = 2;
 
 void WriteError(const std::string& message)
 {
+  ClearProgress();
   const std::string line = "vtkstylize: " + OneLine(message, 1000) + "\n";
   ssize_t ignored = ::write(ErrorDescriptor, line.data(), line.size());
   (void)ignored;
@@ -113,6 +114,7 @@ extern "C" void CrashHandler(int sig)
     default:
       break;
   }
+  ClearProgress();
   ssize_t ignored = ::write(ErrorDescriptor, text, std::strlen(text));
   (void)ignored;
   std::signal(sig, SIG_DFL);
@@ -325,6 +327,10 @@ int Run(int argc, char* argv[])
               << std::flush;
     return 0;
   }
+  if (opt.Quiet)
+  {
+    SetProgressDescriptor(-1);
+  }
   LimitInputMemory(opt);
   const bool builtIn = opt.Input.empty();
   if (!builtIn && !IsSupportedInput(opt.Input))
@@ -384,6 +390,7 @@ int Run(int argc, char* argv[])
     gbuffer->SetLightingPass(lighting);
   }
   ren->SetPass(style->MakePass(lighting, gbuffer, opt));
+  ReportProgress(ren->GetPass(), "finding the lines"); // (the line art's first frame)
 
   // A picture of the background alone: an error when the data has no extent (no framing can
   // show it), else a warning (a stray far point, a zero spacing, cells without area or an image
@@ -428,6 +435,7 @@ int main(int argc, char* argv[])
     if (saved >= 0 && null >= 0)
     {
       ErrorDescriptor = saved;
+      SetProgressDescriptor(::isatty(saved) ? saved : -1);
       ::fcntl(saved, F_SETFD, FD_CLOEXEC);
       ::dup2(null, 2);
     }

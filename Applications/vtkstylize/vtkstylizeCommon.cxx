@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sys/resource.h>
 
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
@@ -10,6 +12,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <sstream>
 #include <vector>
@@ -146,6 +150,95 @@ namespace
 /** The installed capture window, owned by vtkOutputWindow's singleton. */
 vtkStylizeOutputWindow* Capture = nullptr;
 } // namespace
+
+namespace
+{
+int ProgressDescriptor = -1;
+volatile std::sig_atomic_t ProgressShown = 0; // a bar is on the terminal's current line
+
+/** One observed object's step: its label, when it started, and what was last drawn. */
+struct ProgressStep
+{
+  std::string Label;
+  bool Active = false;
+  std::chrono::steady_clock::time_point Start;
+  int Drawn = -1; // the percentage on the terminal
+};
+
+void WriteProgress(const std::string& text)
+{
+  if (ProgressDescriptor >= 0)
+  {
+    ssize_t ignored = ::write(ProgressDescriptor, text.data(), text.size());
+    (void)ignored;
+  }
+}
+
+void OnProgress(vtkObject*, unsigned long, void* self, void* data)
+{
+  auto* step = static_cast<ProgressStep*>(self);
+  const double fraction = data ? *static_cast<double*>(data) : 0.0;
+  const auto now = std::chrono::steady_clock::now();
+  if (!step->Active)
+  {
+    step->Active = true;
+    step->Start = now;
+    step->Drawn = -1;
+  }
+  if (!(fraction < 1.0))
+  {
+    step->Active = false;
+    if (step->Drawn >= 0)
+    {
+      ClearProgress();
+    }
+    return;
+  }
+  const int percent = static_cast<int>(100.0 * std::max(0.0, fraction));
+  if (ProgressDescriptor < 0 || percent == step->Drawn ||
+    now - step->Start < std::chrono::seconds(1))
+  {
+    return;
+  }
+  step->Drawn = percent;
+  const int width = 30, filled = width * percent / 100;
+  WriteProgress("\r\033[Kvtkstylize: " + step->Label + " [" + std::string(filled, '=') +
+    std::string(width - filled, ' ') + "] " + std::to_string(percent) + "%");
+  ProgressShown = 1;
+}
+}
+
+void SetProgressDescriptor(int descriptor)
+{
+  ProgressDescriptor = descriptor;
+}
+
+void ReportProgress(vtkObject* object, const std::string& label)
+{
+  if (!object)
+  {
+    return;
+  }
+  // The step lives as long as the observer (deleted with the command).
+  auto* step = new ProgressStep;
+  step->Label = label;
+  vtkNew<vtkCallbackCommand> command;
+  command->SetClientData(step);
+  command->SetCallback(&OnProgress);
+  command->SetClientDataDeleteCallback([](void* self) { delete static_cast<ProgressStep*>(self); });
+  object->AddObserver(vtkCommand::ProgressEvent, command);
+}
+
+void ClearProgress()
+{
+  if (ProgressShown && ProgressDescriptor >= 0)
+  {
+    static const char clear[] = "\r\033[K";
+    ssize_t ignored = ::write(ProgressDescriptor, clear, sizeof(clear) - 1);
+    (void)ignored;
+    ProgressShown = 0;
+  }
+}
 
 void InstallMessageCapture(int echoDescriptor)
 {

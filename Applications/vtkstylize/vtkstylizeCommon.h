@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+class vtkObject;
+
 namespace vtkstylize
 {
 constexpr int ExitUsage = 2;   // bad option, option value or INPUT extension
@@ -75,6 +77,20 @@ std::string FormatNumber(double value);
  * message is also written there as it arrives.
  */
 void InstallMessageCapture(int echoDescriptor);
+
+/**
+ * Where progress bars go: a descriptor of a terminal, or -1 (the default: no bars). main() sets
+ * the real stderr when it is a terminal, Run() -1 with --quiet.
+ */
+void SetProgressDescriptor(int descriptor);
+/**
+ * Shows the ProgressEvent of `object` (a double in [0, 1]) as a bar on the progress descriptor,
+ * "vtkstylize: LABEL [=====     ]  42%", rewritten in place, once a step (from its first event
+ * to the event at 1) has taken more than a second; the line is cleared when the step ends.
+ */
+void ReportProgress(vtkObject* object, const std::string& label);
+/** Clears a bar shown on the progress descriptor (before a message; async-signal-safe). */
+void ClearProgress();
 
 /** Restores VTK's default output window. */
 void RemoveMessageCapture();

@@ -301,6 +301,7 @@ void FinishParts(std::vector<Part>& parts, const std::string& what)
       normals->ConsistencyOn();
       normals->SplittingOn();
       normals->SetFeatureAngle(45.0);
+      ReportProgress(normals, "normals");
       normals->Update();
       p.Surface = normals->GetOutput();
     }
@@ -320,6 +321,7 @@ void AddPrincipalDirections(
       vtkNew<vtkStylizePrincipalCurvatures> curvatures;
       curvatures->SetInputData(p.Surface);
       curvatures->SetSmoothingRadius(smoothingRadius);
+      ReportProgress(curvatures, "principal curvatures");
       curvatures->Update();
       p.Surface = curvatures->GetOutput();
     }
