@@ -318,7 +318,7 @@ int vtkStylizeFeatureLines::RequestData(
     if (this->GetAbortExecute())
     {
       cache.Curvatures = FL::Curvature();
-      return 1; // interrupted: no lines, and the curvature is computed again next time
+      return 1; // interrupted: no lines; nothing is kept, the next execution starts over
     }
     FL::RidgesAndValleys(
       cache.Surface, cache.Curvatures, this->RidgeThreshold, cache.Ridges, cache.Valleys);

@@ -31,9 +31,9 @@
  * curvature's kinds keeps the curvature computed for an earlier one.
  * Progress (ProgressEvent) runs through the weld (to 0.05), the curvature (to 0.8) and the
  * ridges and valleys (to 0.9); AbortExecute set during the curvature stops it: no lines, and
- * the curvature is computed again at the next update. The work is on vtkSMPTools' threads with a
- * result that does not depend on their number.
- * Method, thresholds and their tuning on real data: docs/algorithms.md ("Feature lines").
+ * nothing kept (the next execution, after Modified(), starts over). The work is on vtkSMPTools'
+ * threads with a result that does not depend on their number. Method, thresholds and their tuning
+ * on real data: docs/algorithms.md ("Feature lines").
  *
  * @sa vtkStylizePrincipalCurvatures vtkFeatureEdges vtkPolyDataSilhouette
  */

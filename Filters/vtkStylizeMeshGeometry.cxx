@@ -125,17 +125,29 @@ std::vector<vtkIdType> vtkStylizeMesh::MergeCoincidentPoints(
     return (static_cast<uint64_t>(g[0]) << 42) | (static_cast<uint64_t>(g[1]) << 21) |
       static_cast<uint64_t>(g[2]);
   };
-  std::vector<std::pair<uint64_t, vtkIdType>> keyed;
-  keyed.reserve(np);
+  // The used points sorted by cell, then coordinates (identical points are next to each other),
+  // then index: deterministic.
+  struct Entry
+  {
+    uint64_t Key;
+    Vec X;
+    vtkIdType Id;
+    bool operator<(const Entry& o) const
+    {
+      return Key != o.Key ? Key < o.Key : X != o.X ? X < o.X : Id < o.Id;
+    }
+  };
+  std::vector<Entry> sorted;
+  sorted.reserve(np);
   for (size_t i = 0; i < np; ++i)
   {
     if (use[i])
     {
       const double g[3] = { cellOf(p[i], 0), cellOf(p[i], 1), cellOf(p[i], 2) };
-      keyed.emplace_back(keyOf(g), static_cast<vtkIdType>(i));
+      sorted.push_back({ keyOf(g), p[i], static_cast<vtkIdType>(i) });
     }
   }
-  vtkSMPTools::Sort(keyed.begin(), keyed.end());
+  vtkSMPTools::Sort(sorted.begin(), sorted.end());
   auto find = [&parent](vtkIdType i)
   {
     while (parent[i] != i)
@@ -145,31 +157,61 @@ std::vector<vtkIdType> vtkStylizeMesh::MergeCoincidentPoints(
     }
     return i;
   };
-  const double t2 = tolerance * tolerance;
-  auto join = [&](vtkIdType a, vtkIdType b)
+  auto unite = [&](vtkIdType a, vtkIdType b)
   {
-    const Vec d = Sub(p[a], p[b]);
+    const vtkIdType ra = find(a), rb = find(b);
+    parent[std::max(ra, rb)] = std::min(ra, rb);
+  };
+  const double t2 = tolerance * tolerance;
+  auto join = [&](const Entry& a, const Entry& b)
+  {
+    const Vec d = Sub(a.X, b.X);
     if (Dot(d, d) <= t2)
     {
-      const vtkIdType ra = find(a), rb = find(b);
-      parent[std::max(ra, rb)] = std::min(ra, rb);
+      unite(a.Id, b.Id);
     }
   };
-  const size_t n = keyed.size();
+  // Identical points: each joined to the one before it, and left out of the search below (it is
+  // found through that one).
+  const size_t n = sorted.size();
+  std::vector<char> repeated(n, 0);
+  for (size_t e = 1; e < n; ++e)
+  {
+    if (sorted[e].Key == sorted[e - 1].Key && sorted[e].X == sorted[e - 1].X)
+    {
+      repeated[e] = 1;
+      unite(sorted[e].Id, sorted[e - 1].Id);
+    }
+  }
+  // Distinct points within the tolerance: in its cell, the points before it with x within the
+  // tolerance; in the cells across the sides it is within the tolerance of, the points with x
+  // within the tolerance of its own. At most 256 comparisons each way (only a cloud of more
+  // points than that within a tolerance, not in real meshes, could miss a merge).
+  const size_t most = 256;
   for (size_t e = 0; e < n; ++e)
   {
-    const vtkIdType i = keyed[e].second;
-    // The points before it in its cell (sorted by index), at most 64 back.
-    for (size_t b = e; b > 0 && e - b < 64 && keyed[b - 1].first == keyed[e].first; --b)
+    if (repeated[e])
     {
-      join(i, keyed[b - 1].second);
+      continue;
     }
-    // The cells across the sides it is within the tolerance of.
+    const Entry& me = sorted[e];
+    size_t compared = 0;
+    for (size_t b = e; b > 0 && sorted[b - 1].Key == me.Key &&
+         me.X[0] - sorted[b - 1].X[0] <= tolerance && compared < most;
+         --b)
+    {
+      if (!repeated[b - 1])
+      {
+        join(me, sorted[b - 1]);
+        ++compared;
+      }
+    }
     int low[3], high[3];
+    double g[3];
     for (int a = 0; a < 3; ++a)
     {
-      const double g = cellOf(p[i], a);
-      const double x = (p[i][a] - lo[a]) / side - (g - 1.0); // in [0, 1): its place in the cell
+      g[a] = cellOf(me.X, a);
+      const double x = (me.X[a] - lo[a]) / side - (g[a] - 1.0); // in [0, 1): its place in the cell
       low[a] = x * side <= tolerance ? -1 : 0;
       high[a] = (1.0 - x) * side <= tolerance ? 1 : 0;
     }
@@ -183,13 +225,19 @@ std::vector<vtkIdType> vtkStylizeMesh::MergeCoincidentPoints(
           {
             continue;
           }
-          const double g[3] = { cellOf(p[i], 0) + dx, cellOf(p[i], 1) + dy, cellOf(p[i], 2) + dz };
-          const uint64_t key = keyOf(g);
-          auto it = std::lower_bound(
-            keyed.begin(), keyed.end(), std::pair<uint64_t, vtkIdType>(key, VTK_ID_MIN));
-          for (int k = 0; it != keyed.end() && it->first == key && k < 64; ++it, ++k)
+          const double h[3] = { g[0] + dx, g[1] + dy, g[2] + dz };
+          const Entry from{ keyOf(h), Vec{ me.X[0] - tolerance, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX },
+            VTK_ID_MIN };
+          compared = 0;
+          for (auto it = std::lower_bound(sorted.begin(), sorted.end(), from); it != sorted.end() &&
+               it->Key == from.Key && it->X[0] <= me.X[0] + tolerance && compared < most;
+               ++it)
           {
-            join(i, it->second);
+            if (!repeated[it - sorted.begin()])
+            {
+              join(me, *it);
+              ++compared;
+            }
           }
         }
       }

@@ -102,9 +102,10 @@ void ForFacesInOrder(size_t n, Compute&& compute, Add&& add)
 /**
  * Points within `tolerance` (world units, >= 0) of each other, transitively, merged: for each
  * point its representative, the smallest index of its group; -1 where use[i] is 0 (such
- * points are not merged). The points used must be finite. Deterministic; within one grid cell
- * of 1024 tolerances a point is compared with the 64 points before it (identical points, however
- * many, still merge: they are next to each other).
+ * points are not merged). The points used must be finite. Deterministic. Identical points merge
+ * however many there are; a point is compared with at most 256 distinct points within the
+ * tolerance along x in each grid cell of 1024 tolerances it may reach (only a cloud of more
+ * points than that within a tolerance could keep two of them apart).
  */
 std::vector<vtkIdType> MergeCoincidentPoints(
   const std::vector<Vec>& p, const std::vector<char>& use, double tolerance);

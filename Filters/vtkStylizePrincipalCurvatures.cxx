@@ -525,7 +525,7 @@ int vtkStylizePrincipalCurvatures::RequestData(
   if (smoothing > 0.0)
   {
     // The smoothing is the long part on large meshes: progress from 0.2 to 0.9, and an abort
-    // (AbortExecute, ParaView's and the program's interrupt) leaves the output without arrays.
+    // (AbortExecute: ParaView's abort button, or an owner's) leaves the output without arrays.
     const vtkStylizeTensorSmoothing::Surface surface{ s.P, s.Normal, s.FrameU, s.FrameV, s.Faces,
       tensor, weight };
     auto progress = [this](double done)

@@ -1,7 +1,7 @@
 #include "vtkStylizeTensorSmoothing.h"
 
-#include "vtkSMPThreadLocal.h"
 #include "vtkMath.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
@@ -21,8 +21,12 @@ using namespace vtkStylizeMesh;
 Tensor Turn(const Vec& n0, const Vec& u0, const Vec& v0, const Tensor& t, const Vec& n1,
   const Vec& u1, const Vec& v1)
 {
-  const Vec u = Rotate(n0, n1, u0);
-  const Vec v = Rotate(n0, n1, v0);
+  // (Rotate(n0, n1, x) for x = u0 and v0, the axis and the cosine computed once)
+  const double cosine = Dot(n0, n1);
+  const Vec w = Cross(n0, n1);
+  const double k = 1.0 / (1.0 + cosine);
+  const Vec u = Add(Add(Scale(u0, cosine), Cross(w, u0)), Scale(w, Dot(w, u0) * k));
+  const Vec v = Add(Add(Scale(v0, cosine), Cross(w, v0)), Scale(w, Dot(w, v0) * k));
   const double a = Dot(u1, u), b = Dot(u1, v);
   const double c = Dot(v1, u), d = Dot(v1, v);
   const double A = t[0], B = t[1], C = t[2];
@@ -154,6 +158,12 @@ std::vector<uint64_t> CellKeys(const Surface& s, double& cell)
   {
     cell = std::max(cell, (high[a] - low[a]) / axisCells);
   }
+  // The grid's lines at multiples of the cell in world coordinates, so that the pieces of a mesh
+  // split over processes share them.
+  for (int a = 0; a < 3; ++a)
+  {
+    low[a] = std::floor(low[a] / cell) * cell;
+  }
   std::vector<uint64_t> key(np, NoKey);
   vtkSMPTools::For(0, static_cast<vtkIdType>(np),
     [&](vtkIdType first, vtkIdType last)
@@ -168,7 +178,8 @@ std::vector<uint64_t> CellKeys(const Surface& s, double& cell)
         for (int a = 0; a < 3; ++a)
         {
           const double g = std::floor((s.P[i][a] - low[a]) / cell);
-          const uint64_t v = static_cast<uint64_t>(std::min(std::max(g, 0.0), axisCells));
+          const uint64_t v =
+            std::isfinite(g) ? static_cast<uint64_t>(std::min(std::max(g, 0.0), axisCells)) : 0;
           for (int bit = 0; bit < 20; ++bit)
           {
             k |= ((v >> bit) & 1u) << (3 * bit + a);
@@ -471,7 +482,7 @@ bool Interpolate(const Surface& s, const Clusters& c, const std::vector<Tensor>&
         // The linear fit's value at the point where the system is well conditioned (the
         // clusters around it in two directions); else the weighted mean.
         const double det = vtkMath::Determinant3x3(m);
-        const double scale = m[0][0] * m[0][0] * (m[1][1] + m[2][2]) * (m[1][1] + m[2][2]);
+        const double scale = m[0][0] * (m[1][1] + m[2][2]) * (m[1][1] + m[2][2]);
         if (det > 1e-3 * scale)
         {
           double inverse[3][3];
@@ -536,8 +547,8 @@ std::vector<Tensor> Exact(
           {
             const Vec dj = Sub(s.P[j], s.P[i]);
             const double w = Weight(s.Area[j], Dot(dj, dj), sigma2);
-            const Tensor t = Turn(s.Normal[j], s.FrameU[j], s.FrameV[j], s.Tensors[j],
-              s.Normal[i], s.FrameU[i], s.FrameV[i]);
+            const Tensor t = Turn(s.Normal[j], s.FrameU[j], s.FrameV[j], s.Tensors[j], s.Normal[i],
+              s.FrameU[i], s.FrameV[i]);
             for (int c = 0; c < 3; ++c)
             {
               sum[c] += w * t[c];

@@ -598,14 +598,15 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
   struct Progress
   {
     vtkObject* Self;
-    double Done, Share;
+    size_t Done, Count; // surfaces done, surfaces
     static void Call(vtkObject*, unsigned long, void* self, void* data)
     {
       const auto* p = static_cast<Progress*>(self);
-      double fraction = p->Done + p->Share * *static_cast<double*>(data);
+      double fraction =
+        std::min((static_cast<double>(p->Done) + *static_cast<double*>(data)) / p->Count, 0.999);
       p->Self->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
     }
-  } progress{ this, 0.0, items.empty() ? 1.0 : 1.0 / static_cast<double>(items.size()) };
+  } progress{ this, 0, std::max<size_t>(1, items.size()) };
   vtkNew<vtkCallbackCommand> forward;
   forward->SetClientData(&progress);
   forward->SetCallback(&Progress::Call);
@@ -634,9 +635,11 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
     const unsigned long tag = s.Lines->AddObserver(vtkCommand::ProgressEvent, forward);
     s.Visibility->Update();
     s.Lines->RemoveObserver(tag);
-    progress.Done += progress.Share;
+    ++progress.Done;
     sink.Append(s.Visibility->GetOutput(), item.Matrix);
   }
+  double done = 1.0; // (also when every surface's lines were kept: no event above)
+  this->InvokeEvent(vtkCommand::ProgressEvent, &done);
   // A surface is dropped when its data is gone, or once 8 still frames in a row did not draw it.
   // ParaView's interactive frames draw a decimated copy (LOD) of large data and its still frames
   // the full geometry, with still frames of their own between drags: each kind of frame keeps

@@ -286,6 +286,7 @@ std::string NothingDrawnWarning(const Options& opt, const double bounds[6], cons
  */
 void Report(const Options& opt, const std::vector<std::string>& written)
 {
+  ClearProgress(); // (a bar left by a step that did not end)
   for (const std::string& warning : opt.Warnings)
   {
     WriteError("warning: " + warning);

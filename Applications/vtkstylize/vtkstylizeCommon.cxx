@@ -15,6 +15,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <vector>
 
@@ -195,16 +196,20 @@ void OnProgress(vtkObject*, unsigned long, void* self, void* data)
     return;
   }
   const int percent = static_cast<int>(100.0 * std::max(0.0, fraction));
+  // (VTKSTYLIZE_PROGRESS_DELAY: the second before a bar shows, changed by the tests)
+  static const double delay = std::getenv("VTKSTYLIZE_PROGRESS_DELAY")
+    ? std::max(0.0, std::atof(std::getenv("VTKSTYLIZE_PROGRESS_DELAY")))
+    : 1.0;
   if (ProgressDescriptor < 0 || percent == step->Drawn ||
-    now - step->Start < std::chrono::seconds(1))
+    std::chrono::duration<double>(now - step->Start).count() < delay)
   {
     return;
   }
   step->Drawn = percent;
   const int width = 30, filled = width * percent / 100;
+  ProgressShown = 1; // (before the write: an interrupt during it still clears the line)
   WriteProgress("\r\033[Kvtkstylize: " + step->Label + " [" + std::string(filled, '=') +
     std::string(width - filled, ' ') + "] " + std::to_string(percent) + "%");
-  ProgressShown = 1;
 }
 }
 

@@ -7,7 +7,8 @@
 //
 // --quick: the coarser meshes only; --check: exit 1 unless the default cell size (0.2) is as
 // accurate as exact against the analytic values (the bounds below), and the result does not
-// depend on the thread count. The checked-in study is Testing/Benchmark/results/curvature-accuracy.md.
+// depend on the thread count. The checked-in study is
+// Testing/Benchmark/results/curvature-accuracy.md.
 #include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkPointData.h"
@@ -269,8 +270,8 @@ int main(int argc, char* argv[])
             (worse(r.KMedian, reference.KMedian) || worse(r.KP95, reference.KP95) ||
               r.AMedian > reference.AMedian + 0.5 || r.AP95 > reference.AP95 + 0.5))
           {
-            std::printf("FAIL: %s radius %.2f: cell 0.2 less accurate than exact\n",
-              s.Name.c_str(), radius);
+            std::printf(
+              "FAIL: %s radius %.2f: cell 0.2 less accurate than exact\n", s.Name.c_str(), radius);
             ok = false;
           }
         }
