@@ -86,47 +86,18 @@ std::vector<vtkStylizeMesh::Vec> vtkStylizeMesh::AngleWeightedNormals(
   return normal;
 }
 
-//------------------------------------------------------------------------------
-std::vector<vtkIdType> vtkStylizeMesh::MergeCoincidentPoints(
-  const std::vector<Vec>& p, const std::vector<char>& use, double tolerance)
+namespace
 {
-  const size_t np = p.size();
-  std::vector<vtkIdType> parent(np, -1);
-  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (size_t i = 0; i < np; ++i)
-  {
-    if (use[i])
-    {
-      parent[i] = static_cast<vtkIdType>(i);
-      for (int a = 0; a < 3; ++a)
-      {
-        lo[a] = std::min(lo[a], p[i][a]);
-        hi[a] = std::max(hi[a], p[i][a]);
-      }
-    }
-  }
-  if (!(lo[0] <= hi[0]))
-  {
-    return parent;
-  }
-  // Grid cells of 1024 tolerances (at most 2^21 along an axis): a point's partners lie in its
-  // own cell or, when it is within the tolerance of a side, in the cells across that side.
-  tolerance = std::max(tolerance, 0.0);
-  const double axisCells = static_cast<double>((1 << 21) - 4);
-  double side = tolerance > 0.0 ? 1024.0 * tolerance : 1.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    side = std::max(side, (hi[a] - lo[a]) / axisCells);
-  }
-  auto cellOf = [&](const Vec& x, int a) { return std::floor((x[a] - lo[a]) / side) + 1.0; };
-  auto keyOf = [](const double g[3])
-  {
-    return (static_cast<uint64_t>(g[0]) << 42) | (static_cast<uint64_t>(g[1]) << 21) |
-      static_cast<uint64_t>(g[2]);
-  };
-  // The used points sorted by cell, then coordinates (identical points are next to each other),
-  // then index: deterministic.
+using namespace vtkStylizeMesh;
+
+/**
+ * MergeCoincidentPoints()'s state: the used points in grid cells of 1024 tolerances (at most
+ * 2^21 along an axis), sorted by cell, then coordinates (identical points are next to each
+ * other), then index (deterministic), and the union-find forest (the smaller index the root).
+ */
+class Weld
+{
+public:
   struct Entry
   {
     uint64_t Key;
@@ -137,83 +108,131 @@ std::vector<vtkIdType> vtkStylizeMesh::MergeCoincidentPoints(
       return Key != o.Key ? Key < o.Key : X != o.X ? X < o.X : Id < o.Id;
     }
   };
-  std::vector<Entry> sorted;
-  sorted.reserve(np);
-  for (size_t i = 0; i < np; ++i)
+
+  Weld(const std::vector<Vec>& p, const std::vector<char>& use, double tolerance,
+    const double lo[3], const double hi[3])
+    : Tolerance(std::max(tolerance, 0.0))
+    , Parent(p.size(), -1)
   {
-    if (use[i])
+    const double axisCells = static_cast<double>((1 << 21) - 4);
+    this->Side = this->Tolerance > 0.0 ? 1024.0 * this->Tolerance : 1.0;
+    for (int a = 0; a < 3; ++a)
     {
-      const double g[3] = { cellOf(p[i], 0), cellOf(p[i], 1), cellOf(p[i], 2) };
-      sorted.push_back({ keyOf(g), p[i], static_cast<vtkIdType>(i) });
+      this->Low[a] = lo[a];
+      this->Side = std::max(this->Side, (hi[a] - lo[a]) / axisCells);
     }
-  }
-  vtkSMPTools::Sort(sorted.begin(), sorted.end());
-  auto find = [&parent](vtkIdType i)
-  {
-    while (parent[i] != i)
+    for (size_t i = 0; i < p.size(); ++i)
     {
-      parent[i] = parent[parent[i]];
-      i = parent[i];
-    }
-    return i;
-  };
-  auto unite = [&](vtkIdType a, vtkIdType b)
-  {
-    const vtkIdType ra = find(a), rb = find(b);
-    parent[std::max(ra, rb)] = std::min(ra, rb);
-  };
-  const double t2 = tolerance * tolerance;
-  auto join = [&](const Entry& a, const Entry& b)
-  {
-    const Vec d = Sub(a.X, b.X);
-    if (Dot(d, d) <= t2)
-    {
-      unite(a.Id, b.Id);
-    }
-  };
-  // Identical points: each joined to the one before it, and left out of the search below (it is
-  // found through that one).
-  const size_t n = sorted.size();
-  std::vector<char> repeated(n, 0);
-  for (size_t e = 1; e < n; ++e)
-  {
-    if (sorted[e].Key == sorted[e - 1].Key && sorted[e].X == sorted[e - 1].X)
-    {
-      repeated[e] = 1;
-      unite(sorted[e].Id, sorted[e - 1].Id);
-    }
-  }
-  // Distinct points within the tolerance: in its cell, the points before it with x within the
-  // tolerance; in the cells across the sides it is within the tolerance of, the points with x
-  // within the tolerance of its own. At most 256 comparisons each way (only a cloud of more
-  // points than that within a tolerance, not in real meshes, could miss a merge).
-  const size_t most = 256;
-  for (size_t e = 0; e < n; ++e)
-  {
-    if (repeated[e])
-    {
-      continue;
-    }
-    const Entry& me = sorted[e];
-    size_t compared = 0;
-    for (size_t b = e; b > 0 && sorted[b - 1].Key == me.Key &&
-         me.X[0] - sorted[b - 1].X[0] <= tolerance && compared < most;
-         --b)
-    {
-      if (!repeated[b - 1])
+      if (use[i])
       {
-        join(me, sorted[b - 1]);
-        ++compared;
+        this->Parent[i] = static_cast<vtkIdType>(i);
+        const double g[3] = { this->CellOf(p[i], 0), this->CellOf(p[i], 1), this->CellOf(p[i], 2) };
+        this->Sorted.push_back({ KeyOf(g), p[i], static_cast<vtkIdType>(i) });
       }
     }
+    vtkSMPTools::Sort(this->Sorted.begin(), this->Sorted.end());
+    // Identical points: each joined to the one before it, and left out of the search (it is
+    // found through that one).
+    this->Repeated.assign(this->Sorted.size(), 0);
+    for (size_t e = 1; e < this->Sorted.size(); ++e)
+    {
+      if (this->Sorted[e].Key == this->Sorted[e - 1].Key &&
+        this->Sorted[e].X == this->Sorted[e - 1].X)
+      {
+        this->Repeated[e] = 1;
+        this->Unite(this->Sorted[e].Id, this->Sorted[e - 1].Id);
+      }
+    }
+  }
+
+  /** Joins each distinct point with the distinct points within the tolerance: in its cell, the
+   * points before it with x within the tolerance; in the cells across the sides it is within the
+   * tolerance of, the points with x within the tolerance of its own. */
+  void Search()
+  {
+    for (size_t e = 0; e < this->Sorted.size(); ++e)
+    {
+      if (this->Repeated[e])
+      {
+        continue;
+      }
+      const Entry& me = this->Sorted[e];
+      size_t compared = 0;
+      for (size_t b = e; b > 0 && this->Sorted[b - 1].Key == me.Key &&
+           me.X[0] - this->Sorted[b - 1].X[0] <= this->Tolerance && compared < Most;
+           --b)
+      {
+        if (!this->Repeated[b - 1])
+        {
+          this->Join(me, this->Sorted[b - 1]);
+          ++compared;
+        }
+      }
+      this->SearchAcross(me);
+    }
+  }
+
+  /** Each point's representative (-1: not used). */
+  std::vector<vtkIdType> Representatives()
+  {
+    for (size_t i = 0; i < this->Parent.size(); ++i)
+    {
+      if (this->Parent[i] >= 0)
+      {
+        this->Parent[i] = this->Find(static_cast<vtkIdType>(i));
+      }
+    }
+    return this->Parent;
+  }
+
+private:
+  /** At most this many comparisons each way (only a cloud of more points than that within a
+   * tolerance, not in real meshes, could miss a merge). */
+  static constexpr size_t Most = 256;
+
+  double CellOf(const Vec& x, int a) const
+  {
+    return std::floor((x[a] - this->Low[a]) / this->Side) + 1.0;
+  }
+  static uint64_t KeyOf(const double g[3])
+  {
+    return (static_cast<uint64_t>(g[0]) << 42) | (static_cast<uint64_t>(g[1]) << 21) |
+      static_cast<uint64_t>(g[2]);
+  }
+  vtkIdType Find(vtkIdType i)
+  {
+    while (this->Parent[i] != i)
+    {
+      this->Parent[i] = this->Parent[this->Parent[i]];
+      i = this->Parent[i];
+    }
+    return i;
+  }
+  void Unite(vtkIdType a, vtkIdType b)
+  {
+    const vtkIdType ra = this->Find(a), rb = this->Find(b);
+    this->Parent[std::max(ra, rb)] = std::min(ra, rb);
+  }
+  void Join(const Entry& a, const Entry& b)
+  {
+    const Vec d = Sub(a.X, b.X);
+    if (Dot(d, d) <= this->Tolerance * this->Tolerance)
+    {
+      this->Unite(a.Id, b.Id);
+    }
+  }
+
+  /** The cells across the sides `me` is within the tolerance of. */
+  void SearchAcross(const Entry& me)
+  {
     int low[3], high[3];
     double g[3];
     for (int a = 0; a < 3; ++a)
     {
-      g[a] = cellOf(me.X, a);
-      const double x = (me.X[a] - lo[a]) / side - (g[a] - 1.0); // in [0, 1): its place in the cell
-      low[a] = x * side <= tolerance ? -1 : 0;
-      high[a] = (1.0 - x) * side <= tolerance ? 1 : 0;
+      g[a] = this->CellOf(me.X, a);
+      const double x = (me.X[a] - this->Low[a]) / this->Side - (g[a] - 1.0); // its place: [0, 1)
+      low[a] = x * this->Side <= this->Tolerance ? -1 : 0;
+      high[a] = (1.0 - x) * this->Side <= this->Tolerance ? 1 : 0;
     }
     for (int dx = low[0]; dx <= high[0]; ++dx)
     {
@@ -226,16 +245,17 @@ std::vector<vtkIdType> vtkStylizeMesh::MergeCoincidentPoints(
             continue;
           }
           const double h[3] = { g[0] + dx, g[1] + dy, g[2] + dz };
-          const Entry from{ keyOf(h), Vec{ me.X[0] - tolerance, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX },
-            VTK_ID_MIN };
-          compared = 0;
-          for (auto it = std::lower_bound(sorted.begin(), sorted.end(), from); it != sorted.end() &&
-               it->Key == from.Key && it->X[0] <= me.X[0] + tolerance && compared < most;
+          const Entry from{ KeyOf(h),
+            Vec{ me.X[0] - this->Tolerance, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX }, VTK_ID_MIN };
+          size_t compared = 0;
+          for (auto it = std::lower_bound(this->Sorted.begin(), this->Sorted.end(), from);
+               it != this->Sorted.end() && it->Key == from.Key &&
+               it->X[0] <= me.X[0] + this->Tolerance && compared < Most;
                ++it)
           {
-            if (!repeated[it - sorted.begin()])
+            if (!this->Repeated[it - this->Sorted.begin()])
             {
-              join(me, *it);
+              this->Join(me, *it);
               ++compared;
             }
           }
@@ -243,12 +263,38 @@ std::vector<vtkIdType> vtkStylizeMesh::MergeCoincidentPoints(
       }
     }
   }
-  for (size_t i = 0; i < np; ++i)
+
+  double Tolerance;
+  double Side = 1.0;
+  double Low[3] = { 0, 0, 0 };
+  std::vector<Entry> Sorted;
+  std::vector<char> Repeated;
+  std::vector<vtkIdType> Parent;
+};
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkIdType> vtkStylizeMesh::MergeCoincidentPoints(
+  const std::vector<Vec>& p, const std::vector<char>& use, double tolerance)
+{
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (size_t i = 0; i < p.size(); ++i)
   {
-    if (parent[i] >= 0)
+    if (use[i])
     {
-      parent[i] = find(static_cast<vtkIdType>(i));
+      for (int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], p[i][a]);
+        hi[a] = std::max(hi[a], p[i][a]);
+      }
     }
   }
-  return parent;
+  if (!(lo[0] <= hi[0]))
+  {
+    return std::vector<vtkIdType>(p.size(), -1);
+  }
+  Weld weld(p, use, tolerance, lo, hi);
+  weld.Search();
+  return weld.Representatives();
 }

@@ -1,6 +1,7 @@
 // vtkStylizeFeatureLines against analytic lines: a sphere's contour (a circle), a cube's
 // creases, a plane's boundary, a Gaussian ridge and its valleys, suggestive contours on a torus
 // and none on a sphere; the same lines at scale 1e-6 and 1e6; degenerate input.
+#include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -15,6 +16,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkShrinkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkStylizeFeatureLines.h"
@@ -440,8 +442,37 @@ void Degenerate()
 }
 }
 
+/**
+ * The weld: a triangle soup (every triangle its own three points, by vtkShrinkPolyData at
+ * factor 1) of a unit sphere and of a sphere 1e-5 across beside it, whose thousands of points
+ * all fall in one grid cell of the weld, each point's copies far apart in index: every copy is
+ * merged, so no boundary line is left.
+ */
+void WeldedSoup()
+{
+  vtkNew<vtkSphereSource> big;
+  big->SetThetaResolution(48);
+  big->SetPhiResolution(24);
+  vtkNew<vtkSphereSource> tiny;
+  tiny->SetRadius(1e-5);
+  tiny->SetCenter(1.5, 0.0, 0.0);
+  tiny->SetThetaResolution(48);
+  tiny->SetPhiResolution(24);
+  vtkNew<vtkAppendPolyData> both;
+  both->AddInputConnection(big->GetOutputPort());
+  both->AddInputConnection(tiny->GetOutputPort());
+  vtkNew<vtkShrinkPolyData> soup;
+  soup->SetInputConnection(both->GetOutputPort());
+  soup->SetShrinkFactor(1.0);
+  const Lines l = Run(soup, nullptr, Bit(Kind::BOUNDARY));
+  std::printf("triangle soup of two spheres: %d boundary chains\n", l.Count[Kind::BOUNDARY]);
+  STYLIZE_CHECK(l.Count[Kind::BOUNDARY] == 0,
+    "triangle soup: %d boundary chains (copies of a point left apart)", l.Count[Kind::BOUNDARY]);
+}
+
 int TestFeatureLines(int, char*[])
 {
+  WeldedSoup();
   SphereContour();
   EdgesOfShapes();
   RidgesAndValleys();
