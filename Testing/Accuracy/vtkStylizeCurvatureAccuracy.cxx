@@ -25,7 +25,6 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -169,25 +168,6 @@ bool Identical(vtkPolyData* a, vtkPolyData* b)
   return true;
 }
 
-/** A cylinder (r = 1.5) with its points moved radially by up to 0.5% of the radius. */
-vtkSmartPointer<vtkPolyData> NoisyCylinder(int n, int m)
-{
-  const double r = 1.5;
-  auto mesh = CylinderMesh(r, 6.0, n, m);
-  vtkPoints* points = mesh->GetPoints();
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> jitter(-0.005 * r, 0.005 * r);
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    points->GetPoint(i, x);
-    const double rho = std::hypot(x[0], x[1]);
-    const double s = rho > 0.0 ? (rho + jitter(random)) / rho : 1.0;
-    points->SetPoint(i, x[0] * s, x[1] * s, x[2]);
-  }
-  points->Modified();
-  return mesh;
-}
 }
 
 int main(int argc, char* argv[])
@@ -228,14 +208,15 @@ int main(int argc, char* argv[])
       [=](const double* x) { return TorusTruth(R, a, x); }, 1.0 / a });
     surfaces.push_back({ "ellipsoid 3x2x1", EllipsoidMesh(ax, 128 * level, 64 * level),
       [=](const double* x) { return EllipsoidTruth(ax, x); }, 1.0 });
-    surfaces.push_back({ "cylinder r=1.5, 0.5% noise", NoisyCylinder(64 * level, 32 * level),
-      [](const double* x)
-      {
-        Truth t = CylinderTruth(1.5, x);
-        t.Use = t.Use && std::abs(x[2]) < 1.8; // away from the open ends
-        return t;
-      },
-      1.0 / 1.5 });
+    surfaces.push_back(
+      { "cylinder r=1.5, 0.5% noise", NoisyCylinderMesh(1.5, 6.0, 64 * level, 32 * level, 0.005, 7),
+        [](const double* x)
+        {
+          Truth t = CylinderTruth(1.5, x);
+          t.Use = t.Use && std::abs(x[2]) < 1.8; // away from the open ends
+          return t;
+        },
+        1.0 / 1.5 });
     for (const Surface& s : surfaces)
     {
       for (const double radius : { 0.01, 0.03 })

@@ -19,7 +19,6 @@
 #include <array>
 #include <functional>
 #include <limits>
-#include <random>
 
 using namespace stylizetest;
 
@@ -184,19 +183,7 @@ int TestPrincipalCurvatures(int, char*[])
   // (SmoothingRadius 0.05) the direction of the smaller |curvature| runs along the axis again.
   {
     const double r = 1.5, h = 6.0;
-    auto mesh = CylinderMesh(r, h, 128, 64);
-    vtkPoints* points = mesh->GetPoints();
-    std::mt19937 random(7);
-    std::uniform_real_distribution<double> jitter(-0.005 * r, 0.005 * r);
-    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-    {
-      double x[3];
-      points->GetPoint(i, x);
-      const double rho = std::hypot(x[0], x[1]);
-      const double s = rho > 0.0 ? (rho + jitter(random)) / rho : 1.0;
-      points->SetPoint(i, x[0] * s, x[1] * s, x[2]);
-    }
-    points->Modified();
+    auto mesh = NoisyCylinderMesh(r, h, 128, 64, 0.005, 7);
     double p95[2] = { 0, 0 };
     for (int smoothed : { 0, 1 })
     {

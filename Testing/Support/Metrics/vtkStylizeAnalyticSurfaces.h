@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cmath>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -211,6 +212,29 @@ inline vtkSmartPointer<vtkPolyData> CylinderMesh(double r, double h, int n, int 
   pd->SetPoints(pts);
   pd->SetPolys(tris);
   return pd;
+}
+
+/**
+ * CylinderMesh(r, h, n, m) with its points moved radially by up to `noise` times r, uniformly
+ * at random (std::mt19937 seeded with `seed`): scan noise on a known surface.
+ */
+inline vtkSmartPointer<vtkPolyData> NoisyCylinderMesh(
+  double r, double h, int n, int m, double noise, unsigned seed)
+{
+  auto mesh = CylinderMesh(r, h, n, m);
+  vtkPoints* points = mesh->GetPoints();
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> jitter(-noise * r, noise * r);
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    points->GetPoint(i, x);
+    const double rho = std::hypot(x[0], x[1]);
+    const double s = rho > 0.0 ? (rho + jitter(random)) / rho : 1.0;
+    points->SetPoint(i, x[0] * s, x[1] * s, x[2]);
+  }
+  points->Modified();
+  return mesh;
 }
 }
 
