@@ -1,0 +1,238 @@
+// vtkStylizeVolumeSurface on f = 1 - r sampled over [-1, 1]^3: with an opacity rising from 0 at
+// 0 to 1 at 1 and the threshold 0.5 the surface is the sphere r = 0.5 with normals pointing
+// out of it (and the triangles' own normals agreeing); a falling opacity makes the outside
+// opaque: the same sphere, normals pointing in, and the box's faces closing the region where
+// it meets the image's edge; isovalues replace the crossings; an opacity that is solid
+// everywhere gives the outer faces and one solid nowhere nothing; the same field as an
+// unstructured grid (vtkContourFilter's path) gives the sphere; cell scalars are moved to the
+// points; a crossing is found to 1e-9 and a threshold of NaN or an empty input give nothing.
+#include "vtkStylizeTestChecks.h"
+#include "vtkStylizeVolumeSurface.h"
+
+#include "vtkAppendFilter.h"
+#include "vtkCellData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolygon.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <cmath>
+#include <limits>
+
+using namespace stylizetest;
+
+namespace
+{
+constexpr int N = 41; // samples along each axis over [-1, 1]
+
+/** f = 1 - |p| on the points (or the cells' centres) of a 41^3 image over [-1, 1]^3. */
+vtkNew<vtkImageData> Field(bool cells = false)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(N, N, N);
+  image->SetOrigin(-1, -1, -1);
+  const double h = 2.0 / (N - 1);
+  image->SetSpacing(h, h, h);
+  vtkNew<vtkFloatArray> f;
+  f->SetName("f");
+  const vtkIdType n = cells ? image->GetNumberOfCells() : image->GetNumberOfPoints();
+  f->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    if (cells)
+    {
+      int sub;
+      double pc[3], w[8];
+      image->GetCell(i)->GetParametricCenter(pc);
+      image->GetCell(i)->EvaluateLocation(sub, pc, p, w);
+    }
+    else
+    {
+      image->GetPoint(i, p);
+    }
+    f->SetValue(i, static_cast<float>(1.0 - vtkMath::Norm(p)));
+  }
+  if (cells)
+  {
+    image->GetCellData()->SetScalars(f);
+  }
+  else
+  {
+    image->GetPointData()->SetScalars(f);
+  }
+  return image;
+}
+
+vtkNew<vtkPiecewiseFunction> Ramp(double at0, double at1)
+{
+  vtkNew<vtkPiecewiseFunction> ramp;
+  ramp->AddPoint(0.0, at0);
+  ramp->AddPoint(1.0, at1);
+  return ramp;
+}
+
+struct Shape
+{
+  vtkIdType Points = 0;
+  double MeanRadius = 0.0, MaxRadiusError = 0.0; // over the points inside the box's faces
+  double Outward = 0.0;   // share of sphere points whose normal points away from the centre
+  double Agreeing = 0.0;  // share of triangles (not slivers) whose own normal agrees with their points'
+  vtkIdType OnFaces = 0;  // points on the box's faces (|x|, |y| or |z| about 1)
+};
+
+Shape Measure(vtkPolyData* pd, double radius)
+{
+  Shape s;
+  s.Points = pd->GetNumberOfPoints();
+  vtkDataArray* normals = pd->GetPointData()->GetNormals();
+  vtkIdType sphere = 0, outward = 0;
+  for (vtkIdType i = 0; i < s.Points; ++i)
+  {
+    double p[3];
+    pd->GetPoint(i, p);
+    if (std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]) }) > 0.99)
+    {
+      ++s.OnFaces;
+      continue;
+    }
+    const double r = vtkMath::Norm(p);
+    s.MeanRadius += r;
+    s.MaxRadiusError = std::max(s.MaxRadiusError, std::abs(r - radius));
+    double n[3] = { 0, 0, 0 };
+    if (normals)
+    {
+      normals->GetTuple(i, n);
+    }
+    outward += vtkMath::Dot(n, p) > 0.0 ? 1 : 0;
+    ++sphere;
+  }
+  s.MeanRadius /= std::max<vtkIdType>(1, sphere);
+  s.Outward = static_cast<double>(outward) / std::max<vtkIdType>(1, sphere);
+  vtkIdType agreeing = 0, triangles = 0;
+  for (vtkIdType c = 0; c < pd->GetNumberOfCells(); ++c)
+  {
+    vtkCell* cell = pd->GetCell(c);
+    if (cell->GetNumberOfPoints() < 3 || !normals)
+    {
+      continue;
+    }
+    double own[3], n[3] = { 0, 0, 0 }, m[3];
+    vtkPolygon::ComputeNormal(cell->GetPoints(), own);
+    if (vtkMath::Norm(own) == 0.0)
+    {
+      continue; // (a sliver where the isovalue meets a sample)
+    }
+    for (int k = 0; k < cell->GetNumberOfPoints(); ++k)
+    {
+      normals->GetTuple(cell->GetPointId(k), m);
+      vtkMath::Add(n, m, n);
+    }
+    agreeing += vtkMath::Dot(own, n) > 0.0 ? 1 : 0;
+    ++triangles;
+  }
+  s.Agreeing = static_cast<double>(agreeing) / std::max<vtkIdType>(1, triangles);
+  return s;
+}
+
+vtkSmartPointer<vtkPolyData> Surface(vtkDataObject* data, vtkPiecewiseFunction* opacity,
+  double threshold, std::vector<double> iso = {})
+{
+  vtkNew<vtkStylizeVolumeSurface> surface;
+  surface->SetInputData(data);
+  surface->SetScalarOpacity(opacity);
+  surface->SetOpacityThreshold(threshold);
+  surface->SetIsoValues(iso);
+  surface->Update();
+  return surface->GetOutput();
+}
+}
+
+int TestVolumeSurface(int, char*[])
+{
+  const double h = 2.0 / (N - 1);
+  // The crossings of a rising and a falling ramp, and of a bump.
+  {
+    std::vector<bool> rising;
+    auto up = Ramp(0.0, 1.0);
+    std::vector<double> x = vtkStylizeVolumeSurface::Crossings(up, 0.3, -1.0, 2.0, &rising);
+    STYLIZE_CHECK(x.size() == 1 && std::abs(x[0] - 0.3) < 1e-9 && rising[0], "rising ramp");
+    vtkNew<vtkPiecewiseFunction> bump;
+    bump->AddPoint(0.0, 0.0);
+    bump->AddPoint(1.0, 1.0);
+    bump->AddPoint(2.0, 0.0);
+    x = vtkStylizeVolumeSurface::Crossings(bump, 0.5, 0.0, 2.0, &rising);
+    STYLIZE_CHECK(x.size() == 2 && std::abs(x[0] - 0.5) < 1e-9 && std::abs(x[1] - 1.5) < 1e-9 &&
+        rising[0] && !rising[1],
+      "bump: %zu crossings", x.size());
+    STYLIZE_CHECK(
+      vtkStylizeVolumeSurface::Crossings(bump, 0.5, 0.6, 1.4).empty(), "inside the bump");
+  }
+
+  auto field = Field();
+  // Rising: the ball r < 0.5 is opaque.
+  {
+    auto up = Ramp(0.0, 1.0);
+    Shape s = Measure(Surface(field, up, 0.5), 0.5);
+    STYLIZE_CHECK(s.Points > 1000 && s.OnFaces == 0, "sphere: %lld points, %lld on the faces",
+      static_cast<long long>(s.Points), static_cast<long long>(s.OnFaces));
+    STYLIZE_CHECK(s.MaxRadiusError < 0.25 * h, "sphere radius error %g", s.MaxRadiusError);
+    STYLIZE_CHECK(s.Outward > 0.999 && s.Agreeing > 0.999, "sphere normals: outward %g, agreeing %g",
+      s.Outward, s.Agreeing);
+  }
+  // Falling: the shell r > 0.5 is opaque, closed by the box's faces.
+  {
+    auto down = Ramp(1.0, 0.0);
+    Shape s = Measure(Surface(field, down, 0.5), 0.5);
+    STYLIZE_CHECK(s.MaxRadiusError < 0.25 * h, "inner sphere radius error %g", s.MaxRadiusError);
+    STYLIZE_CHECK(s.Outward < 0.001 && s.Agreeing > 0.999, "shell normals: outward %g, agreeing %g",
+      s.Outward, s.Agreeing);
+    STYLIZE_CHECK(s.OnFaces > 6 * (N - 2) * (N - 2) / 2, "box faces: %lld points",
+      static_cast<long long>(s.OnFaces));
+  }
+  // Isovalues instead of the crossings.
+  {
+    auto up = Ramp(0.0, 1.0);
+    Shape s = Measure(Surface(field, up, 0.5, { 0.25 }), 0.75);
+    STYLIZE_CHECK(s.Points > 1000 && s.MaxRadiusError < 0.25 * h, "isovalue 0.25: error %g",
+      s.MaxRadiusError);
+  }
+  // Solid everywhere, nowhere; NaN threshold; empty input.
+  {
+    auto solid = Ramp(1.0, 1.0);
+    auto pd = Surface(field, solid, 0.5);
+    double b[6];
+    pd->GetBounds(b);
+    STYLIZE_CHECK(pd->GetNumberOfCells() > 0 && std::abs(b[0] + 1) < 1e-6 &&
+        std::abs(b[5] - 1) < 1e-6,
+      "solid: the outer faces");
+    auto clear = Ramp(0.0, 0.1);
+    STYLIZE_CHECK(Surface(field, clear, 0.5)->GetNumberOfCells() == 0, "clear: nothing");
+    auto up = Ramp(0.0, 1.0);
+    STYLIZE_CHECK(Surface(field, up, std::numeric_limits<double>::quiet_NaN())
+                    ->GetNumberOfCells() == 0,
+      "NaN threshold: nothing");
+    vtkNew<vtkImageData> empty;
+    STYLIZE_CHECK(Surface(empty, up, 0.5)->GetNumberOfCells() == 0, "empty input");
+  }
+  // An unstructured grid, and cell scalars.
+  {
+    vtkNew<vtkAppendFilter> grid;
+    grid->SetInputData(field);
+    grid->Update();
+    auto up = Ramp(0.0, 1.0);
+    Shape s = Measure(Surface(grid->GetOutput(), up, 0.5), 0.5);
+    STYLIZE_CHECK(s.Points > 1000 && s.MaxRadiusError < 0.25 * h && s.Agreeing > 0.99,
+      "unstructured: error %g, agreeing %g", s.MaxRadiusError, s.Agreeing);
+    auto cells = Field(true);
+    s = Measure(Surface(cells, up, 0.5), 0.5);
+    STYLIZE_CHECK(s.Points > 1000 && s.MaxRadiusError < 0.5 * h, "cell scalars: error %g",
+      s.MaxRadiusError);
+  }
+  return Failures == 0 ? 0 : 1;
+}

@@ -1,0 +1,475 @@
+#include "vtkStylizeVolumeSurface.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellDataToPointData.h"
+#include "vtkContourFilter.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkDoubleArray.h"
+#include "vtkFlyingEdges3D.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iterator>
+
+vtkStandardNewMacro(vtkStylizeVolumeSurface);
+vtkCxxSetObjectMacro(vtkStylizeVolumeSurface, ScalarOpacity, vtkPiecewiseFunction);
+
+namespace
+{
+/** Samples of the opacity function over the data's range when looking for its crossings: a
+ * crossing closer than range/4096 to another one may be missed (both then vanish together). */
+constexpr int Samples = 4096;
+
+/** The chosen component of `array` as one float (double for double input) per point. */
+vtkSmartPointer<vtkDataArray> ComponentOf(vtkDataArray* array, int component)
+{
+  vtkSmartPointer<vtkDataArray> out = array->GetDataType() == VTK_DOUBLE
+    ? vtkSmartPointer<vtkDataArray>(vtkSmartPointer<vtkDoubleArray>::New())
+    : vtkSmartPointer<vtkDataArray>(vtkSmartPointer<vtkFloatArray>::New());
+  out->SetName(array->GetName() ? array->GetName() : "Scalars");
+  out->SetNumberOfTuples(array->GetNumberOfTuples());
+  vtkSMPTools::For(0, array->GetNumberOfTuples(),
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        out->SetComponent(i, 0, array->GetComponent(i, component));
+      }
+    });
+  return out;
+}
+
+/**
+ * The image's scalar on an extent grown by one sample on each face of `whole` that it touches
+ * and where `opaque` holds for a sample on that face, the new samples set to `pad`: the opaque
+ * region then ends inside the image. Returns null when nothing needs padding.
+ */
+vtkSmartPointer<vtkImageData> Padded(vtkImageData* image, vtkDataArray* values,
+  const int whole[6], double pad, const std::function<bool(double)>& opaque)
+{
+  int e[6];
+  image->GetExtent(e);
+  int grown[6];
+  std::copy(e, e + 6, grown);
+  bool any = false;
+  for (int face = 0; face < 6; ++face)
+  {
+    const int axis = face / 2;
+    if (e[face] != whole[face] || e[2 * axis] > e[2 * axis + 1])
+    {
+      continue;
+    }
+    // Whether any sample on this face is opaque.
+    int f[6];
+    std::copy(e, e + 6, f);
+    f[2 * axis] = f[2 * axis + 1] = e[face];
+    bool hit = false;
+    for (int k = f[4]; k <= f[5] && !hit; ++k)
+    {
+      for (int j = f[2]; j <= f[3] && !hit; ++j)
+      {
+        for (int i = f[0]; i <= f[1] && !hit; ++i)
+        {
+          int ijk[3] = { i, j, k };
+          hit = opaque(values->GetComponent(image->ComputePointId(ijk), 0));
+        }
+      }
+    }
+    if (hit)
+    {
+      grown[face] += face % 2 ? 1 : -1;
+      any = true;
+    }
+  }
+  if (!any)
+  {
+    return nullptr;
+  }
+  auto out = vtkSmartPointer<vtkImageData>::New();
+  out->SetOrigin(image->GetOrigin());
+  out->SetSpacing(image->GetSpacing());
+  out->SetDirectionMatrix(image->GetDirectionMatrix());
+  out->SetExtent(grown);
+  vtkSmartPointer<vtkDataArray> padded;
+  padded.TakeReference(values->NewInstance());
+  padded->SetName(values->GetName());
+  padded->SetNumberOfTuples(out->GetNumberOfPoints());
+  const int nx = grown[1] - grown[0] + 1, ny = grown[3] - grown[2] + 1;
+  vtkSMPTools::For(grown[4], grown[5] + 1,
+    [&](int first, int last)
+    {
+      for (int k = first; k < last; ++k)
+      {
+        for (int j = grown[2]; j <= grown[3]; ++j)
+        {
+          for (int i = grown[0]; i <= grown[1]; ++i)
+          {
+            const vtkIdType o = (static_cast<vtkIdType>(k - grown[4]) * ny + (j - grown[2])) * nx +
+              (i - grown[0]);
+            const bool inside = i >= e[0] && i <= e[1] && j >= e[2] && j <= e[3] && k >= e[4] &&
+              k <= e[5];
+            int ijk[3] = { i, j, k };
+            padded->SetComponent(
+              o, 0, inside ? values->GetComponent(image->ComputePointId(ijk), 0) : pad);
+          }
+        }
+      }
+    });
+  out->GetPointData()->SetScalars(padded);
+  return out;
+}
+
+/**
+ * Turns the normals (and the triangles' order) of the surfaces at the values where the opaque
+ * side is the lower one: every normal then points out of the opaque region, the contour filters'
+ * normals pointing towards lower values.
+ */
+void OrientOutwards(
+  vtkPolyData* surface, const std::vector<double>& values, const std::vector<bool>& rising)
+{
+  vtkDataArray* scalars = surface->GetPointData()->GetScalars();
+  vtkDataArray* normals = surface->GetPointData()->GetNormals();
+  if (!scalars || !normals || rising.size() != values.size())
+  {
+    return;
+  }
+  // (the nearest isovalue: the output's scalars may be floats)
+  auto falling = [&](double s)
+  {
+    size_t nearest = 0;
+    for (size_t v = 1; v < values.size(); ++v)
+    {
+      nearest = std::abs(s - values[v]) < std::abs(s - values[nearest]) ? v : nearest;
+    }
+    return !values.empty() && !rising[nearest];
+  };
+  for (vtkIdType p = 0; p < surface->GetNumberOfPoints(); ++p)
+  {
+    if (falling(scalars->GetComponent(p, 0)))
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        normals->SetComponent(p, c, -normals->GetComponent(p, c));
+      }
+    }
+  }
+  vtkCellArray* polys = surface->GetPolys();
+  vtkNew<vtkCellArray> turned;
+  turned->AllocateExact(polys->GetNumberOfCells(), polys->GetNumberOfConnectivityIds());
+  std::vector<vtkIdType> ids;
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    vtkIdType n;
+    const vtkIdType* pts;
+    polys->GetCellAtId(c, n, pts);
+    ids.assign(pts, pts + n);
+    if (n > 0 && falling(scalars->GetComponent(pts[0], 0)))
+    {
+      std::reverse(ids.begin(), ids.end());
+    }
+    turned->InsertNextCell(n, ids.data());
+  }
+  surface->SetPolys(turned);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeVolumeSurface::vtkStylizeVolumeSurface()
+{
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeVolumeSurface::~vtkStylizeVolumeSurface()
+{
+  this->SetScalarOpacity(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeVolumeSurface::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
+  os << indent << "Component: " << this->Component << "\n";
+  os << indent << "IsoValues: " << this->IsoValues.size() << "\n";
+  os << indent << "ScalarOpacity: " << this->ScalarOpacity << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeVolumeSurface::SetIsoValues(const std::vector<double>& values)
+{
+  std::vector<double> finite;
+  std::copy_if(values.begin(), values.end(), std::back_inserter(finite),
+    [](double v) { return std::isfinite(v); });
+  if (finite != this->IsoValues)
+  {
+    this->IsoValues = finite;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkStylizeVolumeSurface::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  return this->ScalarOpacity ? std::max(t, this->ScalarOpacity->GetMTime()) : t;
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeVolumeSurface::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkStylizeVolumeSurface::Crossings(vtkPiecewiseFunction* function,
+  double threshold, double low, double high, std::vector<bool>* rising)
+{
+  std::vector<double> out;
+  if (rising)
+  {
+    rising->clear();
+  }
+  if (!function || !(std::isfinite(low) && std::isfinite(high)) || !(high > low) ||
+    !std::isfinite(threshold))
+  {
+    return out;
+  }
+  auto solid = [&](double x) { return function->GetValue(x) >= threshold; };
+  double previous = low;
+  bool was = solid(low);
+  for (int i = 1; i <= Samples; ++i)
+  {
+    const double x = i == Samples ? high : low + (high - low) * i / Samples;
+    const bool is = solid(x);
+    if (is != was)
+    {
+      // Bisection to 1e-9 of the range (40 halvings of range/4096).
+      double a = previous, b = x;
+      for (int step = 0; step < 40; ++step)
+      {
+        const double m = 0.5 * (a + b);
+        (solid(m) == was ? a : b) = m;
+      }
+      out.push_back(0.5 * (a + b));
+      if (rising)
+      {
+        rising->push_back(is);
+      }
+    }
+    previous = x;
+    was = is;
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeVolumeSurface::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataSet* input = vtkDataSet::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  vtkDataArray* array = this->GetInputArrayToProcess(0, inputVector, association);
+  if (!array && input && !input->GetPointData()->GetScalars())
+  {
+    array = input->GetCellData()->GetScalars(); // (as VTK's volume mappers fall back)
+    association = vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  }
+  if (!input || !array || input->GetNumberOfPoints() == 0)
+  {
+    return 1; // nothing to show
+  }
+  if (this->IsoValues.empty() && !this->ScalarOpacity)
+  {
+    vtkErrorMacro("No scalar opacity function and no isovalues.");
+    return 0;
+  }
+  const int component = std::min(this->Component, array->GetNumberOfComponents() - 1);
+
+  // The scalar on the points, one component.
+  vtkSmartPointer<vtkDataSet> data;
+  data.TakeReference(input->NewInstance());
+  data->CopyStructure(input);
+  vtkSmartPointer<vtkDataArray> values;
+  if (association == vtkDataObject::FIELD_ASSOCIATION_CELLS)
+  {
+    vtkSmartPointer<vtkDataSet> cells;
+    cells.TakeReference(input->NewInstance());
+    cells->CopyStructure(input);
+    cells->GetCellData()->SetScalars(ComponentOf(array, component));
+    vtkNew<vtkCellDataToPointData> toPoints;
+    toPoints->SetInputData(cells);
+    toPoints->Update();
+    values = toPoints->GetOutput()->GetPointData()->GetScalars();
+  }
+  else
+  {
+    values = ComponentOf(array, component);
+  }
+  if (!values)
+  {
+    return 1;
+  }
+  data->GetPointData()->SetScalars(values);
+
+  // The isovalues: given, or where the opacity crosses the threshold.
+  double range[2];
+  values->GetRange(range, 0);
+  std::vector<double> isovalues = this->IsoValues;
+  std::vector<bool> rising(isovalues.size(), true);
+  const bool crossings = isovalues.empty();
+  const double threshold = this->OpacityThreshold;
+  auto opaque = [&](double v) { return this->ScalarOpacity->GetValue(v) >= threshold; };
+  if (crossings)
+  {
+    isovalues = Crossings(this->ScalarOpacity, threshold, range[0], range[1], &rising);
+    if (isovalues.empty())
+    {
+      if (opaque(0.5 * (range[0] + range[1])))
+      {
+        // Opaque throughout: the volume shows its outer faces.
+        vtkNew<vtkDataSetSurfaceFilter> faces;
+        faces->SetInputData(data);
+        faces->Update();
+        vtkNew<vtkPolyDataNormals> normals;
+        normals->SetInputConnection(faces->GetOutputPort());
+        normals->SplittingOff();
+        normals->Update();
+        output->ShallowCopy(normals->GetOutput());
+      }
+      return 1;
+    }
+  }
+
+  // Images: closed where the opaque region meets the whole extent's faces.
+  vtkImageData* image = vtkImageData::SafeDownCast(data);
+  if (image && crossings)
+  {
+    vtkSmartPointer<vtkImageData> padded = this->PadToClose(image, values, range, inputVector);
+    if (padded)
+    {
+      data = padded;
+      image = padded;
+      double padRange[2];
+      padded->GetPointData()->GetScalars()->GetRange(padRange, 0);
+      isovalues =
+        Crossings(this->ScalarOpacity, threshold, padRange[0], padRange[1], &rising);
+    }
+  }
+
+  vtkSmartPointer<vtkPolyData> surface = this->Contour(data, image != nullptr, isovalues);
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->DeepCopy(surface);
+  if (crossings)
+  {
+    OrientOutwards(result, isovalues, rising);
+  }
+  output->ShallowCopy(result);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkStylizeVolumeSurface::PadToClose(vtkImageData* image,
+  vtkDataArray* values, const double range[2], vtkInformationVector** inputVector)
+{
+  // (padded with the most transparent value over the data's and the function's ranges)
+  int whole[6];
+  vtkInformation* info = inputVector[0]->GetInformationObject(0);
+  if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  }
+  else
+  {
+    image->GetExtent(whole);
+  }
+  vtkPiecewiseFunction* f = this->ScalarOpacity;
+  const double low = std::min(range[0], f->GetRange()[0]);
+  const double high = std::max(range[1], f->GetRange()[1]);
+  double pad = low, least = f->GetValue(low);
+  for (int i = 1; i <= Samples; ++i)
+  {
+    const double x = low + (high - low) * i / Samples;
+    const double o = f->GetValue(x);
+    if (o < least)
+    {
+      least = o;
+      pad = x;
+    }
+  }
+  const double threshold = this->OpacityThreshold;
+  return least < threshold
+    ? Padded(image, values, whole, pad, [&](double v) { return f->GetValue(v) >= threshold; })
+    : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkStylizeVolumeSurface::Contour(
+  vtkDataSet* data, bool image, const std::vector<double>& isovalues)
+{
+  // Progress forwarded from the contour filter.
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(this);
+  progress->SetCallback(
+    [](vtkObject* caller, unsigned long, void* self, void*)
+    {
+      static_cast<vtkStylizeVolumeSurface*>(self)->UpdateProgress(
+        0.9 * static_cast<vtkAlgorithm*>(caller)->GetProgress());
+    });
+  vtkSmartPointer<vtkPolyDataAlgorithm> contour;
+  if (image)
+  {
+    auto edges = vtkSmartPointer<vtkFlyingEdges3D>::New();
+    edges->ComputeNormalsOn();
+    edges->ComputeScalarsOn();
+    edges->ComputeGradientsOff();
+    edges->SetNumberOfContours(static_cast<int>(isovalues.size()));
+    for (size_t v = 0; v < isovalues.size(); ++v)
+    {
+      edges->SetValue(static_cast<int>(v), isovalues[v]);
+    }
+    contour = edges;
+  }
+  else
+  {
+    auto generic = vtkSmartPointer<vtkContourFilter>::New();
+    generic->ComputeScalarsOn();
+    generic->SetNumberOfContours(static_cast<int>(isovalues.size()));
+    for (size_t v = 0; v < isovalues.size(); ++v)
+    {
+      generic->SetValue(static_cast<int>(v), isovalues[v]);
+    }
+    contour = generic;
+  }
+  contour->SetInputData(data);
+  contour->AddObserver(vtkCommand::ProgressEvent, progress);
+  contour->Update();
+  vtkSmartPointer<vtkPolyData> surface = contour->GetOutput();
+  if (!surface->GetPointData()->GetNormals() && surface->GetNumberOfCells() > 0)
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(surface);
+    normals->SplittingOff();
+    normals->Update();
+    surface = normals->GetOutput();
+  }
+  return surface;
+}
