@@ -131,8 +131,10 @@ vtkPolyData* vtkLineArtPass::ComputeFigureStrokes(int width, int height, int til
   view.PointSize = this->GetPixelsPerPoint(view.Size[1], tiles);
   // the frame's strokes replaced: the lines of the same camera are kept per surface (on several
   // processes, collective: the whole data's lines on process 0)
+  this->AddVolumeSurfaces(view.Renderer);
   this->Internal->Strokes->BuildFigure(
     view, StrokeSettings(this), this->GetGBufferPass()->GetController());
+  this->RemoveVolumeSurfaces();
   return this->Internal->Strokes->GetStrokes();
 }
 

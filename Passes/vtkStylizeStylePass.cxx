@@ -3,6 +3,8 @@
 #include "vtkCamera.h"
 #include "vtkCommunicator.h"
 #include "vtkFloatArray.h"
+#include "vtkInformationDoubleKey.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkMultiProcessController.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -29,6 +31,9 @@
 #include <cmath>
 #include <memory>
 #include <utility>
+
+vtkInformationKeyMacro(vtkStylizeStylePass, STYLIZE_VOLUME, Integer);
+vtkInformationKeyMacro(vtkStylizeStylePass, VOLUME_OPACITY_THRESHOLD, Double);
 
 //------------------------------------------------------------------------------
 vtkStylizeStylePass::vtkStylizeStylePass(int lightingModel)
@@ -300,15 +305,43 @@ bool vtkStylizeStylePass::RenderScene(const vtkRenderState* s, const SceneReques
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizeStylePass::Render(const vtkRenderState* s)
+void vtkStylizeStylePass::Render(const vtkRenderState* original)
 {
+  // Volumes drawn in the style stand in the state (and the renderer's props) as surfaces.
+  vtkStylizeVolumeSurfaces& volumes = this->Internals->Volumes;
+  const double threshold =
+    std::isfinite(this->VolumeOpacityThreshold) ? this->VolumeOpacityThreshold : 0.1;
+  const vtkRenderState* s = this->StylizeVolumes && !original->GetRenderer()->GetSelector()
+    ? volumes.Begin(original, threshold)
+    : original;
   Frame frame;
-  if (!this->BeginFrame(s, frame) || !this->RenderStyle(s, frame))
+  if (this->BeginFrame(s, frame) && this->RenderStyle(s, frame))
   {
-    return; // the frame was ended
+    this->RenderTranslucentLayers(s, frame);
+    this->EndFrame(s);
   }
-  this->RenderTranslucentLayers(s, frame);
-  this->EndFrame(s);
+  volumes.End();
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeStylePass::GetNumberOfVolumeSurfaces()
+{
+  return this->StylizeVolumes ? this->Internals->Volumes.GetNumberOfSurfaces() : 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::AddVolumeSurfaces(vtkRenderer* ren)
+{
+  if (this->StylizeVolumes)
+  {
+    this->Internals->Volumes.AddToRenderer(ren);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::RemoveVolumeSurfaces()
+{
+  this->Internals->Volumes.End();
 }
 
 //------------------------------------------------------------------------------
@@ -713,6 +746,7 @@ void vtkStylizeStylePass::ReleaseGraphicsResources(vtkWindow* w)
   in.LayerQuad.Release(w);
   in.GBuffer->ReleaseGraphicsResources(w);
   in.LayerGBuffer->ReleaseGraphicsResources(w);
+  in.Volumes.ReleaseGraphicsResources(w);
   this->ReleaseStyleResources(w);
 }
 

@@ -35,6 +35,8 @@
 #include <vector>           // for std::vector
 
 class vtkCamera;
+class vtkInformationDoubleKey;
+class vtkInformationIntegerKey;
 class vtkFloatArray;
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
@@ -173,6 +175,47 @@ public:
 
   /** The number of translucent layers the last frame stylized (0 when none). */
   vtkGetMacro(LastTranslucentLayers, int);
+
+  ///@{
+  /**
+   * Volumes in the style: each visible vtkVolume is drawn as the surface it shows, where its
+   * scalar opacity reaches VolumeOpacityThreshold (vtkStylizeVolumeSurface: the isosurfaces at
+   * the opacity's crossings, or at the volume's isovalues in the isosurface blend mode), with
+   * the gradient as its normal, coloured by its colour transfer function and lit with its
+   * lighting coefficients, so that the style's zones, edges, patterns, strokes and lines apply
+   * to it as to any surface, in rendered frames and vector figures. The surface is recomputed
+   * only when the data or the transfer functions change. What the volume holds below the
+   * threshold (a faint haze) is not drawn: lower the threshold to show it. Off, and for a volume
+   * whose STYLIZE_VOLUME key is 0, the volume is drawn by VTK over the stylized picture. Volumes
+   * of composite data or of dependent components (RGBA) are always drawn by VTK. Default on.
+   */
+  vtkSetMacro(StylizeVolumes, bool);
+  vtkGetMacro(StylizeVolumes, bool);
+  vtkBooleanMacro(StylizeVolumes, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The opacity from which a volume's sample counts as solid (StylizeVolumes): the value of the
+   * volume's scalar opacity function, i.e. the opacity of one ScalarOpacityUnitDistance of the
+   * material, dimensionless. A volume's VOLUME_OPACITY_THRESHOLD key overrides it. Range
+   * [0.001, 1], default 0.1.
+   */
+  vtkSetClampMacro(VolumeOpacityThreshold, double, 0.001, 1.0);
+  vtkGetMacro(VolumeOpacityThreshold, double);
+  ///@}
+
+  /**
+   * Per-volume settings, as keys of the volume's vtkProp::GetPropertyKeys() information:
+   * STYLIZE_VOLUME 0 leaves the volume to VTK (drawn as it is, over the stylized picture), 1
+   * (the default) draws it in the style; VOLUME_OPACITY_THRESHOLD replaces the style's
+   * VolumeOpacityThreshold for it.
+   */
+  static vtkInformationIntegerKey* STYLIZE_VOLUME();
+  static vtkInformationDoubleKey* VOLUME_OPACITY_THRESHOLD();
+
+  /** The number of volumes the last frame drew as surfaces (StylizeVolumes). */
+  int GetNumberOfVolumeSurfaces();
 
   /** Renders the frame: the opaque scene and the translucent layers through the style. */
   void Render(const vtkRenderState* s) override;
@@ -584,6 +627,16 @@ protected:
   int WindowScale[2] = { 1, 1 };
   int TranslucentLayers = 4;
   int LastTranslucentLayers = 0;
+  bool StylizeVolumes = true;
+  double VolumeOpacityThreshold = 0.1;
+
+  /**
+   * For a figure built after the frame (vtkLineArtPass::ComputeFigureStrokes()): puts the
+   * surfaces of the volumes the last frame drew as surfaces into `ren`'s props, until
+   * RemoveVolumeSurfaces().
+   */
+  void AddVolumeSurfaces(vtkRenderer* ren);
+  void RemoveVolumeSurfaces();
 
 private:
   vtkStylizeStylePass(const vtkStylizeStylePass&) = delete;

@@ -9,6 +9,7 @@
 #include "vtkStylizeShaderUtilities.h"
 #include "vtkStylizeStageRunner.h"
 #include "vtkStylizeStylePass.h"
+#include "vtkStylizeVolumeSurfaces.h"
 
 #include <vector>
 
@@ -41,6 +42,7 @@ public:
   int GuardSize[2] = { 0, 0 };
   double GuardTransform[4] = { 1.0, 1.0, 0.0, 0.0 };
   vtkStylizeReducedOutput Reduced;
+  vtkStylizeVolumeSurfaces Volumes; // volumes drawn as surfaces (StylizeVolumes)
 
   void FreeTextures(vtkWindow* w)
   {

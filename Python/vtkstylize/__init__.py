@@ -35,6 +35,8 @@ Filters (module ``vtkstylize.vtkStylizeFilters``):
 - ``vtkStylizeRayOccluder``: a surface's triangles under a bounding volume hierarchy, built once
   and shared by the ray casting of every line filter and thread.
 - ``vtkStylizeViewFilter``: the base of those two (the camera and the model matrix).
+- ``vtkStylizeVolumeSurface``: the surface a volume shows, where its scalar opacity reaches a
+  threshold (the styles draw volumes as it: ``StylizeVolumes``).
 
 Checked reading and the animation encoder (module ``vtkstylize.vtkStylizeIO``):
 

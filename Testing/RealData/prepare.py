@@ -47,6 +47,14 @@ LINE_MESHES = {
     "head": ("head.off", "scan"),
 }
 
+# 3D images (CGAL's data/images, INRIMAGE-4), written as VTK image data for the volume measures
+# (volumes.py): a CT of a skull (64^3 floats, the bone about 2.9) and a segmented liver (uint8
+# labels 0/255 on 438 x 353 x 165 samples).
+VOLUMES = {
+    "skull": "skull_2.9.inr",
+    "liver": "liver.inr.gz",
+}
+
 ARCHIVES = [
     "/usr/share/doc/libcgal-dev/data.tar.gz",
     "/usr/share/doc/libcgal-demo/data.tar.gz",
@@ -83,6 +91,37 @@ def parse_off(text, name):
     mesh.SetPoints(points)
     mesh.SetPolys(polys)
     return mesh
+
+
+def parse_inr(raw, name):
+    """An INRIMAGE-4 image (a text header in 256-byte blocks ending in '##}', then the samples)
+    as vtkImageData with one float array "density"."""
+    import gzip
+    import numpy
+    from vtk.util import numpy_support
+
+    if raw[:2] == b"\x1f\x8b":
+        raw = gzip.decompress(raw)
+    end = raw.find(b"##}")
+    if not raw.startswith(b"#INRIMAGE-4#{") or end < 0:
+        sys.exit("prepare.py: %s is not an INRIMAGE-4 file" % name)
+    end = (end + 3 + 1 + 255) // 256 * 256  # the header fills whole 256-byte blocks
+    fields = dict(line.split("=", 1) for line in raw[:end].decode("ascii", "replace").splitlines()
+                  if "=" in line)
+    dims = [int(fields[k]) for k in ("XDIM", "YDIM", "ZDIM")]
+    kind = (fields["TYPE"], int(fields["PIXSIZE"].split()[0]))
+    dtype = {("float", 32): "f4", ("float", 64): "f8", ("unsigned fixed", 8): "u1",
+             ("unsigned fixed", 16): "u2", ("signed fixed", 16): "i2"}[kind]
+    order = ">" if fields.get("CPU", "decm") in ("sun", "sgi") else "<"
+    count = dims[0] * dims[1] * dims[2]
+    samples = numpy.frombuffer(raw[end:], dtype=order + dtype, count=count).astype(numpy.float32)
+    image = vtk.vtkImageData()
+    image.SetDimensions(*dims)
+    image.SetSpacing(*(float(fields.get(k, 1)) for k in ("VX", "VY", "VZ")))
+    array = numpy_support.numpy_to_vtk(samples, deep=1)
+    array.SetName("density")
+    image.GetPointData().SetScalars(array)
+    return image
 
 
 def write_vessel(path):
@@ -198,6 +237,14 @@ def main():
             writer.SetFileTypeToBinary()
             write(writer, mesh, out)
             print(out, mesh.GetNumberOfPoints(), "points", mesh.GetNumberOfCells(), "faces")
+        for name, member in VOLUMES.items():
+            out = os.path.join(args.outdir, name + ".vti")
+            if not os.path.exists(out):
+                image = parse_inr(tar.extractfile("data/images/" + member).read(), member)
+                writer = vtk.vtkXMLImageDataWriter()
+                writer.SetCompressorTypeToZLib()
+                write(writer, image, out)
+                print(out, image.GetDimensions(), "samples")
     vessel = os.path.join(args.outdir, "vessel.ex2")
     if not os.path.exists(vessel):
         write_vessel(vessel)

@@ -1,0 +1,316 @@
+#include "vtkStylizeVolumeSurfaces.h"
+
+#include "vtkAbstractVolumeMapper.h"
+#include "vtkActor.h"
+#include "vtkCellData.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkContourValues.h"
+#include "vtkDataSet.h"
+#include "vtkInformation.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPropCollection.h"
+#include "vtkProperty.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkStylizeStylePass.h"
+#include "vtkStylizeVolumeSurface.h"
+#include "vtkVolume.h"
+#include "vtkVolumeMapper.h"
+#include "vtkVolumeProperty.h"
+#include "vtkWeakPointer.h"
+
+#include <algorithm>
+#include <cmath>
+
+struct vtkStylizeVolumeSurfaces::Proxy
+{
+  vtkWeakPointer<vtkVolume> Volume;
+  vtkNew<vtkStylizeVolumeSurface> Surface;
+  vtkNew<vtkPolyDataMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkMatrix4x4> Matrix;
+  vtkNew<vtkColorTransferFunction> Gray; // a gray transfer function as colours
+};
+
+namespace
+{
+/** The volume's own setting under `key` of its property keys, or `fallback`. */
+double VolumeThreshold(vtkVolume* volume, double fallback)
+{
+  vtkInformation* keys = volume->GetPropertyKeys();
+  if (keys && keys->Has(vtkStylizeStylePass::VOLUME_OPACITY_THRESHOLD()))
+  {
+    const double t = keys->Get(vtkStylizeStylePass::VOLUME_OPACITY_THRESHOLD());
+    return std::isfinite(t) ? std::min(1.0, std::max(0.001, t)) : fallback;
+  }
+  return fallback;
+}
+
+/** The mapper's scalar selection as the filter's input array. */
+void SelectArray(vtkAbstractVolumeMapper* mapper, vtkDataSet* data, vtkAlgorithm* filter)
+{
+  const int mode = mapper->GetScalarMode();
+  const bool cells =
+    mode == VTK_SCALAR_MODE_USE_CELL_DATA || mode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA;
+  const int association =
+    cells ? vtkDataObject::FIELD_ASSOCIATION_CELLS : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  if (mode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA || mode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA)
+  {
+    const char* name = mapper->GetArrayName();
+    if (mapper->GetArrayAccessMode() == VTK_GET_ARRAY_BY_ID && data)
+    {
+      vtkFieldData* fd = cells ? static_cast<vtkFieldData*>(data->GetCellData())
+                               : static_cast<vtkFieldData*>(data->GetPointData());
+      vtkAbstractArray* a = fd->GetAbstractArray(mapper->GetArrayId());
+      name = a ? a->GetName() : nullptr;
+    }
+    if (name)
+    {
+      filter->SetInputArrayToProcess(0, 0, 0, association, name);
+      return;
+    }
+  }
+  // The default: point scalars, else cell scalars (as VTK's volume mappers choose).
+  const bool cellScalars = mode == VTK_SCALAR_MODE_USE_CELL_DATA ||
+    (mode == VTK_SCALAR_MODE_DEFAULT && data && !data->GetPointData()->GetScalars() &&
+      data->GetCellData()->GetScalars());
+  filter->SetInputArrayToProcess(0, 0, 0,
+    cellScalars ? vtkDataObject::FIELD_ASSOCIATION_CELLS : vtkDataObject::FIELD_ASSOCIATION_POINTS,
+    vtkDataSetAttributes::SCALARS);
+}
+
+/** The mapper's input, brought up to date. */
+vtkDataSet* UpdatedInput(vtkAbstractVolumeMapper* mapper)
+{
+  if (mapper->GetNumberOfInputConnections(0) > 0)
+  {
+    mapper->GetInputAlgorithm()->Update();
+  }
+  return mapper->GetDataSetInput();
+}
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeVolumeSurfaces::vtkStylizeVolumeSurfaces() = default;
+
+//------------------------------------------------------------------------------
+vtkStylizeVolumeSurfaces::~vtkStylizeVolumeSurfaces()
+{
+  this->End();
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeVolumeSurfaces::Drawable(vtkVolume* volume)
+{
+  if (!volume || !volume->GetVisibility() || !volume->GetMapper() || !volume->GetProperty())
+  {
+    return false;
+  }
+  vtkInformation* keys = volume->GetPropertyKeys();
+  if (keys && keys->Has(vtkStylizeStylePass::STYLIZE_VOLUME()) &&
+    keys->Get(vtkStylizeStylePass::STYLIZE_VOLUME()) == 0)
+  {
+    return false;
+  }
+  vtkAbstractVolumeMapper* mapper = volume->GetMapper();
+  vtkDataSet* data = UpdatedInput(mapper);
+  if (!data || data->GetNumberOfPoints() == 0)
+  {
+    return false;
+  }
+  vtkDataArray* scalars = data->GetPointData()->GetScalars()
+    ? data->GetPointData()->GetScalars()
+    : data->GetCellData()->GetScalars();
+  const bool named = mapper->GetScalarMode() == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA ||
+    mapper->GetScalarMode() == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA;
+  if (!scalars && !named)
+  {
+    return false;
+  }
+  const int components = scalars ? scalars->GetNumberOfComponents() : 1;
+  return components == 1 || volume->GetProperty()->GetIndependentComponents();
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
+  vtkVolume* volume, double threshold)
+{
+  std::unique_ptr<Proxy>& slot = this->Proxies[volume];
+  if (!slot || slot->Volume.GetPointer() != volume)
+  {
+    slot.reset(new Proxy);
+    slot->Volume = volume;
+    slot->Mapper->SetInputConnection(slot->Surface->GetOutputPort());
+    slot->Mapper->ScalarVisibilityOn();
+    slot->Mapper->SetScalarModeToUsePointData();
+    slot->Mapper->UseLookupTableScalarRangeOn();
+    slot->Actor->SetMapper(slot->Mapper);
+    slot->Actor->SetUserMatrix(slot->Matrix);
+    slot->Actor->PickableOff();
+  }
+  Proxy& p = *slot;
+  vtkAbstractVolumeMapper* mapper = volume->GetMapper();
+  vtkVolumeProperty* property = volume->GetProperty();
+
+  // The surface: from the mapper's input connection (the pipeline's whole extent), or its data.
+  vtkDataSet* data = UpdatedInput(mapper);
+  if (mapper->GetNumberOfInputConnections(0) > 0)
+  {
+    if (p.Surface->GetInputConnection(0, 0) != mapper->GetInputConnection(0, 0))
+    {
+      p.Surface->SetInputConnection(mapper->GetInputConnection(0, 0));
+    }
+  }
+  else if (p.Surface->GetInputDataObject(0, 0) != data)
+  {
+    p.Surface->SetInputData(data);
+  }
+  SelectArray(mapper, data, p.Surface);
+  p.Surface->SetScalarOpacity(property->GetScalarOpacity(0));
+  p.Surface->SetOpacityThreshold(VolumeThreshold(volume, threshold));
+  std::vector<double> iso;
+  auto* volumeMapper = vtkVolumeMapper::SafeDownCast(mapper);
+  if (volumeMapper && volumeMapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND &&
+    property->GetIsoSurfaceValues())
+  {
+    vtkContourValues* values = property->GetIsoSurfaceValues();
+    for (int i = 0; i < values->GetNumberOfContours(); ++i)
+    {
+      iso.push_back(values->GetValue(i));
+    }
+  }
+  p.Surface->SetIsoValues(iso);
+
+  // Its colour, light, place and clipping: the volume's.
+  if (property->GetColorChannels(0) == 3)
+  {
+    p.Mapper->SetLookupTable(property->GetRGBTransferFunction(0));
+  }
+  else
+  {
+    vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0);
+    if (p.Gray->GetMTime() < gray->GetMTime())
+    {
+      p.Gray->RemoveAllPoints();
+      for (int i = 0; i < gray->GetSize(); ++i)
+      {
+        double node[4];
+        gray->GetNodeValue(i, node);
+        p.Gray->AddRGBPoint(node[0], node[1], node[1], node[1], node[2], node[3]);
+      }
+    }
+    p.Mapper->SetLookupTable(p.Gray);
+  }
+  vtkProperty* look = p.Actor->GetProperty();
+  if (property->GetShade(0))
+  {
+    look->SetAmbient(property->GetAmbient(0));
+    look->SetDiffuse(property->GetDiffuse(0));
+    look->SetSpecular(property->GetSpecular(0));
+    look->SetSpecularPower(property->GetSpecularPower(0));
+  }
+  p.Matrix->DeepCopy(volume->GetMatrix());
+  if (p.Mapper->GetClippingPlanes() != mapper->GetClippingPlanes())
+  {
+    p.Mapper->SetClippingPlanes(mapper->GetClippingPlanes());
+  }
+  p.Surface->Update();
+  return &p;
+}
+
+//------------------------------------------------------------------------------
+const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, double threshold)
+{
+  this->End();
+  this->Count = 0;
+  this->Props.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
+  for (vtkProp*& prop : this->Props)
+  {
+    auto* volume = vtkVolume::SafeDownCast(prop);
+    if (Drawable(volume))
+    {
+      Proxy* p = this->Update(volume, threshold);
+      prop = p->Actor;
+      this->Active.push_back(p->Actor);
+    }
+  }
+  // Volumes gone from the scene free their surfaces.
+  for (auto it = this->Proxies.begin(); it != this->Proxies.end();)
+  {
+    const bool used = std::find(this->Active.begin(), this->Active.end(), it->second->Actor) !=
+      this->Active.end();
+    it = used || it->second->Volume ? std::next(it) : this->Proxies.erase(it);
+  }
+  this->Count = static_cast<int>(this->Active.size());
+  if (this->Active.empty())
+  {
+    return s;
+  }
+  vtkRenderer* ren = s->GetRenderer();
+  this->State.reset(new vtkRenderState(ren));
+  this->State->SetPropArrayAndCount(this->Props.data(), static_cast<int>(this->Props.size()));
+  this->State->SetFrameBuffer(s->GetFrameBuffer());
+  this->State->SetRequiredKeys(s->GetRequiredKeys());
+  for (vtkActor* actor : this->Active)
+  {
+    ren->GetViewProps()->AddItem(actor);
+  }
+  this->Renderer = ren;
+  return this->State.get();
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeVolumeSurfaces::AddToRenderer(vtkRenderer* ren)
+{
+  this->End();
+  if (!ren)
+  {
+    return;
+  }
+  vtkPropCollection* props = ren->GetViewProps();
+  for (auto& entry : this->Proxies)
+  {
+    vtkVolume* volume = entry.second->Volume;
+    if (volume && props->IsItemPresent(volume) && Drawable(volume))
+    {
+      props->AddItem(entry.second->Actor);
+      this->Active.push_back(entry.second->Actor);
+    }
+  }
+  this->Renderer = this->Active.empty() ? nullptr : ren;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeVolumeSurfaces::End()
+{
+  if (this->Renderer)
+  {
+    for (vtkActor* actor : this->Active)
+    {
+      this->Renderer->GetViewProps()->RemoveItem(actor);
+    }
+  }
+  this->Renderer = nullptr;
+  this->Active.clear();
+  this->State.reset();
+}
+
+//------------------------------------------------------------------------------
+int vtkStylizeVolumeSurfaces::GetNumberOfSurfaces() const
+{
+  return this->Count;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeVolumeSurfaces::ReleaseGraphicsResources(vtkWindow* w)
+{
+  for (auto& entry : this->Proxies)
+  {
+    entry.second->Actor->ReleaseGraphicsResources(w);
+  }
+}
