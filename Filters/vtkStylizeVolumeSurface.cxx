@@ -7,8 +7,8 @@
 #include "vtkContourFilter.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkDoubleArray.h"
-#include "vtkFlyingEdges3D.h"
 #include "vtkFloatArray.h"
+#include "vtkFlyingEdges3D.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -58,8 +58,8 @@ vtkSmartPointer<vtkDataArray> ComponentOf(vtkDataArray* array, int component)
  * and where `opaque` holds for a sample on that face, the new samples set to `pad`: the opaque
  * region then ends inside the image. Returns null when nothing needs padding.
  */
-vtkSmartPointer<vtkImageData> Padded(vtkImageData* image, vtkDataArray* values,
-  const int whole[6], double pad, const std::function<bool(double)>& opaque)
+vtkSmartPointer<vtkImageData> Padded(vtkImageData* image, vtkDataArray* values, const int whole[6],
+  double pad, const std::function<bool(double)>& opaque)
 {
   int e[6];
   image->GetExtent(e);
@@ -118,10 +118,10 @@ vtkSmartPointer<vtkImageData> Padded(vtkImageData* image, vtkDataArray* values,
         {
           for (int i = grown[0]; i <= grown[1]; ++i)
           {
-            const vtkIdType o = (static_cast<vtkIdType>(k - grown[4]) * ny + (j - grown[2])) * nx +
-              (i - grown[0]);
-            const bool inside = i >= e[0] && i <= e[1] && j >= e[2] && j <= e[3] && k >= e[4] &&
-              k <= e[5];
+            const vtkIdType o =
+              (static_cast<vtkIdType>(k - grown[4]) * ny + (j - grown[2])) * nx + (i - grown[0]);
+            const bool inside =
+              i >= e[0] && i <= e[1] && j >= e[2] && j <= e[3] && k >= e[4] && k <= e[5];
             int ijk[3] = { i, j, k };
             padded->SetComponent(
               o, 0, inside ? values->GetComponent(image->ComputePointId(ijk), 0) : pad);
@@ -369,8 +369,7 @@ int vtkStylizeVolumeSurface::RequestData(
       image = padded;
       double padRange[2];
       padded->GetPointData()->GetScalars()->GetRange(padRange, 0);
-      isovalues =
-        Crossings(this->ScalarOpacity, threshold, padRange[0], padRange[1], &rising);
+      isovalues = Crossings(this->ScalarOpacity, threshold, padRange[0], padRange[1], &rising);
     }
   }
 

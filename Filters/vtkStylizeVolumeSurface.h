@@ -18,8 +18,8 @@
  *
  * Input: vtkImageData (vtkFlyingEdges3D, threaded) or any other vtkDataSet (vtkContourFilter),
  * with the scalar array chosen by SetInputArrayToProcess(0, ...) (default: the point scalars,
- * else the cell scalars, moved to the points), component Component. What the ray caster does and this
- * filter does not: the gradient opacity, cropping, and blend modes other than composite and
+ * else the cell scalars, moved to the points), component Component. What the ray caster does and
+ * this filter does not: the gradient opacity, cropping, and blend modes other than composite and
  * isosurface (maximum intensity and the others show no surface: the opacity's crossings are
  * used). Reports progress (ProgressEvent) from its contouring.
  *
@@ -29,7 +29,7 @@
 #define vtkStylizeVolumeSurface_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkSmartPointer.h"          // for vtkSmartPointer
+#include "vtkSmartPointer.h"         // for vtkSmartPointer
 #include "vtkStylizeFiltersModule.h" // for export macro
 
 #include <vector> // for std::vector
@@ -88,8 +88,8 @@ public:
    * opaque side is the higher values). Values outside the function's nodes take its end values
    * (as VTK's volume mappers clamp them).
    */
-  static std::vector<double> Crossings(vtkPiecewiseFunction* function, double threshold,
-    double low, double high, std::vector<bool>* rising = nullptr);
+  static std::vector<double> Crossings(vtkPiecewiseFunction* function, double threshold, double low,
+    double high, std::vector<bool>* rising = nullptr);
 
   vtkMTimeType GetMTime() override;
 

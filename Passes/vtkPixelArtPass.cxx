@@ -406,7 +406,7 @@ vtkPixelArtPass::Plan vtkPixelArtPass::PlanFrame(const vtkRenderState* s, const 
 
   // What this frame computes.
   p.Fast = this->Mode == FAST || frame.Interactive; // the interactive variant is FAST
-  p.WriteDepth = this->DepthOutput == DEPTH_ALWAYS;
+  p.WriteDepth = this->DepthOutput == DEPTH_ALWAYS || this->HasPlainAnnotations();
   for (int i = 0; i < s->GetPropArrayCount() && !p.WriteDepth; ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];

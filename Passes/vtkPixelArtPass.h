@@ -314,19 +314,19 @@ public:
   /** When the pass writes the scene's depth into the output's depth buffer. */
   enum DepthOutputs
   {
-    DEPTH_AUTO = 0, ///< when translucent geometry or volumes follow; otherwise cleared to far
+    DEPTH_AUTO = 0, ///< when translucent geometry, volumes or annotations follow; else far
     DEPTH_ALWAYS =
       1 ///< always (for readers of the depth buffer: vtkRenderer::GetZ, z-buffer capture)
   };
 
   ///@{
   /**
-   * DEPTH_AUTO (default) writes the depth only when the scene has translucent geometry or volumes
-   * (drawn afterwards and depth-tested against the pixel art); otherwise the depth buffer is
-   * cleared, which saves a full-resolution depth write (about 4 ms per frame at 1920x1080 on
-   * llvmpipe). DEPTH_ALWAYS writes it every frame.
-   * Values: DEPTH_AUTO, when translucent geometry or volumes follow; otherwise cleared to far;
-   * DEPTH_ALWAYS, always (for readers of the depth buffer: vtkRenderer::GetZ, z-buffer capture).
+   * DEPTH_AUTO (default) writes the depth only when the scene has translucent geometry, volumes
+   * or plain annotations (drawn afterwards and depth-tested against the pixel art); otherwise the
+   * depth buffer is cleared, which saves a full-resolution depth write (about 4 ms per frame at
+   * 1920x1080 on llvmpipe). DEPTH_ALWAYS writes it every frame. Values: DEPTH_AUTO, when
+   * translucent geometry, volumes or annotations follow; else far; DEPTH_ALWAYS, always (for
+   * readers of the depth buffer: vtkRenderer::GetZ, z-buffer capture).
    */
   vtkSetClampMacro(DepthOutput, int, DEPTH_AUTO, DEPTH_ALWAYS);
   vtkGetMacro(DepthOutput, int);

@@ -146,6 +146,13 @@ vtkStylizeGBufferPass::vtkStylizeGBufferPass()
   this->VolumeSequence->SetPasses(volumes);
   this->Internals->Peeler->SetLayerPasses(lights, translucent);
   this->OverlayPass = vtkOverlayPass::New();
+  this->AnnotationSequence = vtkSequencePass::New();
+  vtkNew<vtkRenderPassCollection> annotations;
+  vtkNew<vtkOpaquePass> annotationOpaque;
+  vtkNew<vtkTranslucentPass> annotationTranslucent;
+  annotations->AddItem(annotationOpaque);
+  annotations->AddItem(annotationTranslucent);
+  this->AnnotationSequence->SetPasses(annotations);
   this->ShaderStageTime.Modified();
 }
 
@@ -162,6 +169,7 @@ vtkStylizeGBufferPass::~vtkStylizeGBufferPass()
   this->AfterSequence->Delete();
   this->VolumeSequence->Delete();
   this->OverlayPass->Delete();
+  this->AnnotationSequence->Delete();
 }
 
 //------------------------------------------------------------------------------
@@ -586,6 +594,18 @@ void vtkStylizeGBufferPass::RenderAfterGeometry(const vtkRenderState* s)
     after->Render(s);
   }
   this->NumberOfRenderedProps += after->GetNumberOfRenderedProps();
+  if (!this->AfterProps.empty())
+  {
+    // the annotations, as VTK draws them, over the stylized picture
+    vtkRenderState annotations(ren);
+    annotations.SetPropArrayAndCount(
+      this->AfterProps.data(), static_cast<int>(this->AfterProps.size()));
+    annotations.SetFrameBuffer(s->GetFrameBuffer());
+    this->AnnotationSequence->Render(&annotations);
+    this->NumberOfRenderedProps += this->AnnotationSequence->GetNumberOfRenderedProps();
+    this->OverlayPass->Render(&annotations);
+    this->NumberOfRenderedProps += this->OverlayPass->GetNumberOfRenderedProps();
+  }
   this->OverlayPass->Render(s);
   this->NumberOfRenderedProps += this->OverlayPass->GetNumberOfRenderedProps();
 }
@@ -681,6 +701,7 @@ void vtkStylizeGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   this->GeometryCameraPass->ReleaseGraphicsResources(w);
   this->AfterSequence->ReleaseGraphicsResources(w);
+  this->AnnotationSequence->ReleaseGraphicsResources(w);
   this->OverlayPass->ReleaseGraphicsResources(w);
   if (this->LightingPass)
   {

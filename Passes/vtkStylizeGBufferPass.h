@@ -27,12 +27,14 @@
 #include "vtkStylizePassesModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
 
 class vtkCameraPass;
 class vtkFloatArray;
 class vtkMultiProcessController;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkProp;
 class vtkRenderPass;
 class vtkSequencePass;
 class vtkShaderProgram;
@@ -234,6 +236,19 @@ public:
    */
   void RenderAfterGeometry(const vtkRenderState* s);
 
+#ifndef __VTK_WRAP__
+  /**
+   * Props RenderAfterGeometry() draws as VTK does (VTK's lighting, opaque then translucent, then
+   * their overlay), depth-tested against the stylized picture, after the volumes: the
+   * annotations a style leaves plain (vtkStylizeStylePass::PlainAnnotations). Not owned: valid
+   * until the frame ends. Default: none.
+   */
+  void SetAfterProps(const std::vector<vtkProp*>& props)
+  {
+    this->AfterProps = props;
+  }
+#endif
+
   /**
    * Renders one translucent layer of the scene into this G-buffer, for a style that draws
    * translucent surfaces itself (vtkStylizeStylePass::TranslucentLayers). The props with
@@ -433,6 +448,8 @@ protected:
   bool DrawTranslucent = true;
   bool BuiltLayer = false; // the shaders test a translucent layer's depths
   vtkRenderPass* OverlayPass = nullptr;
+  vtkSequencePass* AnnotationSequence = nullptr; // opaque and translucent, VTK's lighting
+  std::vector<vtkProp*> AfterProps;
 
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
   vtkTextureObject* ColorTexture = nullptr;

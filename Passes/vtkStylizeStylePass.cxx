@@ -314,13 +314,66 @@ void vtkStylizeStylePass::Render(const vtkRenderState* original)
   const vtkRenderState* s = this->StylizeVolumes && !original->GetRenderer()->GetSelector()
     ? volumes.Begin(original, threshold)
     : original;
+  s = this->SeparateAnnotations(s);
   Frame frame;
   if (this->BeginFrame(s, frame) && this->RenderStyle(s, frame))
   {
     this->RenderTranslucentLayers(s, frame);
     this->EndFrame(s);
   }
+  vtkInternals& in = *this->Internals;
+  in.GBuffer->SetAfterProps({});
+  in.Annotations.clear();
+  in.SceneState.reset();
   volumes.End();
+}
+
+//------------------------------------------------------------------------------
+const vtkRenderState* vtkStylizeStylePass::SeparateAnnotations(const vtkRenderState* s)
+{
+  vtkInternals& in = *this->Internals;
+  in.Annotations.clear();
+  in.SceneProps.clear();
+  if (this->PlainAnnotations && !this->DelegatePass && !s->GetRenderer()->GetSelector())
+  {
+    for (int i = 0; i < s->GetPropArrayCount(); ++i)
+    {
+      vtkProp* prop = s->GetPropArray()[i];
+      (IsAnnotation(prop) ? in.Annotations : in.SceneProps).push_back(prop);
+    }
+  }
+  in.GBuffer->SetAfterProps(in.Annotations);
+  if (in.Annotations.empty())
+  {
+    return s;
+  }
+  in.SceneState.reset(new vtkRenderState(s->GetRenderer()));
+  in.SceneState->SetPropArrayAndCount(in.SceneProps.data(), static_cast<int>(in.SceneProps.size()));
+  in.SceneState->SetFrameBuffer(s->GetFrameBuffer());
+  in.SceneState->SetRequiredKeys(s->GetRequiredKeys());
+  return in.SceneState.get();
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStylePass::IsAnnotation(vtkProp* prop)
+{
+  static const char* const classes[] = { "vtkCubeAxesActor", "vtkPolarAxesActor",
+    "vtkGridAxesActor3D", "vtkGridAxesActor2D", "vtkAxesActor", "vtkAxisActor", "vtkTextActor3D",
+    "vtkBillboardTextActor3D", "vtkAxisFollower", "vtkProp3DAxisFollower" };
+  for (const char* name : classes)
+  {
+    if (prop && prop->IsA(name))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStylePass::HasPlainAnnotations()
+{
+  return !this->Internals->Annotations.empty();
 }
 
 //------------------------------------------------------------------------------

@@ -39,6 +39,7 @@ class vtkInformationDoubleKey;
 class vtkInformationIntegerKey;
 class vtkFloatArray;
 class vtkOpenGLRenderWindow;
+class vtkProp;
 class vtkRenderer;
 class vtkStylizeGBufferPass;
 class vtkStylizeLightingPass;
@@ -216,6 +217,24 @@ public:
 
   /** The number of volumes the last frame drew as surfaces (StylizeVolumes). */
   int GetNumberOfVolumeSurfaces();
+
+  ///@{
+  /**
+   * Annotations drawn as VTK draws them: axes (vtkCubeAxesActor, vtkPolarAxesActor,
+   * vtkGridAxesActor3D, vtkAxesActor, vtkAxisActor) and 3D text (vtkTextActor3D,
+   * vtkBillboardTextActor3D, vtkAxisFollower) are left out of the stylized scene and drawn over
+   * the stylized picture, depth-tested against it, so that labels stay readable in every style
+   * (line art draws no lines on them, pixel art would pixelate them to blobs). Off stylizes them
+   * with the rest of the scene. Applies when the style renders the geometry itself (not behind a
+   * compositor: ParaView in parallel). Default on.
+   */
+  vtkSetMacro(PlainAnnotations, bool);
+  vtkGetMacro(PlainAnnotations, bool);
+  vtkBooleanMacro(PlainAnnotations, bool);
+  ///@}
+
+  /** Whether `prop` is an annotation (PlainAnnotations): axes and 3D text. */
+  static bool IsAnnotation(vtkProp* prop);
 
   /** Renders the frame: the opaque scene and the translucent layers through the style. */
   void Render(const vtkRenderState* s) override;
@@ -628,6 +647,11 @@ protected:
   int TranslucentLayers = 4;
   int LastTranslucentLayers = 0;
   bool StylizeVolumes = true;
+  bool PlainAnnotations = true;
+
+  /** Whether the frame being rendered leaves annotations plain (PlainAnnotations): they are
+   * drawn after the stylized picture, which must then write its depth. */
+  bool HasPlainAnnotations();
   double VolumeOpacityThreshold = 0.1;
 
   /**
@@ -644,6 +668,12 @@ private:
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+
+  /**
+   * The state without its annotations (PlainAnnotations), which are handed to the G-buffer to
+   * draw after the picture; `s` itself when there are none.
+   */
+  const vtkRenderState* SeparateAnnotations(const vtkRenderState* s);
 
   /** Gives `frame` its guard band (BeginFrame()). */
   void PlanGuardBand(Frame& frame);

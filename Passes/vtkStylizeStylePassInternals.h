@@ -11,9 +11,12 @@
 #include "vtkStylizeStylePass.h"
 #include "vtkStylizeVolumeSurfaces.h"
 
+#include <memory>
 #include <vector>
 
 class vtkOpenGLFramebufferObject;
+class vtkProp;
+class vtkRenderState;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -42,7 +45,10 @@ public:
   int GuardSize[2] = { 0, 0 };
   double GuardTransform[4] = { 1.0, 1.0, 0.0, 0.0 };
   vtkStylizeReducedOutput Reduced;
-  vtkStylizeVolumeSurfaces Volumes; // volumes drawn as surfaces (StylizeVolumes)
+  vtkStylizeVolumeSurfaces Volumes;  // volumes drawn as surfaces (StylizeVolumes)
+  std::vector<vtkProp*> Annotations; // drawn plain after the frame (PlainAnnotations)
+  std::vector<vtkProp*> SceneProps;  // the frame's props without them
+  std::unique_ptr<vtkRenderState> SceneState;
 
   void FreeTextures(vtkWindow* w)
   {

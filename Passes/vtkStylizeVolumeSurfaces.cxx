@@ -123,9 +123,8 @@ bool vtkStylizeVolumeSurfaces::Drawable(vtkVolume* volume)
   {
     return false;
   }
-  vtkDataArray* scalars = data->GetPointData()->GetScalars()
-    ? data->GetPointData()->GetScalars()
-    : data->GetCellData()->GetScalars();
+  vtkDataArray* scalars = data->GetPointData()->GetScalars() ? data->GetPointData()->GetScalars()
+                                                             : data->GetCellData()->GetScalars();
   const bool named = mapper->GetScalarMode() == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA ||
     mapper->GetScalarMode() == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA;
   if (!scalars && !named)
@@ -242,8 +241,8 @@ const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, d
   // Volumes gone from the scene free their surfaces.
   for (auto it = this->Proxies.begin(); it != this->Proxies.end();)
   {
-    const bool used = std::find(this->Active.begin(), this->Active.end(), it->second->Actor) !=
-      this->Active.end();
+    const bool used =
+      std::find(this->Active.begin(), this->Active.end(), it->second->Actor) != this->Active.end();
     it = used || it->second->Volume ? std::next(it) : this->Proxies.erase(it);
   }
   this->Count = static_cast<int>(this->Active.size());

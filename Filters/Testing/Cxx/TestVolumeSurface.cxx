@@ -81,9 +81,10 @@ struct Shape
 {
   vtkIdType Points = 0;
   double MeanRadius = 0.0, MaxRadiusError = 0.0; // over the points inside the box's faces
-  double Outward = 0.0;   // share of sphere points whose normal points away from the centre
-  double Agreeing = 0.0;  // share of triangles (not slivers) whose own normal agrees with their points'
-  vtkIdType OnFaces = 0;  // points on the box's faces (|x|, |y| or |z| about 1)
+  double Outward = 0.0; // share of sphere points whose normal points away from the centre
+  double Agreeing =
+    0.0; // share of triangles (not slivers) whose own normal agrees with their points'
+  vtkIdType OnFaces = 0; // points on the box's faces (|x|, |y| or |z| about 1)
 };
 
 Shape Measure(vtkPolyData* pd, double radius)
@@ -182,8 +183,8 @@ int TestVolumeSurface(int, char*[])
     STYLIZE_CHECK(s.Points > 1000 && s.OnFaces == 0, "sphere: %lld points, %lld on the faces",
       static_cast<long long>(s.Points), static_cast<long long>(s.OnFaces));
     STYLIZE_CHECK(s.MaxRadiusError < 0.25 * h, "sphere radius error %g", s.MaxRadiusError);
-    STYLIZE_CHECK(s.Outward > 0.999 && s.Agreeing > 0.999, "sphere normals: outward %g, agreeing %g",
-      s.Outward, s.Agreeing);
+    STYLIZE_CHECK(s.Outward > 0.999 && s.Agreeing > 0.999,
+      "sphere normals: outward %g, agreeing %g", s.Outward, s.Agreeing);
   }
   // Falling: the shell r > 0.5 is opaque, closed by the box's faces.
   {
@@ -199,8 +200,8 @@ int TestVolumeSurface(int, char*[])
   {
     auto up = Ramp(0.0, 1.0);
     Shape s = Measure(Surface(field, up, 0.5, { 0.25 }), 0.75);
-    STYLIZE_CHECK(s.Points > 1000 && s.MaxRadiusError < 0.25 * h, "isovalue 0.25: error %g",
-      s.MaxRadiusError);
+    STYLIZE_CHECK(
+      s.Points > 1000 && s.MaxRadiusError < 0.25 * h, "isovalue 0.25: error %g", s.MaxRadiusError);
   }
   // Solid everywhere, nowhere; NaN threshold; empty input.
   {
@@ -208,14 +209,14 @@ int TestVolumeSurface(int, char*[])
     auto pd = Surface(field, solid, 0.5);
     double b[6];
     pd->GetBounds(b);
-    STYLIZE_CHECK(pd->GetNumberOfCells() > 0 && std::abs(b[0] + 1) < 1e-6 &&
-        std::abs(b[5] - 1) < 1e-6,
+    STYLIZE_CHECK(
+      pd->GetNumberOfCells() > 0 && std::abs(b[0] + 1) < 1e-6 && std::abs(b[5] - 1) < 1e-6,
       "solid: the outer faces");
     auto clear = Ramp(0.0, 0.1);
     STYLIZE_CHECK(Surface(field, clear, 0.5)->GetNumberOfCells() == 0, "clear: nothing");
     auto up = Ramp(0.0, 1.0);
-    STYLIZE_CHECK(Surface(field, up, std::numeric_limits<double>::quiet_NaN())
-                    ->GetNumberOfCells() == 0,
+    STYLIZE_CHECK(
+      Surface(field, up, std::numeric_limits<double>::quiet_NaN())->GetNumberOfCells() == 0,
       "NaN threshold: nothing");
     vtkNew<vtkImageData> empty;
     STYLIZE_CHECK(Surface(empty, up, 0.5)->GetNumberOfCells() == 0, "empty input");
@@ -231,8 +232,8 @@ int TestVolumeSurface(int, char*[])
       "unstructured: error %g, agreeing %g", s.MaxRadiusError, s.Agreeing);
     auto cells = Field(true);
     s = Measure(Surface(cells, up, 0.5), 0.5);
-    STYLIZE_CHECK(s.Points > 1000 && s.MaxRadiusError < 0.5 * h, "cell scalars: error %g",
-      s.MaxRadiusError);
+    STYLIZE_CHECK(
+      s.Points > 1000 && s.MaxRadiusError < 0.5 * h, "cell scalars: error %g", s.MaxRadiusError);
   }
   return Failures == 0 ? 0 : 1;
 }
