@@ -311,7 +311,9 @@ void vtkStylizeStylePass::Render(const vtkRenderState* original)
   vtkStylizeVolumeSurfaces& volumes = this->Internals->Volumes;
   const double threshold =
     std::isfinite(this->VolumeOpacityThreshold) ? this->VolumeOpacityThreshold : 0.1;
-  const vtkRenderState* s = this->StylizeVolumes && !original->GetRenderer()->GetSelector()
+  // (behind a compositor, ParaView's ranks, the volumes stay VTK's: not checked there)
+  const vtkRenderState* s =
+    this->StylizeVolumes && !this->DelegatePass && !original->GetRenderer()->GetSelector()
     ? volumes.Begin(original, threshold)
     : original;
   s = this->SeparateAnnotations(s);

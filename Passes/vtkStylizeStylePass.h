@@ -188,7 +188,9 @@ public:
    * only when the data or the transfer functions change. What the volume holds below the
    * threshold (a faint haze) is not drawn: lower the threshold to show it. Off, and for a volume
    * whose STYLIZE_VOLUME key is 0, the volume is drawn by VTK over the stylized picture. Volumes
-   * of composite data or of dependent components (RGBA) are always drawn by VTK. Default on.
+   * of composite data or of dependent components (RGBA) are always drawn by VTK, and so are all
+   * volumes when the style stylizes a compositor's picture (a delegate pass: ParaView in
+   * parallel). Default on.
    */
   vtkSetMacro(StylizeVolumes, bool);
   vtkGetMacro(StylizeVolumes, bool);

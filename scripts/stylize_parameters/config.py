@@ -97,6 +97,9 @@ XML_SKIP = {("vtkStylizeLightingPass", "Model"): "set by the view",
             ("vtkSketchPass", "SceneBounds"): "set by the view (the data's bounds on all ranks)",
             ("vtkPixelArtPass", "InteractiveImageReduction"):
                 "no effect: the pixel art renders its scene at its art resolution already",
+            **{(c, n): "no effect in ParaView's view (a compositor's picture)"
+               for c in ("vtkComicPass", "vtkPixelArtPass", "vtkSketchPass", "vtkLineArtPass")
+               for n in ("StylizeVolumes", "VolumeOpacityThreshold", "PlainAnnotations")},
             ("vtkSketchPass", "DirectionArrayName"):
                 "ParaView's data is composite: Model reads its tangents, which the Principal "
                 "Curvatures filter's TangentDirection picks"}
