@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 struct vtkStylizeVolumeSurfaces::Proxy
 {
@@ -35,6 +36,7 @@ struct vtkStylizeVolumeSurfaces::Proxy
   vtkNew<vtkActor> Actor;
   vtkNew<vtkMatrix4x4> Matrix;
   vtkNew<vtkColorTransferFunction> Gray; // a gray transfer function as colours
+  std::string Selected;                  // the input array last selected
 };
 
 namespace
@@ -51,9 +53,31 @@ double VolumeThreshold(vtkVolume* volume, double fallback)
   return fallback;
 }
 
-/** The mapper's scalar selection as the filter's input array. */
-void SelectArray(vtkAbstractVolumeMapper* mapper, vtkDataSet* data, vtkAlgorithm* filter)
+/**
+ * The mapper's scalar selection as the filter's input array; `selected` keeps the last one
+ * (SetInputArrayToProcess() modifies the filter at every call, which would recompute the
+ * surface at every frame).
+ */
+void SelectArray(
+  vtkAbstractVolumeMapper* mapper, vtkDataSet* data, vtkAlgorithm* filter, std::string& selected)
 {
+  auto select = [&](int association, const char* name, int attribute)
+  {
+    const std::string key = std::to_string(association) + (name ? std::string("/") + name : "") +
+      "#" + std::to_string(attribute);
+    if (key != selected)
+    {
+      selected = key;
+      if (name)
+      {
+        filter->SetInputArrayToProcess(0, 0, 0, association, name);
+      }
+      else
+      {
+        filter->SetInputArrayToProcess(0, 0, 0, association, attribute);
+      }
+    }
+  };
   const int mode = mapper->GetScalarMode();
   const bool cells =
     mode == VTK_SCALAR_MODE_USE_CELL_DATA || mode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA;
@@ -71,7 +95,7 @@ void SelectArray(vtkAbstractVolumeMapper* mapper, vtkDataSet* data, vtkAlgorithm
     }
     if (name)
     {
-      filter->SetInputArrayToProcess(0, 0, 0, association, name);
+      select(association, name, -1);
       return;
     }
   }
@@ -79,9 +103,9 @@ void SelectArray(vtkAbstractVolumeMapper* mapper, vtkDataSet* data, vtkAlgorithm
   const bool cellScalars = mode == VTK_SCALAR_MODE_USE_CELL_DATA ||
     (mode == VTK_SCALAR_MODE_DEFAULT && data && !data->GetPointData()->GetScalars() &&
       data->GetCellData()->GetScalars());
-  filter->SetInputArrayToProcess(0, 0, 0,
+  select(
     cellScalars ? vtkDataObject::FIELD_ASSOCIATION_CELLS : vtkDataObject::FIELD_ASSOCIATION_POINTS,
-    vtkDataSetAttributes::SCALARS);
+    nullptr, vtkDataSetAttributes::SCALARS);
 }
 
 /** The mapper's input, brought up to date. */
@@ -169,7 +193,7 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
   {
     p.Surface->SetInputData(data);
   }
-  SelectArray(mapper, data, p.Surface);
+  SelectArray(mapper, data, p.Surface, p.Selected);
   p.Surface->SetScalarOpacity(property->GetScalarOpacity(0));
   p.Surface->SetOpacityThreshold(VolumeThreshold(volume, threshold));
   std::vector<double> iso;
