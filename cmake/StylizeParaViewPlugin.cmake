@@ -66,7 +66,7 @@ find_package(ParaView 5.11 REQUIRED COMPONENTS RemotingViews pqApplicationCompon
 find_package(VTK REQUIRED COMPONENTS
   Python PythonInterpreter WrappingPythonCore libxml2 xdmf2 xdmf3
   RenderingAnnotation FiltersExtraction IOCore IOLegacy IOXML IOXMLParser IOGeometry IOExodus
-  IOEnSight IOPLY)
+  IOEnSight IOPLY RenderingVolume CommonMisc)
 include("${VTK_DIR}/vtkEncodeString.cmake")
 
 paraview_plugin_scan(
