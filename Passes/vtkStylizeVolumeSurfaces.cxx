@@ -229,14 +229,13 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
     }
     p.Mapper->SetLookupTable(p.Gray);
   }
+  // (unshaded: a surface's defaults, so that the style's light still shapes it)
   vtkProperty* look = p.Actor->GetProperty();
-  if (property->GetShade(0))
-  {
-    look->SetAmbient(property->GetAmbient(0));
-    look->SetDiffuse(property->GetDiffuse(0));
-    look->SetSpecular(property->GetSpecular(0));
-    look->SetSpecularPower(property->GetSpecularPower(0));
-  }
+  const bool shade = property->GetShade(0) != 0;
+  look->SetAmbient(shade ? property->GetAmbient(0) : 0.0);
+  look->SetDiffuse(shade ? property->GetDiffuse(0) : 1.0);
+  look->SetSpecular(shade ? property->GetSpecular(0) : 0.0);
+  look->SetSpecularPower(shade ? property->GetSpecularPower(0) : 1.0);
   p.Matrix->DeepCopy(volume->GetMatrix());
   if (p.Mapper->GetClippingPlanes() != mapper->GetClippingPlanes())
   {

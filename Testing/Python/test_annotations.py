@@ -14,8 +14,7 @@ import sys
 
 import numpy as np
 import vtk
-from vtk.util import numpy_support
-
+from stylize_png import window_array
 from vtkstylize import vtkComicPass, vtkLineArtPass, vtkPixelArtPass, vtkSketchPass
 
 SIZE = (480, 360)
@@ -69,13 +68,7 @@ def picture(style=None, sphere=True, annotations=True, plain=True):
         p.SetPlainAnnotations(plain)
         renderer.SetPass(p)
     window.Render()
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    img = grab.GetOutput()
-    w, h, _ = img.GetDimensions()
-    return numpy_support.vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3]
+    return window_array(window)
 
 
 def near(mask, radius):

@@ -35,6 +35,9 @@ from vtk.util import numpy_support
 import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401 (the GPU ray caster's factory)
 from vtkstylize import vtkComicPass, vtkLineArtPass, vtkPixelArtPass, vtkSketchPass
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+from stylize_png import window_array  # noqa: E402
+
 STYLES = {"comic": vtkComicPass, "pixel": vtkPixelArtPass, "sketch": vtkSketchPass,
           "lines": vtkLineArtPass}
 GOAL_PLAIN = 0.2
@@ -208,13 +211,7 @@ def render(builder, data, style, size, with_volume=True, times=0, only_volume=Fa
             style_pass.SetPalette(vtkPixelArtPass.PALETTE16)
         renderer.SetPass(style_pass)
     window.Render()
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    img = grab.GetOutput()
-    w, h, _ = img.GetDimensions()
-    pixels = numpy_support.vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3]
+    pixels = window_array(window)
     surfaces = style_pass.GetNumberOfVolumeSurfaces() if style_pass else 0
     seconds = []  # (after the picture: each frame turns the camera a little)
     for _ in range(times):
@@ -222,7 +219,7 @@ def render(builder, data, style, size, with_volume=True, times=0, only_volume=Fa
         start = time.perf_counter()
         window.Render()
         seconds.append(time.perf_counter() - start)
-    return pixels[::-1].copy(), (statistics.median(seconds) if seconds else None), surfaces
+    return pixels, (statistics.median(seconds) if seconds else None), surfaces
 
 
 def save(pixels, path):
