@@ -178,7 +178,8 @@ std::string vtkStylizeGBufferPass::ChannelCode(
   }
   if (this->Channels & LINEAR_DEPTH)
   {
-    values[2] = surface ? "vec4(-vertexVC.z, 0.0, 0.0, 1.0)" : "vec4(0.0)";
+    // -1 marks a line or point without a surface normal (the background keeps 0)
+    values[2] = surface ? "vec4(-vertexVC.z, 0.0, 0.0, 1.0)" : "vec4(-1.0, 0.0, 0.0, 1.0)";
   }
   if (this->Channels & DIRECTION)
   {

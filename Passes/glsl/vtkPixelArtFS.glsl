@@ -59,8 +59,78 @@ vec4 pixelFetch(sampler2D tex, ivec2 p)
 }
 
 #ifdef PIXEL_STAGE_REDUCE
+// Sample ij of the block starting at G-buffer pixel lo, `extent` pixels with n samples per axis;
+// ij may lie in a neighbouring block (the same spacing, continued).
+ivec2 pixelSample(ivec2 lo, ivec2 extent, ivec2 n, ivec2 ij)
+{
+  return lo + ivec2(floor(vec2(ij * extent) / vec2(n)));
+}
+
+// The linear depth at G-buffer pixel p; 0 outside the G-buffer.
+float pixelReduceDepth(ivec2 p)
+{
+  bool inside = all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, pixelExtentSize));
+  return inside ? texelFetch(stylizeLinearDepthTexture, p, 0).r : 0.0;
+}
+
+// The samples of sample ij's surface (linear depth z) in a row along `dir` through it, itself
+// included, counted up to `cap`: the row ends at the background, at a line and where the next
+// sample lies behind by a step steeper than the depth-edge threshold (the surface's occluding
+// edge). A nearer next sample continues the row: a surface turning away near its silhouette
+// steepens towards it, and an occluder in front does not make the surface behind it thin.
+int pixelRun(ivec2 lo, ivec2 extent, ivec2 n, ivec2 ij, ivec2 dir, float z, int cap)
+{
+  vec2 axis = vec2(abs(dir));
+  float pixels = dot(vec2(extent) / vec2(n), axis); // screen pixels per step
+  float slope = pixelDepthThreshold * pixelArtWorld * pixels / dot(vec2(pixelBlock), axis);
+  int run = 1;
+  for (int side = -1; side <= 1; side += 2)
+  {
+    float previous = z;
+    for (int m = 1; m < cap && run < cap; ++m)
+    {
+      float zq = pixelReduceDepth(pixelSample(lo, extent, n, ij + side * m * dir));
+      float gap = slope * (pixelParallel == 1 ? 1.0 : previous);
+      if (!(zq > 0.0) || zq - previous > gap)
+      {
+        break;
+      }
+      previous = zq;
+      ++run;
+    }
+  }
+  return run;
+}
+
+// The means of a set of samples.
+struct PixelSamples
+{
+  float count;
+  vec3 colour;
+  float opacity;
+  float depth;
+  vec3 normal;
+  vec3 position;
+};
+
+void pixelAdd(inout PixelSamples s, ivec2 p, vec4 c4, float z)
+{
+  s.count += 1.0;
+  s.colour += c4.rgb;
+  s.opacity += clamp(c4.a, 0.0, 1.0);
+  s.depth += z;
+#ifdef PIXEL_NORMALS
+  s.normal += texelFetch(stylizeNormalTexture, p, 0).xyz;
+#endif
+#ifdef PIXEL_POSITIONS
+  s.position += texelFetch(stylizePositionTexture, p, 0).xyz;
+#endif
+}
+
 // The art pixel's block of full-resolution pixels, clipped to the full image; blocks wider than
-// 16 pixels are sampled at 16 evenly spaced pixels per axis.
+// 16 pixels are sampled at 16 evenly spaced pixels per axis. A sample is on a surface (linear
+// depth > 0), on a line or point (unlit primitives: the G-buffer's linear depth -1), or on the
+// background (0).
 void pixelMain()
 {
   ivec2 k = pixelArtCoord();
@@ -68,13 +138,12 @@ void pixelMain()
   ivec2 hi = min(pixelGridOrigin + (k + 1) * pixelBlock - pixelExtentOrigin, pixelExtentSize);
   ivec2 extent = max(hi - lo, ivec2(1));
   ivec2 n = min(extent, ivec2(16));
-  vec3 surfaceColour = vec3(0.0);
+  PixelSamples surface = PixelSamples(0.0, vec3(0.0), 0.0, 0.0, vec3(0.0), vec3(0.0));
+  PixelSamples thin = surface;
+  PixelSamples primitive = surface;
   vec3 backgroundColour = vec3(0.0);
-  float surface = 0.0;
-  float opacity = 0.0;
-  float depth = 0.0;
-  vec3 normal = vec3(0.0);
-  vec3 position = vec3(0.0);
+  float zmin = 3.4e38;
+  float zmax = 0.0;
   // Constant loop bounds (PIXEL_REDUCE_SAMPLES: min(block, 16) per axis) let the compiler
   // unroll the loops; a block clipped by the image's edge takes its own n samples.
   for (int j = 0; j < PIXEL_REDUCE_SAMPLES.y; ++j)
@@ -87,46 +156,82 @@ void pixelMain()
       }
       ivec2 p = lo + (ivec2(i, j) * extent) / n;
       vec4 c4 = texelFetch(stylizeColorTexture, p, 0);
-      vec3 c = c4.rgb;
       float z = texelFetch(stylizeLinearDepthTexture, p, 0).r;
       if (z > 0.0)
       {
-        surface += 1.0;
-        surfaceColour += c;
-        opacity += clamp(c4.a, 0.0, 1.0);
-        depth += z;
-#ifdef PIXEL_NORMALS
-        normal += texelFetch(stylizeNormalTexture, p, 0).xyz;
-#endif
-#ifdef PIXEL_POSITIONS
-        position += texelFetch(stylizePositionTexture, p, 0).xyz;
-#endif
+        pixelAdd(surface, p, c4, z);
+        zmin = min(zmin, z);
+        zmax = max(zmax, z);
+      }
+      else if (z < 0.0)
+      {
+        pixelAdd(primitive, p, c4, 0.0);
       }
       else
       {
-        backgroundColour += c;
+        backgroundColour += c4.rgb;
       }
     }
   }
-  // An art pixel belongs to the surface when at least half of its block does; it then takes the
-  // mean of its surface samples (hard silhouettes, no halo of background colour), otherwise
-  // the mean of its background samples.
-  // A tie (exactly half) goes to the sample nearest the block's centre.
   float count = float(n.x * n.y);
+  // Thin parts of surfaces (glyphs' shafts, wires): samples whose surface is at most half a block
+  // across along x or y, bounded by the background, lines or depth steps (a convex silhouette's
+  // cap, wider than that, is not thin). Sought only where the
+  // block holds more than one surface or more than surfaces (an interior block pays nothing).
+  float step = pixelDepthThreshold * pixelArtWorld; // the steepest surface in one art pixel
+  bool mixed = surface.count < count ||
+    zmax - zmin > step * (pixelParallel == 1 ? 1.0 : zmin);
+  if (mixed && surface.count > 0.0 && primitive.count == 0.0)
+  {
+    ivec2 cap = n / 2 + 1; // thin: at most half a block across
+    for (int j = 0; j < PIXEL_REDUCE_SAMPLES.y; ++j)
+    {
+      for (int i = 0; i < PIXEL_REDUCE_SAMPLES.x; ++i)
+      {
+        ivec2 ij = ivec2(i, j);
+        ivec2 p = lo + (ij * extent) / n;
+        float z = i < n.x && j < n.y ? texelFetch(stylizeLinearDepthTexture, p, 0).r : 0.0;
+        if (z > 0.0 &&
+          (pixelRun(lo, extent, n, ij, ivec2(1, 0), z, cap.x) < cap.x ||
+            pixelRun(lo, extent, n, ij, ivec2(0, 1), z, cap.y) < cap.y))
+        {
+          pixelAdd(thin, p, texelFetch(stylizeColorTexture, p, 0), z);
+        }
+      }
+    }
+  }
+  // A line or point in the block wins: lines and points are never dropped. Then an art pixel
+  // belongs to the surface when at least half of its block does; it takes the mean of its
+  // surface samples (hard silhouettes, no halo of background colour), otherwise the mean of its
+  // background samples; a tie (exactly half) goes to the sample nearest the block's centre. Thin
+  // parts win over the background and over the surfaces they lie in front of, so that they
+  // stay at least one art pixel wide.
   ivec2 centre = clamp(lo + extent / 2, ivec2(0), pixelExtentSize - 1);
   bool centreOnSurface = texelFetch(stylizeLinearDepthTexture, centre, 0).r > 0.0;
-  bool covered = surface > 0.5 * count || (surface == 0.5 * count && centreOnSurface);
-  vec3 colour = covered ? surfaceColour / surface : backgroundColour / max(count - surface, 1.0);
-  // alpha: the surface's mean opacity (a translucent layer's), 0 on the background
-  gl_FragData[0] = vec4(colour, covered ? opacity / surface : 0.0);
-  gl_FragData[1] = vec4(covered ? depth / surface : 0.0, 0.0, 0.0, 1.0);
+  bool covered = surface.count > 0.5 * count || (surface.count == 0.5 * count && centreOnSurface);
+  float rest = surface.count - thin.count;
+  // (at least half a row of them: a thin part crossing the block, not a corner's tip clipping it)
+  bool thinWins = thin.count >= 0.5 * float(min(n.x, n.y)) &&
+    (!covered || rest == 0.0 || thin.depth / thin.count < (surface.depth - thin.depth) / rest);
+  PixelSamples chosen = primitive.count > 0.0 ? primitive : (thinWins ? thin : surface);
+  covered = covered || thinWins || primitive.count > 0.0;
+  float m = max(chosen.count, 1.0);
+  vec3 colour = covered ? chosen.colour / m : backgroundColour / max(count - surface.count, 1.0);
+  // alpha: the surface's mean opacity (a translucent layer's), 0 on the background, plus 2 on
+  // a thin part, line or point (drawn in its colour, not outlined); linear depth: -1 marks a
+  // line or point
+  float marked = thinWins || primitive.count > 0.0 ? 2.0 : 0.0;
+  gl_FragData[0] = vec4(colour, covered ? marked + chosen.opacity / m : 0.0);
+  float linear = primitive.count > 0.0 ? -1.0 : (covered ? chosen.depth / m : 0.0);
+  gl_FragData[1] = vec4(linear, 0.0, 0.0, 1.0);
+  bool solid = covered && primitive.count == 0.0;
 #ifdef PIXEL_NORMALS
-  float nl = length(normal);
-  vec4 normalOut = covered && nl > 0.0 ? vec4(normal / nl, 1.0) : vec4(0.0, 0.0, 1.0, 0.0);
+  float nl = length(chosen.normal);
+  vec4 normalOut = solid && nl > 0.0 ? vec4(chosen.normal / nl, 1.0) : vec4(0.0, 0.0, 1.0, 0.0);
   gl_FragData[2] = normalOut;
 #endif
 #ifdef PIXEL_POSITIONS
-  vec4 positionOut = covered ? vec4(position / surface, 1.0) : vec4(0.0);
+  vec4 positionOut = solid ? vec4(chosen.position / m, 1.0) : vec4(0.0);
 #ifdef PIXEL_NORMALS
   gl_FragData[3] = positionOut;
 #else
@@ -324,15 +429,51 @@ vec4 pixelOutputColour(vec4 art)
 #endif
 
 #ifdef PIXEL_STAGE_STYLIZE
+// Art pixel p holds a line or point (an unlit primitive, no surface) or a thin part of a
+// surface: FAITHFUL's reduce stage marks them with 2 added to the alpha; at FAST's art
+// resolution a line or point has the G-buffer's linear depth -1.
+bool pixelPlain(ivec2 p)
+{
+#ifdef PIXEL_FAST
+  return texelFetch(stylizeLinearDepthTexture, p, 0).r < 0.0;
+#else
+  return texelFetch(stylizeColorTexture, p, 0).a > 1.5;
+#endif
+}
+
+// A colour edge on the background next to a plain art pixel (the halo Canny finds on both sides
+// of a line one art pixel wide) and not next to an outlined surface.
+bool pixelHalo(ivec2 p)
+{
+  bool plain = false;
+  for (int j = -1; j <= 1; ++j)
+  {
+    for (int i = -1; i <= 1; ++i)
+    {
+      ivec2 q = clamp(p + ivec2(i, j), ivec2(0), pixelArtSize - 1);
+      bool marked = pixelPlain(q);
+      if (!marked && texelFetch(stylizeLinearDepthTexture, q, 0).r > 0.0)
+      {
+        return false;
+      }
+      plain = plain || marked;
+    }
+  }
+  return plain;
+}
+
 void pixelMain()
 {
   ivec2 p = pixelArtCoord();
   vec4 c4 = texelFetch(stylizeColorTexture, p, 0);
   vec3 c = stylizeSaturateFinite(c4.rgb);
   bool surface = texelFetch(stylizeLinearDepthTexture, p, 0).r > 0.0;
-  float opacity = stylizeIsFinite(c4.a) ? clamp(c4.a, 0.0, 1.0) : 1.0;
+  // Lines, points and thin parts take the palette in their own colour, unoutlined.
+  bool plain = pixelPlain(p);
+  float alpha = c4.a > 1.5 ? c4.a - 2.0 : c4.a;
+  float opacity = stylizeIsFinite(alpha) ? clamp(alpha, 0.0, 1.0) : 1.0;
 #ifdef PIXEL_EDGES
-  bool edge = texelFetch(pixelInputTexture, p, 0).r > 0.75;
+  bool edge = !plain && texelFetch(pixelInputTexture, p, 0).r > 0.75 && (surface || !pixelHalo(p));
 #else
   bool edge = false;
 #endif
@@ -353,16 +494,17 @@ void pixelMain()
   ivec2 q = p + pixelDitherOrigin;
   ivec2 cell = q / pixelDitherSize;
 #endif
-  float t = 0.5 + (pixelThreshold(cell) - 0.5) * pixelDitherStrength;
+  // (a plain art pixel, one wide, is not dithered: its nearest palette colour)
+  float t = plain ? 0.5 : 0.5 + (pixelThreshold(cell) - 0.5) * pixelDitherStrength;
   vec3 result = pixelQuantize(c, t);
 #ifndef PIXEL_STYLIZE_BACKGROUND
-  result = surface ? result : c;
+  result = surface || plain ? result : c;
 #endif
   result = edge ? pixelOutlineColor : result;
 #endif
-  // alpha: 2 for an outline, 1 + opacity / 2 for a surface (a translucent layer's opacity is
-  // below 1), 0 for the background
-  vec4 art = vec4(result, edge ? 2.0 : (surface ? 1.0 + 0.5 * opacity : 0.0));
+  // alpha: 2 for an outline, 1 + opacity / 2 for a surface, line or point (a translucent layer's
+  // opacity is below 1), 0 for the background
+  vec4 art = vec4(result, edge ? 2.0 : (surface || plain ? 1.0 + 0.5 * opacity : 0.0));
 #ifdef PIXEL_BLIT_OUTPUT
   // the upsample's output colour, computed here once per art pixel and blitted to the screen
   gl_FragData[0] = pixelOutputColour(art);

@@ -17,10 +17,14 @@ in the palette, its black outline ink or the white paper (goal 1); sketch: the c
 tone (luminance blurred over 4 px) with VTK's (goal >= 0.8); line art: the recall within 2 px,
 by ink, of the outline of where the volume looks solid (its own opacity, from its picture alone
 over white and over black, at least 0.5) (goal >= 0.9); with --bench, the median frame time of each style against VTK's frame with the volume.
+With --primitives, the field scene's streamlines (line primitives) and arrow glyphs (about 10 px)
+are drawn alone: per style, the share of VTK's pixels of them with a styled pixel within 1 px
+(goal >= 0.9), and for pixel art the share of those styled pixels in the palette (goal 1).
 Writes OUTDIR/volume-SCENE-STYLE.png and prints markdown tables; --check fails the run below the
 goals.
 
-usage: volumes.py DATA OUTDIR [--check] [--bench] [--scenes skull,liver,field] [--size WxH]
+usage: volumes.py DATA OUTDIR [--check] [--bench] [--primitives] [--scenes skull,liver,field]
+                  [--size WxH]
 """
 import argparse
 import os
@@ -44,6 +48,7 @@ GOAL_PLAIN = 0.2
 GOAL_PALETTE = 1.0
 GOAL_TONE = 0.8
 GOAL_RECALL = 0.9
+GOAL_COVERED = 0.9
 
 
 def read_image(path):
@@ -102,7 +107,7 @@ def field(_data):
     lut.AddRGBPoint(hi, 0.71, 0.02, 0.15)
     props = []
 
-    def actor(algorithm, colored=True, color=(1, 1, 1), width=1.0):
+    def actor(algorithm, tag, colored=True, color=(1, 1, 1), width=1.0):
         mapper = vtk.vtkPolyDataMapper()
         mapper.SetInputConnection(algorithm.GetOutputPort())
         mapper.SetLookupTable(lut)
@@ -112,6 +117,7 @@ def field(_data):
         a.SetMapper(mapper)
         a.GetProperty().SetColor(*color)
         a.GetProperty().SetLineWidth(width)
+        a.tag = tag
         props.append(a)
         return a
 
@@ -121,7 +127,7 @@ def field(_data):
     cut = vtk.vtkCutter()
     cut.SetInputData(image)
     cut.SetCutFunction(plane)
-    actor(cut)
+    actor(cut, "slice")
     gradient = vtk.vtkGradientFilter()
     gradient.SetInputData(image)
     gradient.SetResultArrayName("gradient")
@@ -137,7 +143,7 @@ def field(_data):
     tracer.SetSourceConnection(seeds.GetOutputPort())
     tracer.SetMaximumPropagation(60)
     tracer.SetIntegrationDirectionToBoth()
-    actor(tracer, colored=False, color=(0.1, 0.3, 0.1), width=2.0)
+    actor(tracer, "streamlines", colored=False, color=(0.1, 0.3, 0.1), width=2.0)
     mask = vtk.vtkMaskPoints()
     mask.SetInputData(grad)
     mask.SetOnRatio(331)
@@ -150,11 +156,11 @@ def field(_data):
     glyph.SetScaleModeToDataScalingOff()
     glyph.SetScaleFactor(3.0)
     glyph.SetColorModeToColorByScalar()
-    actor(glyph)
+    actor(glyph, "glyphs")
     contour = vtk.vtkContourFilter()
     contour.SetInputData(image)
     contour.SetValue(0, 0.9 * hi)
-    actor(contour, colored=False, color=(0.9, 0.85, 0.6))
+    actor(contour, "contour", colored=False, color=(0.9, 0.85, 0.6))
     volume = volume_of(image, [(lo, 0.23, 0.30, 0.75), (hi, 0.71, 0.02, 0.15)],
                        [(lo, 0.0), (0.5 * (lo + hi), 0.0), (0.75 * (lo + hi) / 1.5 + 0.25 * hi, 0.3),
                         (hi, 0.8)])
@@ -176,11 +182,15 @@ SCENES = {"skull": skull, "liver": liver, "field": field}
 
 
 def render(builder, data, style, size, with_volume=True, times=0, only_volume=False,
-           background=1.0):
+           background=1.0, only=None):
     """The scene's picture (H x W x 3 uint8) drawn by VTK (style None) or a style; with `times`,
-    also the median of that many more frames' seconds."""
+    also the median of that many more frames' seconds; `only`: the one tagged prop drawn (no
+    volume)."""
     volumes, props, (azimuth, elevation, zoom) = builder(data)
     props = [] if only_volume else props
+    if only:
+        props = [p for p in props if getattr(p, "tag", None) == only]
+        with_volume = False
     renderer = vtk.vtkRenderer()
     renderer.SetBackground(background, background, background)
     for p in props:
@@ -260,17 +270,21 @@ def near(mask, radius):
     return out
 
 
+def in_palette(pixels):
+    """The share of `pixels` (N x 3) in PALETTE16, its black outline ink or the white paper."""
+    palette = np.vstack([np.array(vtkPixelArtPass.GetPalette16()).reshape(16, 3) * 255,
+                         [[0, 0, 0], [255, 255, 255]]]).round()
+    px = pixels.astype(np.float64)
+    dist = np.min(np.abs(px[:, None, :] - palette[None, :, :]).max(axis=2), axis=1)
+    return float(np.mean(dist <= 1.0)) if len(px) else 1.0
+
+
 def measure(style, styled, plain, region, solid):
     """The style's measures in the volume's region; `solid`: where the volume's own opacity is
     at least 0.5."""
     m = {"plain": float(np.mean(np.all(styled[region] == plain[region], axis=1)))}
     if style == "pixel":
-        # the palette, the outline's ink (black by default) and the paper
-        palette = np.vstack([np.array(vtkPixelArtPass.GetPalette16()).reshape(16, 3) * 255,
-                             [[0, 0, 0], [255, 255, 255]]]).round()
-        px = styled[region].astype(np.float64)
-        dist = np.min(np.abs(px[:, None, :] - palette[None, :, :]).max(axis=2), axis=1)
-        m["palette"] = float(np.mean(dist <= 1.0))
+        m["palette"] = in_palette(styled[region])
     if style == "sketch":
         a = blur(luminance(styled), 4)[region]
         b = blur(luminance(plain), 4)[region]
@@ -283,6 +297,25 @@ def measure(style, styled, plain, region, solid):
     return m
 
 
+def primitives(data, size, outdir):
+    """Streamlines and glyphs of the field scene, each alone: per style, the share of VTK's
+    pixels of them with a styled pixel (not paper) within 1 px, and for pixel art the share of
+    those styled pixels in the palette."""
+    rows = []
+    for tag in ("streamlines", "glyphs"):
+        plain, _, _ = render(field, data, None, size, only=tag)
+        drawn = np.abs(plain.astype(int) - 255).sum(axis=2) > 24
+        for style in STYLES:
+            styled, _, _ = render(field, data, style, size, only=tag)
+            save(styled, os.path.join(outdir, "primitive-%s-%s.png" % (tag, style)))
+            ink = np.abs(styled.astype(int) - 255).sum(axis=2) > 24
+            m = {"covered": float(np.mean(near(ink, 1)[drawn]))}
+            if style == "pixel":
+                m["palette"] = in_palette(styled[ink])
+            rows.append((tag, style, m))
+    return rows
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("data")
@@ -291,6 +324,8 @@ def main():
     parser.add_argument("--bench", action="store_true")
     parser.add_argument("--scenes", default="skull,liver,field")
     parser.add_argument("--size", default="640x480")
+    parser.add_argument("--primitives", action="store_true",
+                        help="also measure the field scene's streamlines and glyphs alone")
     args = parser.parse_args()
     size = tuple(int(v) for v in args.size.split("x"))
     os.makedirs(args.outdir, exist_ok=True)
@@ -333,6 +368,14 @@ def main():
         if args.bench:
             line += " %.2fx |" % m["cost"]
         print(line)
+    if args.primitives:
+        print("\n| prop | style | VTK's pixels covered | pixel art in palette |\n|---|---|---:|---:|")
+        for tag, style, m in primitives(args.data, size, args.outdir):
+            print("| %s | %s | %.3f | %s |" % (tag, style, m["covered"],
+                                             "%.3f" % m["palette"] if "palette" in m else ""))
+            if m["covered"] < GOAL_COVERED or m.get("palette", 1.0) < GOAL_PALETTE:
+                failures.append("%s %s: covered %.3f, palette %.3f"
+                                % (tag, style, m["covered"], m.get("palette", 1.0)))
     if failures:
         print("\n".join(failures), file=sys.stderr)
     return 1 if args.check and failures else 0
