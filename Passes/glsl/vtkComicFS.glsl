@@ -185,6 +185,9 @@ float comicLines(float u, float w, float aa)
                   : 1.0 - (hw / aa) * (1.0 - smoothstep(0.0, 2.0 * aa, t));
 }
 
+// The value of a line's ink in the tinted comic: its hue at this fraction of full value.
+const float comicLineInk = 0.25;
+
 void comicMain()
 {
   ivec2 p = comicPixel();
@@ -337,9 +340,12 @@ void comicMain()
 #endif
   pattern = mix(hatch, dots, t);
 #endif
+  // Lines and points (unlit primitives: linear depth -1, streamlines, wireframes) are ink; the
+  // paper stays.
+  bool primitive = !surface && !background && linearDepth < 0.0;
   if (!surface)
   {
-    pattern = background ? 1.0 : tone; // lines and points keep their tone, the paper stays
+    pattern = background ? 1.0 : (primitive ? 0.0 : tone);
   }
 
 #ifdef COMIC_TINTED
@@ -347,7 +353,8 @@ void comicMain()
   // readable under the ink. The background keeps its own colour.
   float m = max(colour.r, max(colour.g, colour.b));
   vec3 paper = m > 1e-4 ? colour / m : vec3(1.0);
-  vec3 result = background ? colour * e : paper * (pattern * e);
+  // (a line's ink keeps its hue, darkened: a streamline coloured by its data stays readable)
+  vec3 result = background ? colour * e : paper * ((primitive ? comicLineInk : pattern) * e);
 #else
   vec3 result = background ? colour * e : vec3(pattern * e);
 #endif
@@ -362,7 +369,7 @@ void comicMain()
 #elif COMIC_LAYER == 4
   // (lines and points, which carry no pattern, as the comic draws them)
 #ifdef COMIC_TINTED
-  result = background ? colour : (surface ? paper : paper * pattern);
+  result = background ? colour : (surface ? paper : paper * (primitive ? comicLineInk : pattern));
 #else
   result = background ? colour : vec3(surface ? 1.0 : pattern);
 #endif

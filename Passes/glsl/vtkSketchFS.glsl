@@ -231,6 +231,16 @@ float sketchStroke(ivec2 p, vec3 x0, vec3 dir0, vec3 n0, bool across)
   return clamp(0.5 + 0.25 * sketchStrokeContrast * z, 0.0, 1.0);
 }
 
+// The pencil's grain at pixel p, a factor of its ink in [0.3, 1]: the noise, a texel per point
+// fixed to the image, thins the ink where it is light (feature lines, lines and points).
+float sketchGrain(ivec2 p)
+{
+  float grain = texture(sketchNoise,
+    vec3((vec2(p) + fieldPixelOffset + 0.5) / (sketchPointPixels * 64.0), 0.37)).r;
+  float grainZ = (grain - sketchNoiseStats.x) / max(sketchNoiseStats.y, 1e-4);
+  return clamp(0.8 + 0.2 * sketchStrokeContrast * grainZ, 0.3, 1.0);
+}
+
 void sketchMain()
 {
   ivec2 p = fieldPixel();
@@ -290,7 +300,14 @@ void sketchMain()
   vec3 paper = sketchPaper;
 #endif
   vec3 result = surface ? mix(sketchPencil, paper, value) : colour;
-#if SKETCH_LAYER == 1
+#if SKETCH_LAYER == 0
+  // Lines and points (unlit primitives: linear depth -1, streamlines, wireframes) are drawn in
+  // pencil on the paper, with its grain (the noise is bound where strokes are drawn).
+  if (!surface && texelFetch(stylizeLinearDepthTexture, p, 0).r < 0.0)
+  {
+    result = mix(sketchPaper, sketchPencil, sketchGrain(p));
+  }
+#elif SKETCH_LAYER == 1
   if (surface)
   {
     // the direction's screen angle, modulo 180 degrees, as a hue
@@ -308,11 +325,7 @@ void sketchMain()
 #ifdef SKETCH_FEATURE_LINES
   // the feature lines in pencil, over the strokes and the background, with the strokes' grain:
   // the noise, a texel per point fixed to the image, thins their ink where it is light
-  ink = clamp(texelFetch(sketchFeatureInk, p, 0).r, 0.0, 1.0);
-  float grain = texture(sketchNoise,
-    vec3((vec2(p) + fieldPixelOffset + 0.5) / (sketchPointPixels * 64.0), 0.37)).r;
-  float grainZ = (grain - sketchNoiseStats.x) / max(sketchNoiseStats.y, 1e-4);
-  ink *= clamp(0.8 + 0.2 * sketchStrokeContrast * grainZ, 0.3, 1.0);
+  ink = clamp(texelFetch(sketchFeatureInk, p, 0).r, 0.0, 1.0) * sketchGrain(p);
   result = mix(result, sketchPencil, ink);
 #endif
   if (stylizeDiscardBackground == 1 && background && ink <= 0.0)

@@ -17,9 +17,13 @@ in the palette, its black outline ink or the white paper (goal 1); sketch: the c
 tone (luminance blurred over 4 px) with VTK's (goal >= 0.8); line art: the recall within 2 px,
 by ink, of the outline of where the volume looks solid (its own opacity, from its picture alone
 over white and over black, at least 0.5) (goal >= 0.9); with --bench, the median frame time of each style against VTK's frame with the volume.
-With --primitives, the field scene's streamlines (line primitives) and arrow glyphs (about 10 px)
-are drawn alone: per style, the share of VTK's pixels of them with a styled pixel within 1 px
-(goal >= 0.9), and for pixel art the share of those styled pixels in the palette (goal 1).
+With --primitives, the field scene's streamlines (dark line primitives), its box's outline (light
+ones) and arrow glyphs (about 10 px) are drawn alone: per style, the share of VTK's pixels of them with a styled pixel within 1 px
+(goal >= 0.9), the share of them left as VTK draws them (within 24 levels summed over the
+channels; lines: goal <= 0.2: pencil in the sketch, ink in the line art, the palette in
+pixel art), the share of them drawn in ink (no channel above 64; lines in the comic and the line
+art: goal >= 0.8), and
+for pixel art the share of those styled pixels in the palette (goal 1).
 Writes OUTDIR/volume-SCENE-STYLE.png and prints markdown tables; --check fails the run below the
 goals.
 
@@ -49,6 +53,7 @@ GOAL_PALETTE = 1.0
 GOAL_TONE = 0.8
 GOAL_RECALL = 0.9
 GOAL_COVERED = 0.9
+GOAL_INK = 0.8
 
 
 def read_image(path):
@@ -161,6 +166,9 @@ def field(_data):
     contour.SetInputData(image)
     contour.SetValue(0, 0.9 * hi)
     actor(contour, "contour", colored=False, color=(0.9, 0.85, 0.6))
+    outline = vtk.vtkOutlineFilter()  # (ParaView's Outline representation: light lines)
+    outline.SetInputData(image)
+    actor(outline, "outline", colored=False, color=(1.0, 0.75, 0.3), width=1.5)
     volume = volume_of(image, [(lo, 0.23, 0.30, 0.75), (hi, 0.71, 0.02, 0.15)],
                        [(lo, 0.0), (0.5 * (lo + hi), 0.0), (0.75 * (lo + hi) / 1.5 + 0.25 * hi, 0.3),
                         (hi, 0.8)])
@@ -302,14 +310,18 @@ def primitives(data, size, outdir):
     pixels of them with a styled pixel (not paper) within 1 px, and for pixel art the share of
     those styled pixels in the palette."""
     rows = []
-    for tag in ("streamlines", "glyphs"):
+    for tag in ("streamlines", "outline", "glyphs"):
         plain, _, _ = render(field, data, None, size, only=tag)
         drawn = np.abs(plain.astype(int) - 255).sum(axis=2) > 24
         for style in STYLES:
             styled, _, _ = render(field, data, style, size, only=tag)
             save(styled, os.path.join(outdir, "primitive-%s-%s.png" % (tag, style)))
             ink = np.abs(styled.astype(int) - 255).sum(axis=2) > 24
-            m = {"covered": float(np.mean(near(ink, 1)[drawn]))}
+            m = {"covered": float(np.mean(near(ink, 1)[drawn])),
+                 "plain": float(np.mean(np.abs(styled[drawn].astype(int) -
+                                               plain[drawn].astype(int)).sum(axis=1) <= 24)),
+                 # ink: no channel above a quarter of full value
+                 "ink": float(np.mean(styled[drawn].max(axis=1) <= 64))}
             if style == "pixel":
                 m["palette"] = in_palette(styled[ink])
             rows.append((tag, style, m))
@@ -369,13 +381,21 @@ def main():
             line += " %.2fx |" % m["cost"]
         print(line)
     if args.primitives:
-        print("\n| prop | style | VTK's pixels covered | pixel art in palette |\n|---|---|---:|---:|")
+        print("\n| prop | style | VTK's pixels covered | left as VTK | ink | pixel art in palette |"
+              "\n|---|---|---:|---:|---:|---:|")
         for tag, style, m in primitives(args.data, size, args.outdir):
-            print("| %s | %s | %.3f | %s |" % (tag, style, m["covered"],
-                                             "%.3f" % m["palette"] if "palette" in m else ""))
-            if m["covered"] < GOAL_COVERED or m.get("palette", 1.0) < GOAL_PALETTE:
-                failures.append("%s %s: covered %.3f, palette %.3f"
-                                % (tag, style, m["covered"], m.get("palette", 1.0)))
+            print("| %s | %s | %.3f | %.3f | %.3f | %s |" % (
+                tag, style, m["covered"], m["plain"], m["ink"],
+                "%.3f" % m["palette"] if "palette" in m else ""))
+            # (the comic's tinted ink keeps a line's hue at a quarter of full value: a dark line
+            # is drawn much as VTK draws it, so the comic's lines are held to being ink; the
+            # outline is a light one)
+            drawn_as_vtk = m["plain"] > GOAL_PLAIN and style != "comic"
+            if m["covered"] < GOAL_COVERED or m.get("palette", 1.0) < GOAL_PALETTE or \
+                    (tag != "glyphs" and (drawn_as_vtk or (
+                        style in ("comic", "lines") and m["ink"] < GOAL_INK))):
+                failures.append("%s %s: covered %.3f, left as VTK %.3f, palette %.3f"
+                                % (tag, style, m["covered"], m["plain"], m.get("palette", 1.0)))
     if failures:
         print("\n".join(failures), file=sys.stderr)
     return 1 if args.check and failures else 0
