@@ -18,7 +18,8 @@ tone (luminance blurred over 4 px) with VTK's (goal >= 0.8); line art: the recal
 by ink, of the outline of where the volume looks solid (its own opacity, from its picture alone
 over white and over black, at least 0.5) (goal >= 0.9); with --bench, the median frame time of each style against VTK's frame with the volume.
 With --primitives, the field scene's streamlines (dark line primitives), its box's outline (light
-ones) and arrow glyphs (about 10 px) are drawn alone: per style, the share of VTK's pixels of them with a styled pixel within 1 px
+ones), points of the field (4 px, coloured by it; not in the scene's pictures) and arrow glyphs
+(about 10 px) are drawn alone: per style, the share of VTK's pixels of them with a styled pixel within 1 px
 (goal >= 0.9), the share of them left as VTK draws them (within 24 levels summed over the
 channels; lines: goal <= 0.2: pencil in the sketch, ink in the line art, the palette in
 pixel art), the share of them drawn in ink (no channel above 64; lines in the comic and the line
@@ -166,6 +167,15 @@ def field(_data):
     contour.SetInputData(image)
     contour.SetValue(0, 0.9 * hi)
     actor(contour, "contour", colored=False, color=(0.9, 0.85, 0.6))
+    # Points (ParaView's Points representation), measured alone (not in the scene's pictures)
+    cloud = vtk.vtkMaskPoints()
+    cloud.SetInputData(image)
+    cloud.SetOnRatio(97)
+    cloud.RandomModeOff()
+    cloud.GenerateVerticesOn()
+    dots = actor(cloud, "points")
+    dots.GetProperty().SetPointSize(4)
+    dots.alone = True
     outline = vtk.vtkOutlineFilter()  # (ParaView's Outline representation: light lines)
     outline.SetInputData(image)
     actor(outline, "outline", colored=False, color=(1.0, 0.75, 0.3), width=1.5)
@@ -199,6 +209,8 @@ def render(builder, data, style, size, with_volume=True, times=0, only_volume=Fa
     if only:
         props = [p for p in props if getattr(p, "tag", None) == only]
         with_volume = False
+    else:
+        props = [p for p in props if not getattr(p, "alone", False)]
     renderer = vtk.vtkRenderer()
     renderer.SetBackground(background, background, background)
     for p in props:
@@ -310,7 +322,7 @@ def primitives(data, size, outdir):
     pixels of them with a styled pixel (not paper) within 1 px, and for pixel art the share of
     those styled pixels in the palette."""
     rows = []
-    for tag in ("streamlines", "outline", "glyphs"):
+    for tag in ("streamlines", "outline", "points", "glyphs"):
         plain, _, _ = render(field, data, None, size, only=tag)
         drawn = np.abs(plain.astype(int) - 255).sum(axis=2) > 24
         for style in STYLES:
