@@ -73,6 +73,24 @@ float comicEdgeStrength(float response, float t)
 }
 
 #ifdef COMIC_DEPTH_EDGES
+// Off a surface (centre z[4] = 0): whether a surface tap's surface goes on past it, one more tap
+// in the same direction. The outline lies on both sides of a silhouette; a thin part (a glyph's
+// shaft, a wire) gets it on its own side only, so that it stays as thin as it is drawn rather
+// than swelling into a blob of ink.
+bool comicWideNeighbour(ivec2 p, float z[9])
+{
+  for (int k = 0; k < 9; ++k)
+  {
+    ivec2 o = ivec2(k % 3 - 1, k / 3 - 1);
+    if (z[k] > 0.0 &&
+      texelFetch(stylizeLinearDepthTexture, comicTap(p, 2 * o.x, 2 * o.y), 0).r > 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // Phase 1 (eq. 4-5): Sobel on the linear depth, made scale-free by dividing by the world size of
 // a pixel at that depth, so the response is the surface's slope against the view ray (tan of the
 // angle between normal and view axis) or a depth jump in pixel units. A surface next to no
@@ -102,7 +120,7 @@ float comicDepthEdge(ivec2 p)
   }
   if (surfaces < 9)
   {
-    return 1.0;
+    return z[4] > 0.0 || comicWideNeighbour(p, z) ? 1.0 : 0.0;
   }
   float pixel = comicParallel == 1 ? comicPixelWorld : comicPixelWorld * zmin;
   // Divide each tap by the pixel size first: no overflow or underflow at 1e-6..1e6 scales.
