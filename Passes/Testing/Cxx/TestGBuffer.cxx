@@ -3,6 +3,8 @@
 // origin, several renderers, layered renderers, resizing and tiled (magnified) screenshots work;
 // ReleaseGraphicsResources frees everything; destroying the window prints nothing.
 #include "vtkConeSource.h"
+#include "vtkFloatArray.h"
+#include "vtkLineSource.h"
 #include "vtkOutputWindow.h"
 #include "vtkPlaneSource.h"
 #include "vtkRenderStepsPass.h"
@@ -118,10 +120,58 @@ vtkSmartPointer<vtkImageData> TwoViewports(
   win->Finalize();
   return img;
 }
+
+// LINEAR_DEPTH: positive on surfaces, 0 on the background, -1 on lines and points (no surface
+// normal), which the styles draw as lines (docs/gbuffer.md).
+void CheckLineMarker()
+{
+  auto win = MakeWindow(160, 120);
+  vtkNew<vtkRenderer> ren;
+  win->AddRenderer(ren);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-1, -1, 0);
+  plane->SetPoint1(0, -1, 0);
+  plane->SetPoint2(-1, 1, 0);
+  vtkNew<vtkLineSource> line; // in front of the plane, across it and the background
+  line->SetPoint1(-1.5, 0, 0.5);
+  line->SetPoint2(1.5, 0.3, 0.5);
+  for (vtkPolyDataAlgorithm* source :
+    { static_cast<vtkPolyDataAlgorithm*>(plane), static_cast<vtkPolyDataAlgorithm*>(line) })
+  {
+    vtkNew<vtkPolyDataMapper> m;
+    m->SetInputConnection(source->GetOutputPort());
+    vtkNew<vtkActor> a;
+    a->SetMapper(m);
+    a->GetProperty()->SetLineWidth(3);
+    ren->AddActor(a);
+  }
+  ren->ResetCamera();
+  vtkNew<vtkStylizeLightingPass> lighting;
+  vtkNew<vtkStylizeGBufferPass> gbuffer;
+  gbuffer->SetLightingPass(lighting);
+  gbuffer->SetChannels(vtkStylizeGBufferPass::LINEAR_DEPTH);
+  ren->SetPass(gbuffer);
+  win->Render();
+  vtkNew<vtkFloatArray> depth;
+  STYLIZE_CHECK(
+    gbuffer->DownloadChannel(vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER, depth), "linear depth");
+  int lines = 0, surfaces = 0, background = 0, other = 0;
+  for (vtkIdType i = 0; i < depth->GetNumberOfValues(); ++i)
+  {
+    const float z = depth->GetValue(i);
+    (z == -1.0f ? lines : (z > 0.0f ? surfaces : (z == 0.0f ? background : other)))++;
+  }
+  std::printf("linear depth: %d line, %d surface, %d background, %d other pixels\n", lines,
+    surfaces, background, other);
+  STYLIZE_CHECK(lines > 200 && surfaces > 1000 && background > 1000 && other == 0,
+    "lines must be -1, surfaces positive, the background 0");
+  win->Finalize();
+}
 }
 
 int TestGBuffer(int, char*[])
 {
+  CheckLineMarker();
   // Translucent geometry over the composited depth, and 2D text, equal to VTK's rendering.
   StrictCompare(
     TranslucentScene(GBUFFER), TranslucentScene(PLAIN), 2, 0.0, 2, "translucent plane and 2D text");
