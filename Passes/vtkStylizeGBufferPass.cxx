@@ -1,5 +1,6 @@
 #include "vtkStylizeGBufferPass.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkFloatArray.h"
@@ -16,6 +17,7 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
 #include "vtkOverlayPass.h"
+#include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkSequencePass.h"
@@ -92,6 +94,59 @@ public:
 private:
   vtkCamera* Camera = nullptr;
   vtkSmartPointer<vtkHomogeneousTransform> Saved;
+};
+
+/**
+ * Lines and points at their width in points: a tiled (magnified) screenshot renders each tile at
+ * the window's size, where VTK's LineWidth and PointSize are pixels; times the tile scale while
+ * this lives, they keep their share of the picture (a 2 px streamline of a 3x screenshot is
+ * 6 px wide, as in the window). Each actor's property is scaled once and restored.
+ */
+class ScopedTileWidths
+{
+public:
+  ScopedTileWidths(vtkRenderer* ren, vtkProp** props, int count)
+  {
+    int scale[2] = { 1, 1 };
+    if (ren->GetRenderWindow())
+    {
+      ren->GetRenderWindow()->GetTileScale(scale);
+    }
+    const double k = std::max(scale[0], scale[1]);
+    for (int i = 0; i < count && k > 1.0; ++i)
+    {
+      vtkActor* actor = vtkActor::SafeDownCast(props[i]);
+      vtkProperty* p = actor ? actor->GetProperty() : nullptr;
+      if (!p ||
+        std::find_if(this->Saved.begin(), this->Saved.end(),
+          [p](const Entry& e) { return e.Property == p; }) != this->Saved.end())
+      {
+        continue;
+      }
+      this->Saved.push_back({ p, p->GetLineWidth(), p->GetPointSize() });
+      p->SetLineWidth(static_cast<float>(k * p->GetLineWidth()));
+      p->SetPointSize(static_cast<float>(k * p->GetPointSize()));
+    }
+  }
+  ~ScopedTileWidths()
+  {
+    for (const Entry& e : this->Saved)
+    {
+      e.Property->SetLineWidth(e.LineWidth);
+      e.Property->SetPointSize(e.PointSize);
+    }
+  }
+  ScopedTileWidths(const ScopedTileWidths&) = delete;
+  ScopedTileWidths& operator=(const ScopedTileWidths&) = delete;
+
+private:
+  struct Entry
+  {
+    vtkProperty* Property;
+    float LineWidth;
+    float PointSize;
+  };
+  std::vector<Entry> Saved;
 };
 }
 
@@ -474,6 +529,7 @@ void vtkStylizeGBufferPass::RenderProps(const vtkRenderState* s, vtkOpenGLFrameb
   sfbo.SetRequiredKeys(s->GetRequiredKeys());
 
   ScopedScreenTransform screen(ren->GetActiveCamera(), this->GeometryScreenTransform);
+  ScopedTileWidths widths(ren, s->GetPropArray(), s->GetPropArrayCount());
   this->PreRender(&sfbo);
   vtkStylizeDepthPeeler* peeler = this->Internals->Peeler;
   const bool layer = peeler->GetLayerIndex() >= 0;
@@ -582,6 +638,9 @@ void vtkStylizeGBufferPass::RenderAfterGeometry(const vtkRenderState* s)
 
   const double shift[4] = { 1.0, 1.0, this->AfterScreenShift[0], this->AfterScreenShift[1] };
   ScopedScreenTransform screen(ren->GetActiveCamera(), shift);
+  ScopedTileWidths widths(ren, s->GetPropArray(), s->GetPropArrayCount());
+  ScopedTileWidths annotationWidths(
+    ren, this->AfterProps.data(), static_cast<int>(this->AfterProps.size()));
   // (a hardware selection draws everything: translucent props stay pickable)
   vtkSequencePass* after =
     this->DrawTranslucent || ren->GetSelector() ? this->AfterSequence : this->VolumeSequence;

@@ -16,6 +16,8 @@
 #include "vtkTextProperty.h"
 #include "vtkTextureObject.h"
 
+#include <cstdlib>
+
 using namespace stylizetest;
 
 namespace
@@ -122,7 +124,8 @@ vtkSmartPointer<vtkImageData> TwoViewports(
 }
 
 // LINEAR_DEPTH: positive on surfaces, 0 on the background, -1 on lines and points (no surface
-// normal), which the styles draw as lines (docs/gbuffer.md).
+// normal), which the styles draw as lines (docs/gbuffer.md); lines keep their width in points
+// in a tiled screenshot.
 void CheckLineMarker()
 {
   auto win = MakeWindow(160, 120);
@@ -143,6 +146,7 @@ void CheckLineMarker()
     vtkNew<vtkActor> a;
     a->SetMapper(m);
     a->GetProperty()->SetLineWidth(3);
+    a->GetProperty()->SetColor(0.1, 0.1, 0.4);
     ren->AddActor(a);
   }
   ren->ResetCamera();
@@ -165,6 +169,24 @@ void CheckLineMarker()
     surfaces, background, other);
   STYLIZE_CHECK(lines > 200 && surfaces > 1000 && background > 1000 && other == 0,
     "lines must be -1, surfaces positive, the background 0");
+  // Lines at their width in points: a 3x tiled screenshot draws the 3 px line 9 px wide (VTK
+  // keeps 3 px in each tile).
+  ren->SetBackground(1, 1, 1);
+  int widths[2] = { 0, 0 };
+  for (int k : { 1, 3 })
+  {
+    auto img = Capture(win, k);
+    const int* d = img->GetDimensions();
+    const int x = d[0] * 3 / 4; // right of the plane: the line over the background
+    for (int y = 0; y < d[1]; ++y)
+    {
+      const auto* c = static_cast<unsigned char*>(img->GetScalarPointer(x, y, 0));
+      widths[k / 3] += (c[0] + c[1] + c[2] < 600) ? 1 : 0;
+    }
+  }
+  std::printf("line width: %d px in the window, %d px in a 3x screenshot\n", widths[0], widths[1]);
+  STYLIZE_CHECK(widths[0] >= 2 && std::abs(widths[1] - 3 * widths[0]) <= 2,
+    "a 3x screenshot draws lines %d px wide, %d in the window", widths[1], widths[0]);
   win->Finalize();
 }
 }
