@@ -176,8 +176,8 @@ void pixelMain()
   float count = float(n.x * n.y);
   // Thin parts of surfaces (glyphs' shafts, wires): samples whose surface is at most half a block
   // across along x or y, bounded by the background, lines or depth steps (a convex silhouette's
-  // cap, wider than that, is not thin). Sought only where the
-  // block holds more than one surface or more than surfaces (an interior block pays nothing).
+  // cap, wider than that, is not thin). Sought only where the block holds more than one surface
+  // or more than surfaces (an interior block pays nothing).
   float step = pixelDepthThreshold * pixelArtWorld; // the steepest surface in one art pixel
   bool mixed = surface.count < count ||
     zmax - zmin > step * (pixelParallel == 1 ? 1.0 : zmin);
