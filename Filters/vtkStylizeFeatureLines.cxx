@@ -88,6 +88,7 @@ FL::Mesh WeldedMesh(vtkPolyData* input)
     {
       id[i] = static_cast<vtkIdType>(m.P.size());
       m.P.push_back(p[i]);
+      m.Source.push_back(static_cast<vtkIdType>(i));
     }
   }
   m.Faces.reserve(faces.size());
@@ -228,7 +229,7 @@ vtkStylizeFeatureLines::~vtkStylizeFeatureLines() = default;
 const char* vtkStylizeFeatureLines::GetKindName(int kind)
 {
   static const char* const names[] = { "contour", "boundary", "crease", "ridge", "valley",
-    "suggestive" };
+    "suggestive", "isoline" };
   return kind >= 0 && kind < NUMBER_OF_KINDS ? names[kind] : "unknown";
 }
 
@@ -329,7 +330,12 @@ int vtkStylizeFeatureLines::RequestData(
   const FL::Mesh& mesh = cache.Surface;
   std::vector<FL::Segments> viewSegments(NUMBER_OF_KINDS);
   const FL::Segments* segments[NUMBER_OF_KINDS] = { &viewSegments[CONTOUR], &cache.Boundaries,
-    &cache.Creases, &cache.Ridges, &cache.Valleys, &viewSegments[SUGGESTIVE_CONTOUR] };
+    &cache.Creases, &cache.Ridges, &cache.Valleys, &viewSegments[SUGGESTIVE_CONTOUR],
+    &viewSegments[ISOLINE] };
+  if (mesh.Usable() && this->IsKindEnabled(ISOLINE) && this->IsoLineCount > 0)
+  {
+    this->IsoLineSegments(input, mesh, viewSegments[ISOLINE]);
+  }
   if (mesh.Usable() && this->Camera)
   {
     const FL::View v = MakeView(this->Camera, this->ModelMatrix);
@@ -385,11 +391,177 @@ int vtkStylizeFeatureLines::RequestData(
 }
 
 //------------------------------------------------------------------------------
+void vtkStylizeFeatureLines::IsoLineSegments(
+  vtkPolyData* input, const FL::Mesh& mesh, FL::Segments& out)
+{
+  vtkPointData* pd = input->GetPointData();
+  vtkDataArray* array = this->IsoLineArrayName.empty()
+    ? pd->GetScalars()
+    : pd->GetArray(this->IsoLineArrayName.c_str());
+  const int components = array ? array->GetNumberOfComponents() : 0;
+  const int component = components == 1 ? 0 : this->IsoLineComponent;
+  if (!array || component >= components || array->GetNumberOfTuples() < input->GetNumberOfPoints())
+  {
+    return;
+  }
+  // The values at the welded mesh's vertices (each stands for its first input point).
+  std::vector<double> values(mesh.P.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()),
+    [&](vtkIdType first, vtkIdType last)
+    {
+      std::vector<double> tuple(components);
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        if (component >= 0)
+        {
+          values[i] = array->GetComponent(mesh.Source[i], component);
+          continue;
+        }
+        array->GetTuple(mesh.Source[i], tuple.data());
+        double sum = 0.0;
+        for (const double c : tuple)
+        {
+          sum += c * c;
+        }
+        values[i] = std::sqrt(sum);
+      }
+    });
+  double range[2] = { this->IsoLineRange[0], this->IsoLineRange[1] };
+  if (!(range[0] <= range[1]))
+  {
+    range[0] = VTK_DOUBLE_MAX;
+    range[1] = -VTK_DOUBLE_MAX;
+    for (const double v : values)
+    {
+      if (std::isfinite(v) && (!this->IsoLineLogScale || v > 0.0))
+      {
+        range[0] = std::min(range[0], v);
+        range[1] = std::max(range[1], v);
+      }
+    }
+  }
+  FL::IsoLines(mesh, values,
+    ComputeIsoLevels(range[0], range[1], this->IsoLineCount, this->IsoLineSpacing,
+      this->IsoLineBands, this->IsoLineLogScale),
+    out);
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+/** Round levels in (low, high): multiples of the smallest step of 1, 2, 2.5 or 5 times a power
+ * of ten that gives at most `count` of them. */
+std::vector<double> RoundLevels(double low, double high, int count)
+{
+  std::vector<double> levels;
+  const double span = high - low;
+  if (!(span > 0.0) || !std::isfinite(span) || count < 1)
+  {
+    return levels;
+  }
+  double power = std::pow(10.0, std::floor(std::log10(span / (count + 1))));
+  for (int tries = 0; tries < 8 && levels.empty(); ++tries, power *= 10.0)
+  {
+    for (const double m : { 1.0, 2.0, 2.5, 5.0 })
+    {
+      const double step = m * power;
+      const double first = std::floor(low / step) + 1.0;
+      const double last = std::ceil(high / step) - 1.0;
+      if (last - first + 1.0 <= count)
+      {
+        for (double k = first; k <= last; k += 1.0)
+        {
+          levels.push_back(k * step);
+        }
+        break;
+      }
+    }
+  }
+  return levels;
+}
+
+/** Round levels in (low, high), low > 0, on a log scale: every power of ten, or every k-th,
+ * when there are at least `count` of them; else 1 to 9, 1, 2 and 5, or 1 times each, the densest
+ * that gives at most `count`; a range too narrow for those: linear round levels. */
+std::vector<double> RoundLogLevels(double low, double high, int count)
+{
+  std::vector<double> levels;
+  const double a = std::log10(low), b = std::log10(high);
+  if (!(b > a) || !std::isfinite(a) || !std::isfinite(b) || count < 1)
+  {
+    return levels;
+  }
+  const int e0 = static_cast<int>(std::floor(a)), e1 = static_cast<int>(std::ceil(b));
+  auto take = [&](const std::vector<double>& mantissas, int every)
+  {
+    levels.clear();
+    for (int e = e0; e <= e1; ++e)
+    {
+      for (const double m : mantissas)
+      {
+        const double v = m * std::pow(10.0, e);
+        if (v > low && v < high && (e % every) == 0)
+        {
+          levels.push_back(v);
+        }
+      }
+    }
+    return levels.size() <= static_cast<size_t>(count);
+  };
+  if (take({ 1, 2, 3, 4, 5, 6, 7, 8, 9 }, 1) || take({ 1, 2, 5 }, 1))
+  {
+    return levels;
+  }
+  for (int every = 1; every <= e1 - e0 + 1; ++every)
+  {
+    if (take({ 1 }, every))
+    {
+      return levels;
+    }
+  }
+  return levels;
+}
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkStylizeFeatureLines::ComputeIsoLevels(
+  double low, double high, int count, int spacing, int bands, bool logScale)
+{
+  std::vector<double> levels;
+  if (!(low < high) || !std::isfinite(low) || !std::isfinite(high) || (logScale && !(low > 0.0)))
+  {
+    return levels;
+  }
+  count = std::max(0, std::min(1000, count));
+  if (spacing == ROUND)
+  {
+    levels = logScale ? RoundLogLevels(low, high, count) : RoundLevels(low, high, count);
+    return !levels.empty() || !logScale ? levels : RoundLevels(low, high, count);
+  }
+  const int parts = spacing == BANDS ? std::max(1, std::min(1000, bands)) : count + 1;
+  const double a = logScale ? std::log10(low) : low;
+  const double b = logScale ? std::log10(high) : high;
+  for (int i = 1; i < parts; ++i)
+  {
+    const double v = a + (b - a) * i / parts;
+    levels.push_back(logScale ? std::pow(10.0, v) : v);
+  }
+  return levels;
+}
+
+//------------------------------------------------------------------------------
 void vtkStylizeFeatureLines::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "KindMask: " << this->KindMask << "\n";
   os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
+  os << indent << "IsoLineArrayName: " << this->IsoLineArrayName << "\n";
+  os << indent << "IsoLineComponent: " << this->IsoLineComponent << "\n";
+  os << indent << "IsoLineCount: " << this->IsoLineCount << "\n";
+  os << indent << "IsoLineSpacing: " << this->IsoLineSpacing << "\n";
+  os << indent << "IsoLineBands: " << this->IsoLineBands << "\n";
+  os << indent << "IsoLineRange: " << this->IsoLineRange[0] << " " << this->IsoLineRange[1] << "\n";
+  os << indent << "IsoLineLogScale: " << this->IsoLineLogScale << "\n";
   os << indent << "RidgeThreshold: " << this->RidgeThreshold << "\n";
   os << indent << "SuggestiveThreshold: " << this->SuggestiveThreshold << "\n";
   os << indent << "MinimumLength: " << this->MinimumLength << "\n";

@@ -18,6 +18,10 @@
  * - Suggestive contours (DeCarlo et al. 2003): zero crossings of the radial curvature on front
  *   faces where its derivative toward the viewer is positive, above SuggestiveThreshold, faded
  *   near contours.
+ * - Iso-lines: where a point-data array (IsoLineArrayName) crosses the levels IsoLineCount and
+ *   IsoLineSpacing place in IsoLineRange, its linear interpolant cut inside each triangle: the
+ *   contour plot of the array, drawn on the surface. Levels and how they are chosen:
+ *   ComputeIsoLevels().
  *
  * Every threshold is relative to the object (its bounding-box diagonal), so the same mesh at
  * any scale gives the same lines. Segments are chained into polylines through the mesh edges
@@ -44,11 +48,16 @@
 #include "vtkStylizeViewFilter.h"
 
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
+#include <vector> // for std::vector
 
 namespace vtkStylizeFeatureLinesInternals
 {
 struct Cache;
+struct Mesh;
+struct Segment;
 }
+class vtkPolyData;
 
 class VTKSTYLIZEFILTERS_EXPORT vtkStylizeFeatureLines : public vtkStylizeViewFilter
 {
@@ -66,17 +75,19 @@ public:
     RIDGE,
     VALLEY,
     SUGGESTIVE_CONTOUR, // 5
+    ISOLINE,
     NUMBER_OF_KINDS
   };
-  /** The name of a kind ("contour", "boundary", "crease", "ridge", "valley", "suggestive"). */
+  /** The name of a kind ("contour", "boundary", "crease", "ridge", "valley", "suggestive",
+   * "isoline"). */
   static const char* GetKindName(int kind);
 
   ///@{
   /**
-   * The kinds extracted, a bit mask: bit (1 << kind) for each Kinds value. Range [0, 63],
-   * default 63 (all).
+   * The kinds extracted, a bit mask: bit (1 << kind) for each Kinds value. Range [0, 127],
+   * default 127 (all; iso-lines need IsoLineCount > 0 too).
    */
-  vtkSetClampMacro(KindMask, int, 0, 63);
+  vtkSetClampMacro(KindMask, int, 0, 127);
   vtkGetMacro(KindMask, int);
   void EnableKind(int kind, bool enabled);
   bool IsKindEnabled(int kind) const;
@@ -134,6 +145,92 @@ public:
 
   ///@{
   /**
+   * The point-data array whose iso-lines are drawn; empty (the default): the active scalars.
+   * Cell data has no iso-lines (its colours are constant per cell).
+   */
+  vtkSetStdStringFromCharMacro(IsoLineArrayName);
+  vtkGetCharFromStdStringMacro(IsoLineArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * The array's component whose iso-lines are drawn, -1 for the magnitude (the value itself for
+   * one component). A component the array lacks draws nothing. Range [-1, 1023], default -1.
+   */
+  vtkSetClampMacro(IsoLineComponent, int, -1, 1023);
+  vtkGetMacro(IsoLineComponent, int);
+  ///@}
+
+  ///@{
+  /**
+   * How many iso-lines: the most levels (ROUND), the number of levels (EVEN), or ignored
+   * (BANDS, the colour map's own); 0 draws none. Range [0, 1000], default 0.
+   */
+  vtkSetClampMacro(IsoLineCount, int, 0, 1000);
+  vtkGetMacro(IsoLineCount, int);
+  ///@}
+
+  /** How the levels are placed in IsoLineRange (ComputeIsoLevels()). */
+  enum IsoLineSpacings
+  {
+    ROUND, // round numbers: a step of 1, 2, 2.5 or 5 times a power of ten
+    EVEN,  // IsoLineCount levels that split the range into equal parts
+    BANDS  // the edges between the IsoLineBands colours of a banded colour map
+  };
+
+  ///@{
+  /** How the levels are placed: ROUND (the default), EVEN or BANDS. */
+  vtkSetClampMacro(IsoLineSpacing, int, ROUND, BANDS);
+  vtkGetMacro(IsoLineSpacing, int);
+  ///@}
+
+  ///@{
+  /**
+   * BANDS spacing: the number of colours of the banded colour map (a vtkLookupTable's
+   * NumberOfTableValues, a discretized colour transfer function's NumberOfValues). Range
+   * [1, 1000], default 10.
+   */
+  vtkSetClampMacro(IsoLineBands, int, 1, 1000);
+  vtkGetMacro(IsoLineBands, int);
+  ///@}
+
+  ///@{
+  /**
+   * The range of values the levels are placed in, in the array's units (the colour map's
+   * range); invalid (low > high, the default): the array's own range.
+   */
+  vtkSetVector2Macro(IsoLineRange, double);
+  vtkGetVector2Macro(IsoLineRange, double);
+  ///@}
+
+  ///@{
+  /**
+   * Levels placed on a logarithmic scale (a colour map with a log scale): ROUND gives 1, 2 and 5
+   * times powers of ten (or powers of ten alone, or every few of them), EVEN and BANDS split the
+   * logarithm of the range. A range that is not positive draws nothing. Default off.
+   */
+  vtkSetMacro(IsoLineLogScale, bool);
+  vtkGetMacro(IsoLineLogScale, bool);
+  vtkBooleanMacro(IsoLineLogScale, bool);
+  ///@}
+
+  /**
+   * The iso-line levels of a range [low, high] (excluded: the extremes of the colour map draw
+   * no line), in increasing order:
+   * - ROUND: the multiples of the smallest round step (1, 2, 2.5 or 5 times a power of ten)
+   *   that gives at most `count` levels inside the range, as a scalar bar's ticks;
+   * - EVEN: `count` levels that split the range into count + 1 equal parts;
+   * - BANDS: the bands - 1 edges between `bands` equal bands (count ignored).
+   * With `logScale`, EVEN and BANDS split log10 of the range, and ROUND takes 1 to 9, or 1, 2
+   * and 5, times each power of ten, or the powers of ten alone, or every k-th: the densest that
+   * gives at most `count` (a range too narrow for any: the linear round levels). Empty for a
+   * range that is empty, not finite, or (logScale) not positive.
+   */
+  static std::vector<double> ComputeIsoLevels(
+    double low, double high, int count, int spacing, int bands, bool logScale);
+
+  ///@{
+  /**
    * The bounds (in the input's coordinates) of the object whose diagonal the thresholds, the
    * smoothing and the minimum length are fractions of. Invalid (xmin > xmax, the default): the
    * input's own. A piece of a larger dataset (a rank's piece in ParaView) given the whole's
@@ -166,7 +263,14 @@ protected:
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int KindMask = 63;
+  int KindMask = 127;
+  std::string IsoLineArrayName;
+  int IsoLineComponent = -1;
+  int IsoLineCount = 0;
+  int IsoLineSpacing = ROUND;
+  int IsoLineBands = 10;
+  double IsoLineRange[2] = { 1.0, -1.0 };
+  bool IsoLineLogScale = false;
   double CreaseAngle = 40.0;
   double RidgeThreshold = 40.0;
   double SuggestiveThreshold = 2000.0;
@@ -179,6 +283,10 @@ protected:
 private:
   vtkStylizeFeatureLines(const vtkStylizeFeatureLines&) = delete;
   void operator=(const vtkStylizeFeatureLines&) = delete;
+
+  /** The iso-lines of the input's array on its welded mesh. */
+  void IsoLineSegments(vtkPolyData* input, const vtkStylizeFeatureLinesInternals::Mesh& mesh,
+    std::vector<vtkStylizeFeatureLinesInternals::Segment>& out);
 
   /** The welded mesh, its curvature and the view-independent lines of the last input. */
   std::unique_ptr<vtkStylizeFeatureLinesInternals::Cache> ViewIndependent;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 #include <utility>
 
@@ -305,6 +306,51 @@ void FL::Contours(const Mesh& m, const View& view, Segments& out)
         { np * np + static_cast<std::uint64_t>(e[1]), m.P[e[1]], 1.0f } });
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void FL::IsoLines(const Mesh& m, const std::vector<double>& values,
+  const std::vector<double>& levels, Segments& out)
+{
+  if (levels.empty() || values.size() != m.P.size())
+  {
+    return;
+  }
+  // Ends keyed per level: level l's key is the edge's plus (l + 2) np^2 (the contours' crease
+  // edges use np^2 + id); at most 1000 levels and 1e8 points stay below 2^64.
+  const std::uint64_t np = m.P.size();
+  const std::uint64_t fit = std::numeric_limits<std::uint64_t>::max() / (np * np);
+  const auto end = levels.begin() +
+    static_cast<std::ptrdiff_t>(std::min<std::uint64_t>(levels.size(), fit > 2 ? fit - 2 : 0));
+  ForEachFace(m, out, nullptr,
+    [&](size_t f, Segments& segments, Segments*)
+    {
+      const Face& t = m.Faces[f];
+      const double v[3] = { values[t[0]], values[t[1]], values[t[2]] };
+      if (!std::isfinite(v[0] + v[1] + v[2]))
+      {
+        return;
+      }
+      const double lo = std::min(v[0], std::min(v[1], v[2]));
+      const double hi = std::max(v[0], std::max(v[1], v[2]));
+      // the levels in (lo, hi]: a vertex at a level counts as above it (Crossing's f >= 0)
+      auto l = std::upper_bound(levels.begin(), end, lo);
+      for (; l != end && *l <= hi; ++l)
+      {
+        const double d[3] = { v[0] - *l, v[1] - *l, v[2] - *l };
+        const double none[3] = { 0, 0, 0 };
+        Segment s;
+        double x, y;
+        if (Crossing(m, f, d, none, s.A, x, s.B, y))
+        {
+          const std::uint64_t offset =
+            (static_cast<std::uint64_t>(l - levels.begin()) + 2) * np * np;
+          s.A.Key += offset;
+          s.B.Key += offset;
+          segments.push_back(s);
+        }
+      }
+    });
 }
 
 //------------------------------------------------------------------------------

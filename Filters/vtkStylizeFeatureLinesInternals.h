@@ -25,7 +25,8 @@ struct Mesh
   std::vector<Vec> FaceNormal;
   std::vector<double> FaceArea;
   std::vector<Vec> Normal;
-  std::vector<char> OnCrease; // the vertex is an end of a crease edge
+  std::vector<char> OnCrease;    // the vertex is an end of a crease edge
+  std::vector<vtkIdType> Source; // the input point each vertex stands for (iso-lines' values)
   /** The edges of two faces that touch a crease: (a, b, face, face). Their faces are flat
    * (a normal interpolated across a crease means nothing), so their contours are the edges
    * between a face toward the viewer and one away from it. */
@@ -119,6 +120,11 @@ void RidgesAndValleys(const Mesh& mesh, const Curvature& curvature, double thres
 /** Zero crossings of the radial curvature with a positive derivative toward the viewer. */
 void SuggestiveContours(
   const Mesh& mesh, const Curvature& curvature, const View& view, double threshold, Segments& out);
+
+/** Where `values` (one per vertex) crosses each of `levels` (increasing) inside the triangles;
+ * each level's ends keyed apart from the others', so that chains never join two levels. */
+void IsoLines(const Mesh& mesh, const std::vector<double>& values,
+  const std::vector<double>& levels, Segments& out);
 
 /** The segments joined through their shared ends into polylines; a junction (an end shared by
  * three or more segments) ends the chains that meet there. A closed chain repeats its first

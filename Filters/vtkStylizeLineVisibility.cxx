@@ -280,14 +280,16 @@ public:
     this->Occluders.push_back(occluder);
   }
 
-  /** Whether a sample p (window position win) sees the viewer. */
-  bool Visible(const double p[3], const double win[3]) const
+  /** Whether a sample p (window position win) of a contour or another line sees the viewer. */
+  bool Visible(const double p[3], const double win[3], bool contour) const
   {
     const double size = this->Box.IsValid() ? this->Box.GetDiagonalLength() : 0.0;
-    // The ray starts one mean edge length (at least 3 pixel widths) from the sample: a
-    // contour's ray grazes its own surface, whose polygons lie up to about half an edge off
-    // the interpolated contour.
-    const double edge = this->EdgeCount > 0 ? this->EdgeSum / this->EdgeCount : 0.0;
+    // The ray starts 3 pixel widths from the sample, a contour's one mean edge length (if
+    // longer): a contour's ray grazes its own surface, whose polygons lie up to about half an
+    // edge off the interpolated contour. The other lines lie on their polygons (as the depth
+    // test's tolerance, which is a pixel's but a contour's): an edge's start let a line behind a
+    // thin wall's rim show through it.
+    const double edge = contour && this->EdgeCount > 0 ? this->EdgeSum / this->EdgeCount : 0.0;
     const double start = std::max(edge, 3.0 * this->View.PixelSize(this->View.EyeDepth(win[2])));
     double from[3], to[3], dir[3];
     this->View.ToWorldPoint(p, from);
@@ -668,7 +670,7 @@ int vtkStylizeLineVisibility::RequestData(
     }
     if (this->Method == RAY_CAST)
     {
-      return rays.Visible(p, win);
+      return rays.Visible(p, win, contour);
     }
     if (!depth.Visible(win, contour))
     {

@@ -13,9 +13,10 @@
  *   pixel widths in front of it: a contour sits on the edge of its own surface, and the nearest
  *   pixel must not hide it.
  * - RAY_CAST: a ray from the sample toward the viewer against every occluder (AddOccluder),
- *   starting one mean edge length of the occluders (and at least 3 pixel widths) from the
- *   sample: a contour's ray grazes its own surface, whose polygons lie up to about half an
- *   edge off the interpolated contour. The independent reference of the tests.
+ *   starting 3 pixel widths from the sample, and for occluding contours (cell FeatureKind 0,
+ *   or every line without FeatureKind) at least one mean edge length of the occluders: a
+ *   contour's ray grazes its own surface, whose polygons lie up to about half an edge off the
+ *   interpolated contour. The independent reference of the tests.
  * Where two neighbouring samples differ, the change is located by bisection to 1/16 of the
  * spacing. The output is the input's lines cut into runs, with the input's point data
  * interpolated and FeatureVisibility (unsigned char, 1 visible, 0 hidden) in point and cell data;

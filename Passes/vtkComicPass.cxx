@@ -43,10 +43,11 @@ enum Textures
 struct vtkComicPass::Plan
 {
   bool DepthEdges, NormalEdges, ColorEdges, ObjectAnchor;
-  bool FeatureLines;   // the feature lines' strokes
-  bool Principal;      // hatching along the principal direction field
-  FieldSettings Field; // its settings: the defaults
-  double WeightSum;    // of the enabled edge phases, 1 when none
+  bool FeatureLines;                          // the feature lines' strokes (and the iso-lines)
+  vtkStylizeFeatureStrokes::Settings Strokes; // their settings
+  bool Principal;                             // hatching along the principal direction field
+  FieldSettings Field;                        // its settings: the defaults
+  double WeightSum;                           // of the enabled edge phases, 1 when none
   SceneRequest Scene;
   std::string Defines;
 };
@@ -167,8 +168,7 @@ bool vtkComicPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
   }
   if (plan.FeatureLines)
   {
-    this->Strokes->RenderFrame(
-      this, frame, vtkStylizeFeatureStrokes::Settings::Proportional(this->FeatureLineWidth));
+    this->Strokes->RenderFrame(this, frame, plan.Strokes);
   }
   else
   {
@@ -191,8 +191,10 @@ vtkComicPass::Plan vtkComicPass::PlanFrame(bool interactive) const
   // at the fixed angle (no direction field).
   p.NormalEdges = edges && this->EdgeWeights[1] > 0.0 && !interactive;
   p.ColorEdges = edges && this->EdgeWeights[2] > 0.0 && !interactive;
-  p.FeatureLines =
-    this->FeatureLines && this->FeatureLineWidth > 0.0 && this->GetTranslucentLayer() == 0;
+  p.Strokes = vtkStylizeFeatureStrokes::Settings::ForStyle(this->FeatureLines,
+    this->FeatureLineWidth, this->IsoLines, this->IsoLineWidth, this->IsoLineSpacing);
+  p.FeatureLines = ((this->FeatureLines && this->FeatureLineWidth > 0.0) || this->IsoLines > 0) &&
+    this->GetTranslucentLayer() == 0;
   const bool patterns = this->Dots || this->Hatching;
   p.ObjectAnchor = patterns && this->Anchor == OBJECT;
   p.Principal = this->Hatching && this->HatchOrientation == PRINCIPAL && !interactive;
@@ -310,10 +312,7 @@ double vtkComicPass::GetReach(const Frame& frame)
   }
   if (plan.FeatureLines)
   {
-    reach = std::max(reach,
-      vtkStylizeFeatureStrokes::Reach(
-        vtkStylizeFeatureStrokes::Settings::Proportional(this->FeatureLineWidth), pointSize) +
-        1.0);
+    reach = std::max(reach, vtkStylizeFeatureStrokes::Reach(plan.Strokes, pointSize) + 1.0);
   }
   return reach;
 }
@@ -338,9 +337,8 @@ void vtkComicPass::RenderCompositeStage(const Frame& frame, const Plan& plan)
   {
     // the strokes reach beyond the surfaces by half their width
     margin = std::max(margin,
-      static_cast<int>(std::ceil(vtkStylizeFeatureStrokes::Reach(
-        vtkStylizeFeatureStrokes::Settings::Proportional(this->FeatureLineWidth),
-        this->PointSize(frame)))));
+      static_cast<int>(
+        std::ceil(vtkStylizeFeatureStrokes::Reach(plan.Strokes, this->PointSize(frame)))));
   }
   this->RenderStageToOutput(
     frame, COMPOSITE_STAGE, true,

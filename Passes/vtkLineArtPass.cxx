@@ -115,7 +115,7 @@ vtkStylizeFeatureStrokes::Settings StrokeSettings(vtkLineArtPass* pass)
   s.CreaseAngle = pass->GetCreaseAngle();
   s.RidgeThreshold = pass->GetRidgeThreshold();
   s.SuggestiveThreshold = pass->GetSuggestiveThreshold();
-  return s;
+  return s.WithIsoLines(pass->GetIsoLines(), pass->GetIsoLineWidth(), pass->GetIsoLineSpacing());
 }
 }
 

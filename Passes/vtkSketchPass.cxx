@@ -545,7 +545,9 @@ double vtkSketchPass::GetReach(const Frame& frame)
 double vtkSketchPass::FeatureLineReach(double pointSize) const
 {
   return vtkStylizeFeatureStrokes::Reach(
-    vtkStylizeFeatureStrokes::Settings::Proportional(this->FeatureLineWidth), pointSize);
+    vtkStylizeFeatureStrokes::Settings::ForStyle(this->FeatureLines, this->FeatureLineWidth,
+      this->IsoLines, this->IsoLineWidth, this->IsoLineSpacing),
+    pointSize);
 }
 
 //------------------------------------------------------------------------------
@@ -583,8 +585,9 @@ bool vtkSketchPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
   }
   if (plan.FeatureLines)
   {
-    this->Internals->Strokes->RenderFrame(
-      this, frame, vtkStylizeFeatureStrokes::Settings::Proportional(this->FeatureLineWidth));
+    this->Internals->Strokes->RenderFrame(this, frame,
+      vtkStylizeFeatureStrokes::Settings::ForStyle(this->FeatureLines, this->FeatureLineWidth,
+        this->IsoLines, this->IsoLineWidth, this->IsoLineSpacing));
   }
   else
   {
@@ -649,8 +652,8 @@ vtkSketchPass::Plan vtkSketchPass::PlanFrame(const Frame& frame) const
   define(p.Contrast, "SKETCH_CONTRAST");
   define(this->Tint != BLACK_AND_WHITE, "SKETCH_TINTED");
   define(true, "SKETCH_LAYER " + std::to_string(this->Layer));
-  p.FeatureLines = this->FeatureLines && this->FeatureLineWidth > 0.0 && this->Layer == SKETCH &&
-    this->GetTranslucentLayer() == 0;
+  p.FeatureLines = ((this->FeatureLines && this->FeatureLineWidth > 0.0) || this->IsoLines > 0) &&
+    this->Layer == SKETCH && this->GetTranslucentLayer() == 0;
   define(p.FeatureLines, "SKETCH_FEATURE_LINES");
 
   p.StepLength = finite(this->StepLength, self->GetStepLengthMinValue());

@@ -1,4 +1,5 @@
 #include "vtkStylizeFeatureStrokes.h"
+#include "vtkStylizeFeatureStrokesScene.h"
 
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
@@ -8,13 +9,8 @@
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
 #include "vtkCommunicator.h"
-#include "vtkCompositeDataIterator.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
-#include "vtkDataSetSurfaceFilter.h"
-#include "vtkExtractEdges.h"
 #include "vtkFloatArray.h"
-#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
@@ -26,7 +22,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkStylizeFeatureLines.h"
@@ -35,234 +30,16 @@
 #include "vtkStylizeRayOccluder.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtkWeakPointer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
 
+using namespace vtkStylizeFeatureStrokesScene;
+
 namespace
 {
-/**
- * A dataset of the scene (an actor's, or a leaf of its composite data) and its lines, kept
- * between frames: its surface (itself, or vtkDataSetSurfaceFilter's of another dataset), the
- * feature lines of the surface or, for an actor drawn as wireframe, the surface's edges (as
- * creases), and their visibility.
- */
-struct Surface
-{
-  vtkWeakPointer<vtkDataSet> Data;
-  bool Wireframe = false;
-  vtkNew<vtkDataSetSurfaceFilter> Geometry;
-  vtkNew<vtkStylizeFeatureLines> Lines;
-  vtkNew<vtkExtractEdges> Edges;
-  vtkNew<vtkPolyData> KindedEdges;
-  vtkMTimeType EdgesTime = 0;
-  vtkNew<vtkStylizeLineVisibility> Visibility;
-  bool Seen = false;    // drawn by this frame
-  int UnseenStills = 0; // still frames in a row that did not draw it
-  /** The mean edge length of the surface's polygons, and the surface's time when measured. */
-  double MeanEdge = 0.0;
-  vtkMTimeType EdgeTime = 0;
-
-  Surface(vtkDataSet* data, bool wireframe)
-    : Data(data)
-    , Wireframe(wireframe)
-  {
-    this->Geometry->SetInputData(data);
-    this->Lines->SetInputConnection(this->Geometry->GetOutputPort());
-    this->Edges->SetInputConnection(this->Geometry->GetOutputPort());
-    if (auto* pd = vtkPolyData::SafeDownCast(data))
-    {
-      this->Lines->SetInputData(pd);
-      this->Edges->SetInputData(pd);
-    }
-    if (wireframe)
-    {
-      this->Visibility->SetInputData(this->KindedEdges);
-    }
-    else
-    {
-      this->Visibility->SetInputConnection(this->Lines->GetOutputPort());
-    }
-    this->Visibility->VisibleOnlyOn();
-    this->Visibility->SetDepthKind(vtkStylizeLineVisibility::VIEW_DEPTH);
-  }
-
-  /** The surface the lines are on (updated). */
-  vtkPolyData* SurfaceOf()
-  {
-    if (auto* pd = vtkPolyData::SafeDownCast(this->Data))
-    {
-      return pd;
-    }
-    this->Geometry->Update();
-    return this->Geometry->GetOutput();
-  }
-
-  /** A wireframe's edges as creases (their FeatureKind), updated when the data changes. */
-  void UpdateEdges()
-  {
-    this->Edges->Update();
-    vtkPolyData* edges = this->Edges->GetOutput();
-    if (edges->GetMTime() <= this->EdgesTime)
-    {
-      return;
-    }
-    this->EdgesTime = edges->GetMTime();
-    this->KindedEdges->Initialize();
-    this->KindedEdges->SetPoints(edges->GetPoints());
-    this->KindedEdges->SetLines(edges->GetLines());
-    vtkNew<vtkUnsignedCharArray> kinds;
-    kinds->SetName("FeatureKind");
-    kinds->SetNumberOfTuples(edges->GetNumberOfLines());
-    kinds->Fill(vtkStylizeFeatureLines::CREASE);
-    this->KindedEdges->GetCellData()->AddArray(kinds);
-  }
-};
-
-/** The mean edge length of (up to 10000 of) the surface's polygons. */
-double MeanEdgeLength(vtkPolyData* pd)
-{
-  vtkCellArray* polys = pd->GetPolys();
-  const vtkIdType cells = polys->GetNumberOfCells();
-  const vtkIdType stride = std::max<vtkIdType>(1, cells / 10000);
-  double sum = 0.0;
-  vtkIdType count = 0;
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < cells; c += stride)
-  {
-    polys->GetCellAtId(c, ids);
-    const vtkIdType n = ids->GetNumberOfIds();
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      double a[3], b[3];
-      pd->GetPoint(ids->GetId(k), a);
-      pd->GetPoint(ids->GetId((k + 1) % n), b);
-      const double d = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
-      if (std::isfinite(d))
-      {
-        sum += d;
-        ++count;
-      }
-    }
-  }
-  return count > 0 ? sum / count : 0.0;
-}
-
-/** How much a matrix scales lengths (the cube root of its 3 x 3 part's determinant). */
-double ScaleOf(vtkMatrix4x4* m)
-{
-  if (!m)
-  {
-    return 1.0;
-  }
-  const double det =
-    vtkMatrix4x4::Determinant(m->GetData()) / std::max(1e-300, std::fabs(m->GetElement(3, 3)));
-  const double s = std::cbrt(std::fabs(det));
-  return std::isfinite(s) ? s : 1.0;
-}
-
-/**
- * A dataset to draw this frame, the matrix from its coordinates to the world, its look, and the
- * index of its actor among the frame's (LineActors()).
- */
-struct Item
-{
-  vtkDataSet* Data;
-  vtkMatrix4x4* Matrix;
-  bool Wireframe;
-  size_t Actor;
-};
-
-void AddSurface(
-  vtkDataObject* data, vtkMatrix4x4* matrix, bool wireframe, size_t actor, std::vector<Item>& out)
-{
-  if (auto* ds = vtkDataSet::SafeDownCast(data))
-  {
-    if (ds->GetNumberOfCells() > 0)
-    {
-      out.push_back({ ds, matrix, wireframe, actor });
-    }
-  }
-  else if (auto* cd = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(cd->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      AddSurface(it->GetCurrentDataObject(), matrix, wireframe, actor, out);
-    }
-  }
-}
-
-/** The actors whose lines are drawn: visible, opaque, drawn as surfaces or wireframe. */
-std::vector<vtkActor*> LineActors(vtkRenderer* ren)
-{
-  std::vector<vtkActor*> actors;
-  vtkPropCollection* props = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    auto* actor = vtkActor::SafeDownCast(prop);
-    if (actor && actor->GetVisibility() && actor->GetMapper() &&
-      actor->GetProperty()->GetOpacity() >= 1.0 &&
-      actor->GetProperty()->GetRepresentation() != VTK_POINTS)
-    {
-      actors.push_back(actor);
-    }
-  }
-  return actors;
-}
-
-/** The datasets of the actors (or those that replace them: View::Surfaces). */
-std::vector<Item> SurfacesOf(
-  const std::vector<vtkActor*>& actors, const vtkStylizeFeatureStrokes::View& view)
-{
-  std::vector<Item> items;
-  for (size_t a = 0; a < actors.size(); ++a)
-  {
-    vtkActor* actor = actors[a];
-    vtkDataObject* data = a < view.Surfaces.size() && view.Surfaces[a]
-      ? view.Surfaces[a].GetPointer()
-      : actor->GetMapper()->GetInputDataObject(0, 0);
-    AddSurface(data, actor->GetMatrix(), actor->GetProperty()->GetRepresentation() == VTK_WIREFRAME,
-      a, items);
-  }
-  return items;
-}
-
-/** The polygonal data of an actor's input (every leaf of a composite), ghost cells left out. */
-vtkSmartPointer<vtkPolyData> PolygonsOf(vtkDataObject* data)
-{
-  std::vector<Item> leaves;
-  AddSurface(data, nullptr, false, 0, leaves);
-  vtkNew<vtkAppendPolyData> append;
-  for (const Item& leaf : leaves)
-  {
-    vtkSmartPointer<vtkPolyData> pd = vtkPolyData::SafeDownCast(leaf.Data);
-    if (!pd)
-    {
-      vtkNew<vtkDataSetSurfaceFilter> surface;
-      surface->SetInputData(leaf.Data);
-      surface->Update();
-      pd = surface->GetOutput();
-    }
-    auto copy = vtkSmartPointer<vtkPolyData>::New();
-    copy->ShallowCopy(pd);
-    copy->RemoveGhostCells();
-    append->AddInputData(copy);
-  }
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  if (!leaves.empty())
-  {
-    append->Update();
-    out->ShallowCopy(append->GetOutput());
-  }
-  return out;
-}
 
 /**
  * Over several processes (each rendering its own pieces): the scene's bounds and each actor's
@@ -338,6 +115,9 @@ struct vtkStylizeFeatureStrokes::Internals
   int Size[2] = { 0, 0 };
   vtkTextureObject* Texture = nullptr;
   std::vector<float> Coverage;
+  /** Channels of Coverage: 1 (ink), or 2 (ink, and the iso-lines' halo) when the last
+   * Build() drew iso-lines. */
+  int Channels = 1;
 };
 
 vtkStandardNewMacro(vtkStylizeFeatureStrokes);
@@ -361,11 +141,12 @@ vtkStylizeFeatureStrokes::~vtkStylizeFeatureStrokes()
 double vtkStylizeFeatureStrokes::Reach(const Settings& settings, double pointSize)
 {
   double widest = 0.0;
-  for (double w : settings.Widths)
+  for (int k = 0; k < Kinds; ++k)
   {
-    widest = std::max(widest, w);
+    const double r = 0.5 * settings.Widths[k] * pointSize;
+    widest = std::max(widest, k == vtkStylizeFeatureLines::ISOLINE && r > 0.0 ? HaloRadius(r) : r);
   }
-  return 0.5 * widest * pointSize + 1.0;
+  return widest + 1.0;
 }
 
 //------------------------------------------------------------------------------
@@ -544,7 +325,7 @@ int KindMask(const vtkStylizeFeatureStrokes::Settings& settings, bool interactiv
   if (interactive)
   {
     mask &= (1 << vtkStylizeFeatureLines::CONTOUR) | (1 << vtkStylizeFeatureLines::BOUNDARY) |
-      (1 << vtkStylizeFeatureLines::CREASE);
+      (1 << vtkStylizeFeatureLines::CREASE) | (1 << vtkStylizeFeatureLines::ISOLINE);
   }
   return mask;
 }
@@ -557,10 +338,13 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
   Internals& in = *this->Internal;
   in.Size[0] = std::max(1, view.Size[0]);
   in.Size[1] = std::max(1, view.Size[1]);
+  in.Channels =
+    settings.IsoLines > 0 && settings.Widths[vtkStylizeFeatureLines::ISOLINE] > 0.0 ? 2 : 1;
   const int mask = KindMask(settings, view.Interactive);
   vtkCamera* camera = view.Renderer ? view.Renderer->GetActiveCamera() : nullptr;
-  const std::vector<Item> items =
-    camera && mask ? SurfacesOf(LineActors(view.Renderer), view) : std::vector<Item>();
+  const std::vector<vtkActor*> actors =
+    camera && mask ? LineActors(view.Renderer) : std::vector<vtkActor*>();
+  const std::vector<Item> items = SurfacesOf(actors, view);
   if (linearDepth)
   {
     in.Depth->SetDimensions(in.Size[0], in.Size[1], 1);
@@ -622,6 +406,7 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
     fl->SetCreaseAngle(settings.CreaseAngle);
     fl->SetRidgeThreshold(settings.RidgeThreshold);
     fl->SetSuggestiveThreshold(settings.SuggestiveThreshold);
+    SetIsoLines(fl, actors[item.Actor], item.Data, settings);
     fl->SetCamera(camera);
     fl->SetModelMatrix(item.Matrix);
     const double invalid[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
@@ -793,20 +578,24 @@ vtkTextureObject* vtkStylizeFeatureStrokes::RenderFrame(
 void vtkStylizeFeatureStrokes::Rasterize(std::vector<float>& coverage)
 {
   Internals& in = *this->Internal;
-  const int W = in.Size[0], H = in.Size[1];
-  coverage.assign(static_cast<size_t>(W) * H, 0.0f);
+  const int W = in.Size[0], H = in.Size[1], C = in.Channels;
+  coverage.assign(static_cast<size_t>(W) * H * C, 0.0f);
   vtkPolyData* strokes = in.Strokes;
   vtkPoints* points = strokes->GetPoints();
   vtkDataArray* widths = strokes->GetPointData()->GetArray("StrokeWidth");
+  vtkDataArray* kinds = strokes->GetCellData()->GetArray("FeatureKind");
   if (!points || !widths)
   {
     return;
   }
   vtkCellArray* cells = strokes->GetLines();
-  vtkIdType n;
+  vtkIdType n, cell = 0;
   const vtkIdType* ids;
-  for (cells->InitTraversal(); cells->GetNextCell(n, ids);)
+  for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++cell)
   {
+    // An iso-line clears a halo beside it (HaloRadius()) in the second channel.
+    const bool halo = C == 2 && kinds && cell < kinds->GetNumberOfTuples() &&
+      static_cast<int>(kinds->GetTuple1(cell)) == vtkStylizeFeatureLines::ISOLINE;
     for (vtkIdType s = 0; s + 1 < n; ++s)
     {
       double a[3], b[3];
@@ -814,7 +603,7 @@ void vtkStylizeFeatureStrokes::Rasterize(std::vector<float>& coverage)
       points->GetPoint(ids[s + 1], b);
       const double ra = 0.5 * widths->GetTuple1(ids[s]);
       const double rb = 0.5 * widths->GetTuple1(ids[s + 1]);
-      const double reach = std::max(ra, rb) + 1.0;
+      const double reach = (halo ? HaloRadius(std::max(ra, rb)) : std::max(ra, rb)) + 1.0;
       if (!std::isfinite(a[0] + a[1] + b[0] + b[1] + reach) ||
         std::max(std::abs(a[0]), std::abs(b[0])) > 1.0e7 ||
         std::max(std::abs(a[1]), std::abs(b[1])) > 1.0e7)
@@ -836,8 +625,12 @@ void vtkStylizeFeatureStrokes::Rasterize(std::vector<float>& coverage)
             len2 > 0.0 ? std::min(1.0, std::max(0.0, (px * dx + py * dy) / len2)) : 0.0;
           const double d = std::hypot(px - t * dx, py - t * dy);
           const double r = ra + t * (rb - ra);
-          float& c = coverage[static_cast<size_t>(y) * W + x];
-          c = std::max(c, Coverage(d, r));
+          float* c = &coverage[(static_cast<size_t>(y) * W + x) * C];
+          c[0] = std::max(c[0], Coverage(d, r));
+          if (halo)
+          {
+            c[1] = std::max(c[1], Coverage(d, HaloRadius(r)));
+          }
         }
       }
     }
@@ -865,7 +658,7 @@ vtkTextureObject* vtkStylizeFeatureStrokes::UploadCoverage(vtkOpenGLRenderWindow
   in.Texture->SetWrapS(vtkTextureObject::ClampToEdge);
   in.Texture->SetWrapT(vtkTextureObject::ClampToEdge);
   in.Texture->Create2DFromRaw(static_cast<unsigned int>(in.Size[0]),
-    static_cast<unsigned int>(in.Size[1]), 1, VTK_FLOAT, in.Coverage.data());
+    static_cast<unsigned int>(in.Size[1]), in.Channels, VTK_FLOAT, in.Coverage.data());
   return in.Texture;
 }
 
@@ -893,5 +686,7 @@ void vtkStylizeFeatureStrokes::Free(vtkWindow* w)
 vtkIdType vtkStylizeFeatureStrokes::GetTextureBytes()
 {
   const vtkTextureObject* t = this->Internal->Texture;
-  return t ? static_cast<vtkIdType>(this->Internal->Size[0]) * this->Internal->Size[1] * 4 : 0;
+  return t ? static_cast<vtkIdType>(this->Internal->Size[0]) * this->Internal->Size[1] * 4 *
+      this->Internal->Channels
+           : 0;
 }

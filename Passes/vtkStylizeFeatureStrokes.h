@@ -31,9 +31,10 @@
 #include "vtkStylizePassesModule.h" // for export macro
 #include "vtkStylizeStylePass.h"    // for vtkStylizeStylePass::Frame
 
-#include <array>  // for std::array
-#include <memory> // for std::unique_ptr
-#include <vector> // for std::vector
+#include <algorithm> // for std::max
+#include <array>     // for std::array
+#include <memory>    // for std::unique_ptr
+#include <vector>    // for std::vector
 
 class vtkDataSet;
 class vtkFloatArray;
@@ -51,13 +52,17 @@ public:
   vtkTypeMacro(vtkStylizeFeatureStrokes, vtkObject);
 
   /** The number of kinds of line (vtkStylizeFeatureLines::Kinds). */
-  static constexpr int Kinds = 6;
+  static constexpr int Kinds = 7;
 
   /** What to draw and how (the owning style's settings). */
   struct Settings
   {
     /** Stroke width per kind (vtkStylizeFeatureLines::Kinds), points; 0: the kind is off. */
-    double Widths[Kinds] = { 2.5, 2.5, 1.5, 1.0, 1.0, 1.2 };
+    double Widths[Kinds] = { 2.5, 2.5, 1.5, 1.0, 1.0, 1.2, 0.0 };
+    /** Iso-lines of the coloured data (vtkStylizeStylePass::IsoLines, IsoLineSpacing): their
+     * most levels, 0 for none, and how they are placed. */
+    int IsoLines = 0;
+    int IsoLineSpacing = 0;
     /** Share of the width lost from the scene's nearest to its farthest point, [0, 1]. */
     double DepthTaper = 0.5;
     /** Share of the width that follows the line's strength (FeatureStrength), [0, 1]. */
@@ -80,6 +85,26 @@ public:
         w *= scale;
       }
       return s;
+    }
+
+    /** The style's iso-line settings (vtkStylizeStylePass::IsoLines, IsoLineWidth and
+     * IsoLineSpacing). */
+    Settings& WithIsoLines(int isoLines, double width, int spacing)
+    {
+      this->IsoLines = isoLines;
+      this->IsoLineSpacing = spacing;
+      this->Widths[Kinds - 1] = isoLines > 0 ? width : 0.0;
+      return *this;
+    }
+
+    /**
+     * What the comic's and the sketch's line phase draw: the feature lines (when on) in the
+     * default proportions, the contours `width` points wide, and the style's iso-lines.
+     */
+    static Settings ForStyle(
+      bool featureLines, double width, int isoLines, double isoWidth, int spacing)
+    {
+      return Proportional(featureLines ? width : 0.0).WithIsoLines(isoLines, isoWidth, spacing);
     }
   };
 
@@ -155,16 +180,26 @@ public:
 
   /**
    * The ink coverage of the last Build()'s strokes in [0, 1], one float per pixel of
-   * view.Size, rows bottom to top, uploaded as a single-channel float texture with nearest
-   * filtering.
+   * view.Size, rows bottom to top, uploaded as a float texture with nearest filtering: its red
+   * channel the ink, its green channel (when the strokes hold iso-lines) their halo.
    */
   vtkTextureObject* Upload(vtkOpenGLRenderWindow* window);
 
   /** The texture of the last Upload() (nullptr before it). */
   vtkTextureObject* GetTexture();
 
-  /** The ink coverage on the CPU (what Upload() sends). */
+  /**
+   * The ink coverage on the CPU (what Upload() sends): one float per pixel, or two (the ink,
+   * and the iso-lines' halo) when the last Build() drew iso-lines.
+   */
   void Rasterize(std::vector<float>& coverage);
+
+  /**
+   * The half width of the halo an iso-line of half width r clears in the patterns beside it,
+   * pixels: r plus the line's width, at least 2 pixels, so that the line reads over hatching,
+   * dots and pencil.
+   */
+  static double HaloRadius(double r) { return r + std::max(2.0, 2.0 * r); }
 
   /** How far a stroke reaches from its line, pixels: half the widest stroke, plus one. */
   static double Reach(const Settings& settings, double pointSize);

@@ -79,6 +79,8 @@ void vtkStylizeStylePass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "InteractiveImageReduction: " << this->InteractiveImageReduction << "\n";
   os << indent << "WindowScale: " << this->WindowScale[0] << " " << this->WindowScale[1] << "\n";
+  os << indent << "IsoLines: " << this->IsoLines << " (width " << this->IsoLineWidth
+     << " pt, spacing " << this->IsoLineSpacing << ")\n";
   os << indent << "BackgroundCulling: " << (this->Internals->Culling ? "on" : "off") << "\n";
   os << indent << "StageTiming: " << (this->Internals->Runner->Timing ? "on" : "off") << "\n";
   os << indent << "LightingPass:\n";

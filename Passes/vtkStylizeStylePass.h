@@ -235,6 +235,46 @@ public:
   vtkBooleanMacro(PlainAnnotations, bool);
   ///@}
 
+  ///@{
+  /**
+   * Iso-lines of the coloured data: on every opaque surface coloured by a point-data array
+   * through its mapper's colour map (a slice, a contour, a coloured mesh), lines where the
+   * array crosses round levels of the colour map's range (IsoLineSpacing), drawn in ink with
+   * the feature lines, hidden parts removed, and exact in vector figures: the contour plot of
+   * the data made a drawing (vtkStylizeFeatureLines' ISOLINE kind). The comic, the sketch and
+   * the line art draw them; the pixel art does not (its art pixels are coarser than the
+   * lines). The most levels (ROUND), or their number (EVEN); 0 draws none. Range [0, 100],
+   * default 0.
+   */
+  vtkSetClampMacro(IsoLines, int, 0, 100);
+  vtkGetMacro(IsoLines, int);
+  ///@}
+
+  ///@{
+  /** Width of the iso-lines (IsoLines), in points. Range [0.1, 20], default 1. */
+  vtkSetClampMacro(IsoLineWidth, double, 0.1, 20.0);
+  vtkGetMacro(IsoLineWidth, double);
+  ///@}
+
+  /** How the iso-line levels are placed (vtkStylizeFeatureLines::ComputeIsoLevels()). */
+  enum IsoLineSpacings
+  {
+    ROUND, // round numbers, at most IsoLines of them, as a scalar bar's ticks
+    EVEN,  // IsoLines levels splitting the colour map's range into equal parts
+    BANDS  // the edges between a banded colour map's colours (else as ROUND)
+  };
+
+  ///@{
+  /**
+   * How the iso-line levels are placed in the colour map's range: ROUND (the default), EVEN, or
+   * BANDS (a vtkLookupTable's NumberOfTableValues, a discretized colour transfer function's
+   * NumberOfValues: one line between two colours). A colour map with a log scale places them on
+   * a log scale.
+   */
+  vtkSetClampMacro(IsoLineSpacing, int, ROUND, BANDS);
+  vtkGetMacro(IsoLineSpacing, int);
+  ///@}
+
   /** Whether `prop` is an annotation (PlainAnnotations): axes and 3D text. */
   static bool IsAnnotation(vtkProp* prop);
 
@@ -650,6 +690,9 @@ protected:
   int LastTranslucentLayers = 0;
   bool StylizeVolumes = true;
   bool PlainAnnotations = true;
+  int IsoLines = 0;
+  double IsoLineWidth = 1.0;
+  int IsoLineSpacing = ROUND;
 
   /** Whether the frame being rendered leaves annotations plain (PlainAnnotations): they are
    * drawn after the stylized picture, which must then write its depth. */

@@ -478,7 +478,32 @@ private:
     std::string Help;
     std::vector<Action> Actions;
     std::set<std::string> Styles; // the styles a pass option applies to; empty: every one
+    /** A pass option's help per style, "style: text": the styles with the same text share it
+     * ("comic, lines: text"). */
+    std::vector<std::pair<std::string, std::string>> Parts;
   };
+
+  /** "style: text" split at the first ": " (no style: all of it is the text). */
+  static std::pair<std::string, std::string> SplitStyle(const std::string& help)
+  {
+    const size_t colon = help.find(": ");
+    const bool styled =
+      colon != std::string::npos && colon < 16 && help.find_first_of(" ,(") > colon;
+    return styled ? std::make_pair(help.substr(0, colon), help.substr(colon + 2))
+                  : std::make_pair(std::string(), help);
+  }
+
+  /** The help of a pass option from its parts. */
+  static std::string JoinParts(const Entry& e)
+  {
+    std::string help;
+    for (const auto& part : e.Parts)
+    {
+      help +=
+        (help.empty() ? "" : "; ") + (part.first.empty() ? "" : part.first + ": ") + part.second;
+    }
+    return help;
+  }
 
   CLI::Option* Add(const std::string& name, const std::string& metavar, const std::string& help,
     const std::string& group, Action action)
@@ -517,9 +542,11 @@ private:
     {
       CLI::Option* o =
         this->Add(name, metavar, text, GroupOf(static_cast<Pass*>(nullptr)).Group, action);
+      Entry& e = this->Entries[name];
+      e.Parts.push_back(SplitStyle(text));
       if (const char* style = GroupOf(static_cast<Pass*>(nullptr)).Style)
       {
-        this->Entries[name].Styles.insert(style);
+        e.Styles.insert(style);
       }
       return o;
     }
@@ -528,7 +555,19 @@ private:
     {
       e.Styles.insert(style);
     }
-    e.Help += "; " + text;
+    // (a setting of the style base, alike in several styles, is described once)
+    const auto part = SplitStyle(text);
+    auto same = std::find_if(e.Parts.begin(), e.Parts.end(),
+      [&](const std::pair<std::string, std::string>& p) { return p.second == part.second; });
+    if (same != e.Parts.end() && !part.first.empty() && !same->first.empty())
+    {
+      same->first += ", " + part.first;
+    }
+    else
+    {
+      e.Parts.push_back(part);
+    }
+    e.Help = JoinParts(e);
     e.Option->description(e.Help);
     e.Actions.push_back(action);
     return e.Option;

@@ -30,9 +30,9 @@ from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWindow, vtkRenderer
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL render window)
 
-KINDS = ["contour", "boundary", "crease", "ridge", "valley", "suggestive"]
+KINDS = ["contour", "boundary", "crease", "ridge", "valley", "suggestive", "isoline"]
 WIDTH = {"contour": 2.0, "boundary": 2.0, "crease": 1.2, "ridge": 0.8, "valley": 0.8,
-         "suggestive": 0.8}
+         "suggestive": 0.8, "isoline": 0.8}
 TOLERANCE = 0.1  # simplification, pixels
 
 

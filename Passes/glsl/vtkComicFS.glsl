@@ -20,6 +20,7 @@
 
 uniform sampler2D comicEdgeTexture;          // stage 1 output: luminance of f_normal, k1, k2
 uniform sampler2D comicFeatureInk;           // COMIC_FEATURE_LINES: the strokes' ink in [0, 1]
+                                             // (red), the iso-lines' halo (green)
 
 uniform ivec2 comicSize;           // viewport size (pixels)
 uniform vec2 comicPixelOffset;     // this tile's offset in the full image (pixels)
@@ -357,6 +358,11 @@ void comicMain()
   hatch = mix(hatch, comicHatchWidth > 0.0 ? hatchMean : tone, hatchFade);
 #endif
   pattern = mix(hatch, dots, t);
+#endif
+#ifdef COMIC_FEATURE_LINES
+  // Beside an iso-line the patterns give way to the paper (the strokes' green channel, their
+  // halo; 0 without iso-lines), so that the line reads over hatching and dots.
+  pattern = mix(pattern, 1.0, clamp(texelFetch(comicFeatureInk, p, 0).g, 0.0, 1.0));
 #endif
   // Lines and points (unlit primitives: linear depth -1, streamlines, wireframes) are ink; the
   // paper stays.

@@ -57,7 +57,8 @@ uniform vec2 sketchBright;       // t1, t2
 uniform float sketchCross;       // cross-hatching below this tone
 uniform vec3 sketchPencil;
 uniform vec3 sketchPaper;
-uniform sampler2D sketchFeatureInk; // SKETCH_FEATURE_LINES: the strokes' ink in [0, 1]
+uniform sampler2D sketchFeatureInk; // SKETCH_FEATURE_LINES: the strokes' ink in [0, 1] (red),
+                                    // the iso-lines' halo (green)
 uniform float sketchPointPixels;    // pixels per point
 
 // The four pixels around continuous pixel position f (taps, their field entries) and their
@@ -293,6 +294,11 @@ void sketchMain()
 #endif
   }
 
+#ifdef SKETCH_FEATURE_LINES
+  // Beside an iso-line the pencil gives way to the paper (the strokes' halo), so that the line
+  // reads over dark strokes.
+  value = mix(value, 1.0, clamp(texelFetch(sketchFeatureInk, p, 0).g, 0.0, 1.0));
+#endif
 #ifdef SKETCH_TINTED
   float m = max(colour.r, max(colour.g, colour.b));
   vec3 paper = m > 1e-4 ? colour / m * sketchPaper : sketchPaper;

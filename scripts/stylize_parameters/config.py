@@ -100,6 +100,8 @@ XML_SKIP = {("vtkStylizeLightingPass", "Model"): "set by the view",
             **{(c, n): "no effect in ParaView's view (a compositor's picture)"
                for c in ("vtkComicPass", "vtkPixelArtPass", "vtkSketchPass", "vtkLineArtPass")
                for n in ("StylizeVolumes", "VolumeOpacityThreshold", "PlainAnnotations")},
+            **{("vtkPixelArtPass", n): "the pixel art draws no iso-lines"
+               for n in ("IsoLines", "IsoLineWidth", "IsoLineSpacing")},
             ("vtkSketchPass", "DirectionArrayName"):
                 "ParaView's data is composite: Model reads its tangents, which the Principal "
                 "Curvatures filter's TangentDirection picks"}
@@ -173,6 +175,9 @@ CLI_COMIC = [
     ("Tint", "--tint", "off|data|all",
      {"off": "BLACK_AND_WHITE", "data": "DATA_COLORS", "all": "ALL_COLORS"}),
     ("FeatureLines", "--feature-lines", None), ("FeatureLineWidth", "--feature-line-width", "PT"),
+    ("IsoLines", "--iso-lines", "N"), ("IsoLineWidth", "--iso-line-width", "PT"),
+    ("IsoLineSpacing", "--iso-line-spacing", "round|even|bands",
+     {"round": "ROUND", "even": "EVEN", "bands": "BANDS"}),
 ]
 CLI_PIXEL = [
     ("LowThreshold", "--low-threshold", "T"), ("HighThreshold", "--high-threshold", "T"),
@@ -224,6 +229,9 @@ CLI_SKETCH = [
     ("ReferenceHeight", "--reference-height", "PX"),
     ("FeatureLines", "--no-feature-lines", None), ("FeatureLineWidth", "--feature-line-width", "PT"),
     ("VectorFigureStrokes", "--vector-pencil", None),
+    ("IsoLines", "--iso-lines", "N"), ("IsoLineWidth", "--iso-line-width", "PT"),
+    ("IsoLineSpacing", "--iso-line-spacing", "round|even|bands",
+     {"round": "ROUND", "even": "EVEN", "bands": "BANDS"}),
 ]
 CLI_LINES = [
     ("ContourWidth", "--contour-width", "PT"), ("CreaseWidth", "--crease-width", "PT"),
@@ -238,6 +246,9 @@ CLI_LINES = [
     ("InkColor", "--ink", "COLOR"), ("PaperColor", "--paper", "COLOR"),
     ("ReferenceHeight", "--reference-height", "PX"),
     ("Layer", "--lines-layer", "lines|paper", {"lines": "LINE_ART", "paper": "PAPER"}),
+    ("IsoLines", "--iso-lines", "N"), ("IsoLineWidth", "--iso-line-width", "PT"),
+    ("IsoLineSpacing", "--iso-line-spacing", "round|even|bands",
+     {"round": "ROUND", "even": "EVEN", "bands": "BANDS"}),
 ]
 CLI_LIGHTING = [
     ("SubjectFactor", "--subject", "P1"), ("GrayLevelsNear", "--levels-near", "N"),
