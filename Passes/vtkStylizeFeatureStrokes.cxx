@@ -653,6 +653,12 @@ vtkTextureObject* vtkStylizeFeatureStrokes::UploadCoverage(vtkOpenGLRenderWindow
     in.Texture = vtkTextureObject::New();
   }
   in.Texture->SetContext(window);
+  if (in.Texture->GetComponents() != in.Channels)
+  {
+    // (vtkTextureObject keeps the format of its first upload: one channel's read the interleaved
+    // two as a picture twice the size)
+    in.Texture->ResetFormatAndType();
+  }
   in.Texture->SetMinificationFilter(vtkTextureObject::Nearest);
   in.Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   in.Texture->SetWrapS(vtkTextureObject::ClampToEdge);

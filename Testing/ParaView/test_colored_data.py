@@ -13,6 +13,7 @@ surface's pixels of images blurred by a Gaussian (sigma 4 pixels, the patterns' 
              data's colours are there;
   ink        the share of surface pixels whose largest channel is below 0.5, inked more than
              half (a mid-luminance map must not be drawn as shadow all over: at most 0.5).
+Iso-lines (LineArtIsoLines) on the plate's stress add ink to at least 1% of its surface.
 Colour legends: shown over the comic and the sketch of coloured data, left out over black and
 white (Tint Black and white, line art), as vtkstylize does. Pixel art of the uncoloured bunny
 scan under the same light kit must stay neutral (max CIELAB chroma <= 10 over the surface). Further files (EXTRA.ex2:ARRAY, e.g. ParaView's
@@ -130,6 +131,26 @@ measure("plate", os.path.join(data, "plate.ex2"), "StressXX", True)
 for item in extra:
     path, array = item.rsplit(":", 1)
     measure(os.path.splitext(os.path.basename(path))[0], path, array, False)
+
+# Iso-lines of the coloured data (issue 55) through ParaView's representation and colour map:
+# the line art of the plate by its von Mises stress, with and without LineArtIsoLines 10 (round
+# levels of the map's range, 0.5 to 2.5: five lines across the plate and around its hole); the
+# lines add ink on the surface.
+plate = ExtractSurface(Input=IOSSReader(FileName=os.path.join(data, "plate.ex2")))
+display = Show(plate, view)
+ColorBy(display, ("POINTS", "VonMises"))
+display.RescaleTransferFunctionToDataRange(True, False)
+view.ResetCamera()
+view.LineArtIsoLines = 0
+bare = shoot("plate-isolines-off", [(4, "lines")])["lines"]
+view.LineArtIsoLines = 10
+lined = shoot("plate-isolines-on", [(4, "lines")])["lines"]
+view.LineArtIsoLines = 0
+surface = numpy.abs(bare - numpy.array(BACKGROUND)).max(axis=2) > 2.5 / 255.0
+added = float(((lined.max(axis=2) < 0.5) & ~(bare.max(axis=2) < 0.5))[surface].mean())
+print("plate    lines   iso-lines add ink to %.4f of the surface" % added, flush=True)
+check(added >= 0.01, "plate lines: iso-lines add ink to %.4f >= 0.01 of the surface" % added)
+Hide(plate, view)
 
 # One rule for colour legends: shown where the style shows the colours (as vtkstylize draws
 # them), left out over black and white (Tint Black and white; line art).

@@ -22,7 +22,8 @@ the reference's line pixels where the picture shows ink within 1 px and paper (l
 within 3 px, as the iso-lines' halo leaves it over hatching, dots and pencil (reported, no goal:
 the picture without iso-lines, beside it, shows how much of that the patterns give alone). The line art's vector
 figure (ComputeFigureStrokes: hidden lines removed by ray casting): the share of its iso-line
-stroke points within 1.5 px of a reference line (goal >= 0.95).
+stroke points within 1.5 px of a reference line (goal >= 0.95). On the plate, a pass turned from
+no iso-lines to some and back draws what fresh passes draw.
 Writes OUTDIR/isolines-SCENE-STYLE.png and prints a markdown table; --check fails below the goals.
 
 usage: isolines.py DATA OUTDIR [--check] [--scenes field,plate,vessel] [--levels N]
@@ -206,6 +207,24 @@ def figure_share(style_pass, reference):
     return float(np.mean(dilated[row, col])), len(chosen)
 
 
+def toggled(surface, array, view, levels):
+    """One pass turned from no iso-lines to some and back (its strokes' texture from one channel
+    to two and back) draws what fresh passes draw (each pixel within 2 levels)."""
+    failures = []
+    for style in STYLES:
+        fresh = [render(surface, array, view, style, n)[0] for n in (levels, 0)]
+        first, style_pass, (window, _) = render(surface, array, view, style, 0)
+        for n, expected in zip((levels, 0), fresh):
+            style_pass.SetIsoLines(n)
+            window.Render()
+            worst = int(np.abs(window_array(window).astype(int) - expected.astype(int)).max())
+            print("%s, IsoLines turned to %d on a pass: %d levels off a fresh pass's picture"
+                  % (style, n, worst))
+            if worst > 2:
+                failures.append("%s: IsoLines %d on a used pass off by %d levels" % (style, n, worst))
+    return failures
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("data")
@@ -253,6 +272,8 @@ def main():
                 failures.append("%s %s: recall %.3f, precision %.3f" % (name, style, recall,
                                                                         precision))
             del keep
+        if name == "plate":
+            failures += toggled(surface, array, view, args.levels)
     for f in failures:
         print("below the goal: " + f)
     return 1 if args.check and failures else 0
