@@ -13,7 +13,8 @@ surface's pixels of images blurred by a Gaussian (sigma 4 pixels, the patterns' 
              data's colours are there;
   ink        the share of surface pixels whose largest channel is below 0.5, inked more than
              half (a mid-luminance map must not be drawn as shadow all over: at most 0.5).
-Iso-lines (LineArtIsoLines) on the plate's stress add ink to at least 1% of its surface.
+Iso-lines (LineArtIsoLines) on the plate's stress add ink to at least 1% of its surface and to
+at most 0.1% of the background.
 Colour legends: shown over the comic and the sketch of coloured data, left out over black and
 white (Tint Black and white, line art), as vtkstylize does. Pixel art of the uncoloured bunny
 scan under the same light kit must stay neutral (max CIELAB chroma <= 10 over the surface). Further files (EXTRA.ex2:ARRAY, e.g. ParaView's
@@ -135,7 +136,7 @@ for item in extra:
 # Iso-lines of the coloured data (issue 55) through ParaView's representation and colour map:
 # the line art of the plate by its von Mises stress, with and without LineArtIsoLines 10 (round
 # levels of the map's range, 0.5 to 2.5: five lines across the plate and around its hole); the
-# lines add ink on the surface.
+# lines add ink on the surface, and none off it.
 plate = ExtractSurface(Input=IOSSReader(FileName=os.path.join(data, "plate.ex2")))
 display = Show(plate, view)
 ColorBy(display, ("POINTS", "VonMises"))
@@ -147,9 +148,13 @@ view.LineArtIsoLines = 10
 lined = shoot("plate-isolines-on", [(4, "lines")])["lines"]
 view.LineArtIsoLines = 0
 surface = numpy.abs(bare - numpy.array(BACKGROUND)).max(axis=2) > 2.5 / 255.0
-added = float(((lined.max(axis=2) < 0.5) & ~(bare.max(axis=2) < 0.5))[surface].mean())
-print("plate    lines   iso-lines add ink to %.4f of the surface" % added, flush=True)
+new_ink = (lined.max(axis=2) < 0.5) & ~(bare.max(axis=2) < 0.5)
+added, astray = float(new_ink[surface].mean()), float(new_ink[~surface].mean())
+print("plate    lines   iso-lines add ink to %.4f of the surface, %.4f of the background"
+      % (added, astray), flush=True)
 check(added >= 0.01, "plate lines: iso-lines add ink to %.4f >= 0.01 of the surface" % added)
+check(astray <= 0.001, "plate lines: iso-lines add ink to %.4f <= 0.001 of the background"
+      % astray)
 Hide(plate, view)
 
 # One rule for colour legends: shown where the style shows the colours (as vtkstylize draws
