@@ -1,4 +1,5 @@
 #include "vtkStylizeFigureComic.h"
+#include "vtkStylizeFigureLineArt.h"
 
 #include "vtkComicPass.h"
 #include "vtkComicPatterns.h"
@@ -342,6 +343,13 @@ bool DrawComic(Canvas& c, vtkComicPass* comic, int paperMode, int maximumPaperCo
     {
       DrawEdges(c, edges);
     }
+  }
+  if (ok)
+  {
+    // the feature lines and iso-lines, exact: paths from the geometry (the EDGES layer leaves
+    // them out)
+    const double black[3] = { 0.0, 0.0, 0.0 };
+    DrawStrokes(c, comic->ComputeFigureStrokes(c.W, c.H, c.Magnification), black);
   }
   return ok;
 }

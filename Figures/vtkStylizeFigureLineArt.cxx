@@ -97,23 +97,14 @@ void StrokeLine(Canvas& c, const std::vector<StrokePoint>& p)
 }
 
 //------------------------------------------------------------------------------
-bool DrawLineArt(Canvas& c, vtkLineArtPass* lines, int paperMode, int maximumPaperColors)
+void DrawStrokes(Canvas& c, vtkPolyData* strokes, const double ink[3])
 {
-  Image paper;
-  if (!c.Capture(vtkLineArtPass::PAPER, nullptr, paper))
-  {
-    return false;
-  }
-  DrawPaper(c, paper, paperMode, maximumPaperColors);
-
-  vtkPolyData* strokes = lines->ComputeFigureStrokes(c.W, c.H, c.Magnification);
-  vtkPoints* points = strokes->GetPoints();
-  vtkDataArray* widths = strokes->GetPointData()->GetArray("StrokeWidth");
+  vtkPoints* points = strokes ? strokes->GetPoints() : nullptr;
+  vtkDataArray* widths = points ? strokes->GetPointData()->GetArray("StrokeWidth") : nullptr;
   if (!points || !widths)
   {
-    return true;
+    return;
   }
-  const double* ink = lines->GetInkColor();
   cairo_set_source_rgb(c.Cr, ink[0], ink[1], ink[2]);
   cairo_set_line_cap(c.Cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(c.Cr, CAIRO_LINE_JOIN_ROUND);
@@ -148,6 +139,18 @@ bool DrawLineArt(Canvas& c, vtkLineArtPass* lines, int paperMode, int maximumPap
     }
     StrokeLine(c, kept);
   }
+}
+
+//------------------------------------------------------------------------------
+bool DrawLineArt(Canvas& c, vtkLineArtPass* lines, int paperMode, int maximumPaperColors)
+{
+  Image paper;
+  if (!c.Capture(vtkLineArtPass::PAPER, nullptr, paper))
+  {
+    return false;
+  }
+  DrawPaper(c, paper, paperMode, maximumPaperColors);
+  DrawStrokes(c, lines->ComputeFigureStrokes(c.W, c.H, c.Magnification), lines->GetInkColor());
   return true;
 }
 }

@@ -1,6 +1,7 @@
 /**
  * @file    vtkStylizeFigureLineArt.h
- * @brief   The line art's drawer of vtkStylizeFigureWriter (private to the module).
+ * @brief   The line art's drawer of vtkStylizeFigureWriter (private to the module), and the
+ *          strokes' drawer the comic's shares.
  *
  * Draws the paper (its captured PAPER layer: regions of one colour each, or an image) and over
  * it the feature lines as stroked vector paths from the geometry (vtkLineArtPass::
@@ -14,6 +15,7 @@
 #include "vtkStylizeFigureCanvas.h"
 
 class vtkLineArtPass;
+class vtkPolyData;
 
 namespace vtkStylizeFigure
 {
@@ -22,6 +24,14 @@ namespace vtkStylizeFigure
  * false when the paper could not be captured.
  */
 bool DrawLineArt(Canvas& c, vtkLineArtPass* lines, int paperMode, int maximumPaperColors);
+
+/**
+ * Draws strokes (a style's ComputeFigureStrokes(): polylines in the figure's pixels, row 0 at the
+ * bottom, with point data StrokeWidth) as paths of colour `ink`: simplified to within Tolerance
+ * page units, each run of nearly equal width one path with round caps and joins. The line art's
+ * lines, the comic's feature lines and iso-lines.
+ */
+void DrawStrokes(Canvas& c, vtkPolyData* strokes, const double ink[3]);
 }
 
 #endif

@@ -291,6 +291,19 @@ void vtkComicPass::RestoreAnchors()
 }
 
 //------------------------------------------------------------------------------
+vtkPolyData* vtkComicPass::ComputeFigureStrokes(int width, int height, int tiles)
+{
+  const Plan plan = this->PlanFrame(false);
+  vtkRenderer* renderer = this->Strokes->GetLastRenderer();
+  if (!plan.FeatureLines || !renderer)
+  {
+    this->NoStrokes->Initialize();
+    return this->NoStrokes;
+  }
+  return this->Strokes->RenderFigure(this, renderer, plan.Strokes, width, height, tiles);
+}
+
+//------------------------------------------------------------------------------
 int vtkComicPass::SwapLayer(int layer)
 {
   const int previous = this->Layer;

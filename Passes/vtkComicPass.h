@@ -23,6 +23,8 @@
 #ifndef vtkComicPass_h
 #define vtkComicPass_h
 
+#include "vtkNew.h"                 // for vtkNew
+#include "vtkPolyData.h"            // for vtkNew<vtkPolyData>
 #include "vtkStylizePassesModule.h" // for export macro
 #include "vtkStylizeStylePass.h"
 
@@ -64,10 +66,11 @@ public:
   /**
    * The layer written to the output: COMIC (default), EDGES, PATTERN, FIGURE_INPUTS or PAPER.
    * Values: COMIC, the pattern times the edges (the comic image); EDGES, the edge factor e alone
-   * (white = no edge, black = full edge), gray; PATTERN, the dots and hatching alone, without
-   * edges; FIGURE_INPUTS, red the tone, green the hatch direction's step / 255, blue the surface;
-   * PAPER, the paper under the ink: the tint (Tint) or white; lines and points as drawn; the
-   * background.
+   * (white = no edge, black = full edge), gray, without the feature lines and iso-lines (a vector
+   * figure draws them as paths: ComputeFigureStrokes()); PATTERN, the dots and hatching alone,
+   * without edges; FIGURE_INPUTS, red the tone, green the hatch direction's step / 255, blue the
+   * surface; PAPER, the paper under the ink: the tint (Tint) or white; lines and points as drawn;
+   * the background.
    */
   vtkSetClampMacro(Layer, int, COMIC, PAPER);
   vtkGetMacro(Layer, int);
@@ -310,6 +313,15 @@ public:
   vtkGetMacro(ReferenceHeight, double);
   ///@}
 
+  /**
+   * The feature lines' and iso-lines' strokes of the last rendered renderer's scene in an image
+   * `width` x `height` pixels drawn in `tiles` x `tiles` tiles, hidden parts removed by ray
+   * casting (exact): what a vector figure draws, as vtkLineArtPass::ComputeFigureStrokes();
+   * polylines with point data StrokeWidth (pixels) and cell data FeatureKind. Empty when the
+   * comic draws neither (FeatureLines off and IsoLines 0) or before the first frame.
+   */
+  vtkPolyData* ComputeFigureStrokes(int width, int height, int tiles);
+
   /** Sets Layer and returns the one it had (vtkStylizeStylePass::SwapLayer()). */
   int SwapLayer(int layer) override;
   bool GetTinted() override { return this->Tint != BLACK_AND_WHITE; }
@@ -359,6 +371,8 @@ protected:
   vtkStylizeDirectionField* Field = nullptr;
   /** The feature lines' strokes. */
   vtkStylizeFeatureStrokes* Strokes = nullptr;
+  /** An empty result of ComputeFigureStrokes(). */
+  vtkNew<vtkPolyData> NoStrokes;
 
   /** What a frame computes (the enabled stages, their channels and defines). */
   struct Plan;

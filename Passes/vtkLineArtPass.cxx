@@ -122,20 +122,8 @@ vtkStylizeFeatureStrokes::Settings StrokeSettings(vtkLineArtPass* pass)
 //------------------------------------------------------------------------------
 vtkPolyData* vtkLineArtPass::ComputeFigureStrokes(int width, int height, int tiles)
 {
-  vtkStylizeFeatureStrokes::View view;
-  view.Renderer = this->Internal->LastRenderer;
-  view.Size[0] = std::max(1, width);
-  view.Size[1] = std::max(1, height);
-  view.ViewportSize[0] = view.Size[0];
-  view.ViewportSize[1] = view.Size[1];
-  view.PointSize = this->GetPixelsPerPoint(view.Size[1], tiles);
-  // the frame's strokes replaced: the lines of the same camera are kept per surface (on several
-  // processes, collective: the whole data's lines on process 0)
-  this->AddVolumeSurfaces(view.Renderer);
-  this->Internal->Strokes->BuildFigure(
-    view, StrokeSettings(this), this->GetGBufferPass()->GetController());
-  this->RemoveVolumeSurfaces();
-  return this->Internal->Strokes->GetStrokes();
+  return this->Internal->Strokes->RenderFigure(
+    this, this->Internal->LastRenderer, StrokeSettings(this), width, height, tiles);
 }
 
 //------------------------------------------------------------------------------

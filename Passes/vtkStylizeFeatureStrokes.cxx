@@ -30,6 +30,7 @@
 #include "vtkStylizeRayOccluder.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkWeakPointer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -115,6 +116,7 @@ struct vtkStylizeFeatureStrokes::Internals
   int Size[2] = { 0, 0 };
   vtkTextureObject* Texture = nullptr;
   std::vector<float> Coverage;
+  vtkWeakPointer<vtkRenderer> LastRenderer; // of the last RenderFrame()
   /** Channels of Coverage: 1 (ink), or 2 (ink, and the iso-lines' halo) when the last
    * Build() drew iso-lines. */
   int Channels = 1;
@@ -516,11 +518,37 @@ vtkIdType vtkStylizeFeatureStrokes::BuildFigure(
 }
 
 //------------------------------------------------------------------------------
+vtkRenderer* vtkStylizeFeatureStrokes::GetLastRenderer()
+{
+  return this->Internal->LastRenderer;
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkStylizeFeatureStrokes::RenderFigure(vtkStylizeStylePass* style,
+  vtkRenderer* renderer, const Settings& settings, int width, int height, int tiles)
+{
+  View view;
+  view.Renderer = renderer;
+  view.Size[0] = std::max(1, width);
+  view.Size[1] = std::max(1, height);
+  view.ViewportSize[0] = view.Size[0];
+  view.ViewportSize[1] = view.Size[1];
+  view.PointSize = style->GetPixelsPerPoint(view.Size[1], tiles);
+  // the frame's strokes replaced: the lines of the same camera are kept per surface (on several
+  // processes, collective: the whole data's lines on process 0)
+  style->AddVolumeSurfaces(renderer);
+  this->BuildFigure(view, settings, style->GetGBufferPass()->GetController());
+  style->RemoveVolumeSurfaces();
+  return this->GetStrokes();
+}
+
+//------------------------------------------------------------------------------
 vtkTextureObject* vtkStylizeFeatureStrokes::RenderFrame(
   vtkStylizeStylePass* style, const vtkStylizeStylePass::Frame& frame, const Settings& settings)
 {
   View view;
   view.Renderer = frame.Renderer;
+  this->Internal->LastRenderer = frame.Renderer;
   view.Size[0] = frame.Size[0];
   view.Size[1] = frame.Size[1];
   // The camera projects onto the viewport (a tile: VTK narrows the camera to it), which the

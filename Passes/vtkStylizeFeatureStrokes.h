@@ -173,6 +173,18 @@ public:
     vtkStylizeStylePass* style, const vtkStylizeStylePass::Frame& frame, const Settings& settings);
 
   /**
+   * BuildFigure() for a style's vector figure: the strokes of `renderer`'s scene (the style's
+   * last) in an image `width` x `height` pixels drawn in `tiles` x `tiles` tiles, lengths at the
+   * style's pixels per point there, the scene's volumes as the style draws them, over the
+   * style's G-buffer's processes. Returns GetStrokes().
+   */
+  vtkPolyData* RenderFigure(vtkStylizeStylePass* style, vtkRenderer* renderer,
+    const Settings& settings, int width, int height, int tiles);
+
+  /** The renderer of the last RenderFrame() (null before one, or once it is gone). */
+  vtkRenderer* GetLastRenderer();
+
+  /**
    * The strokes of the last Build() as polylines: points (x, y, 0) in the drawn pixels (row 0
    * at the bottom), point data StrokeWidth (float, pixels) and cell data FeatureKind.
    */

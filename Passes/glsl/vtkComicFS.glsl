@@ -237,7 +237,8 @@ void comicMain()
   vec2 k = comicGeometryEdges(p);
   e = k.x * (comicEdgeWeights.x + k.y * (comicEdgeWeights.y + comicEdgeWeights.z));
 #endif
-#ifdef COMIC_FEATURE_LINES
+#if defined(COMIC_FEATURE_LINES) && COMIC_LAYER != 1
+  // (the EDGES layer leaves the lines out: a vector figure draws them as paths)
   e *= 1.0 - clamp(texelFetch(comicFeatureInk, p, 0).r, 0.0, 1.0);
 #endif
 
@@ -359,11 +360,13 @@ void comicMain()
 #endif
   pattern = mix(hatch, dots, t);
 #endif
-#ifdef COMIC_FEATURE_LINES
   // Beside an iso-line the patterns give way to the paper (the strokes' green channel, their
   // halo; 0 without iso-lines), so that the line reads over hatching and dots.
-  pattern = mix(pattern, 1.0, clamp(texelFetch(comicFeatureInk, p, 0).g, 0.0, 1.0));
+  float halo = 0.0;
+#ifdef COMIC_FEATURE_LINES
+  halo = clamp(texelFetch(comicFeatureInk, p, 0).g, 0.0, 1.0);
 #endif
+  pattern = mix(pattern, 1.0, halo);
   // Lines and points (unlit primitives: linear depth -1, streamlines, wireframes) are ink; the
   // paper stays.
   bool primitive = !surface && !background && linearDepth < 0.0;
@@ -389,7 +392,8 @@ void comicMain()
 #elif COMIC_LAYER == 3
   // what vtkStylizeFigureWriter draws the dots and hatch lines from: the tone, the hatch
   // direction's step (COMIC_FIXED_ANGLE_STEP: HatchAngle), 1 on surfaces
-  result = vec3(surface ? tone : 1.0, angleStep / 255.0, surface ? 1.0 : 0.0);
+  // (the iso-lines' halo records the paper's tone: the figure's patterns give way there too)
+  result = vec3(surface ? mix(tone, 1.0, halo) : 1.0, angleStep / 255.0, surface ? 1.0 : 0.0);
 #elif COMIC_LAYER == 4
   // (lines and points, which carry no pattern, as the comic draws them)
 #ifdef COMIC_TINTED
