@@ -469,9 +469,11 @@ std::vector<double> RoundLevels(double low, double high, int count)
       const double last = std::ceil(high / step) - 1.0;
       if (last - first + 1.0 <= count)
       {
-        for (double k = first; k <= last; k += 1.0)
+        // (counted: beyond 2^53 a double's k + 1 is k again)
+        const int n = static_cast<int>(last - first) + 1;
+        for (int k = 0; k < n; ++k)
         {
-          levels.push_back(k * step);
+          levels.push_back((first + k) * step);
         }
         break;
       }

@@ -148,6 +148,15 @@ void Levels()
     STYLIZE_CHECK(Same(got, c.Expected), "levels of [%g, %g], count %d, spacing %d%s:%s", c.Low,
       c.High, c.Count, c.Spacing, c.Log ? ", log" : "", text.c_str());
   }
+  // Far from 0 (a range of 3e4 at 1e20, where doubles are 16384 apart): at most `count` levels
+  // in the range, and an end (a loop adding 1 to a multiple past 2^53 never ended).
+  const std::vector<double> far = FL::ComputeIsoLevels(1e20, 1e20 + 3e4, 5, FL::ROUND, 0, false);
+  bool inside = far.size() <= 5;
+  for (double v : far)
+  {
+    inside = inside && v >= 1e20 && v <= 1e20 + 3e4;
+  }
+  STYLIZE_CHECK(inside, "levels of [1e20, 1e20 + 3e4]: %zu, not all in the range", far.size());
 }
 
 /** f = x + y / 2 on the unit square: each level one straight chain, on its level, as long as
