@@ -120,6 +120,7 @@ struct vtkStylizeFeatureStrokes::Internals
   /** Channels of Coverage: 1 (ink), or 2 (ink, and the iso-lines' halo) when the last
    * Build() drew iso-lines. */
   int Channels = 1;
+  double PointSize = 1.0; // pixels per point of the last Build() (the halo's width)
 };
 
 vtkStandardNewMacro(vtkStylizeFeatureStrokes);
@@ -146,7 +147,8 @@ double vtkStylizeFeatureStrokes::Reach(const Settings& settings, double pointSiz
   for (int k = 0; k < Kinds; ++k)
   {
     const double r = 0.5 * settings.Widths[k] * pointSize;
-    widest = std::max(widest, k == vtkStylizeFeatureLines::ISOLINE && r > 0.0 ? HaloRadius(r) : r);
+    widest = std::max(
+      widest, k == vtkStylizeFeatureLines::ISOLINE && r > 0.0 ? HaloRadius(r, pointSize) : r);
   }
   return widest + 1.0;
 }
@@ -339,6 +341,7 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
 {
   Internals& in = *this->Internal;
   in.Size[0] = std::max(1, view.Size[0]);
+  in.PointSize = view.PointSize;
   in.Size[1] = std::max(1, view.Size[1]);
   in.Channels =
     settings.IsoLines > 0 && settings.Widths[vtkStylizeFeatureLines::ISOLINE] > 0.0 ? 2 : 1;
@@ -631,7 +634,8 @@ void vtkStylizeFeatureStrokes::Rasterize(std::vector<float>& coverage)
       points->GetPoint(ids[s + 1], b);
       const double ra = 0.5 * widths->GetTuple1(ids[s]);
       const double rb = 0.5 * widths->GetTuple1(ids[s + 1]);
-      const double reach = (halo ? HaloRadius(std::max(ra, rb)) : std::max(ra, rb)) + 1.0;
+      const double reach =
+        (halo ? HaloRadius(std::max(ra, rb), in.PointSize) : std::max(ra, rb)) + 1.0;
       if (!std::isfinite(a[0] + a[1] + b[0] + b[1] + reach) ||
         std::max(std::abs(a[0]), std::abs(b[0])) > 1.0e7 ||
         std::max(std::abs(a[1]), std::abs(b[1])) > 1.0e7)
@@ -657,7 +661,7 @@ void vtkStylizeFeatureStrokes::Rasterize(std::vector<float>& coverage)
           c[0] = std::max(c[0], Coverage(d, r));
           if (halo)
           {
-            c[1] = std::max(c[1], Coverage(d, HaloRadius(r)));
+            c[1] = std::max(c[1], Coverage(d, HaloRadius(r, in.PointSize)));
           }
         }
       }

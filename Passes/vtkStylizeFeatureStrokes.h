@@ -207,11 +207,15 @@ public:
   void Rasterize(std::vector<float>& coverage);
 
   /**
-   * The half width of the halo an iso-line of half width r clears in the patterns beside it,
-   * pixels: r plus the line's width, at least 2 pixels, so that the line reads over hatching,
-   * dots and pencil.
+   * The half width of the halo an iso-line of half width r pixels clears in the patterns beside
+   * it, pixels, at `pointSize` pixels per point: r plus the line's width, at least 3 points, so
+   * that the line reads over hatching, dots and pencil (in points: a magnified screenshot keeps
+   * its proportions).
    */
-  static double HaloRadius(double r) { return r + std::max(2.0, 2.0 * r); }
+  static double HaloRadius(double r, double pointSize)
+  {
+    return r + std::max(3.0 * pointSize, 2.0 * r);
+  }
 
   /** How far a stroke reaches from its line, pixels: half the widest stroke, plus one. */
   static double Reach(const Settings& settings, double pointSize);
