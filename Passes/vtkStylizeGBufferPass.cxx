@@ -1,4 +1,5 @@
 #include "vtkStylizeGBufferPass.h"
+#include "vtkStylizeStylePass.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -616,12 +617,49 @@ void vtkStylizeGBufferPass::CompositeToOutput(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+void vtkStylizeGBufferPass::RenderAnnotations(const vtkRenderState* s)
+{
+  if (this->AfterProps.empty())
+  {
+    return;
+  }
+  // the annotations, as VTK draws them, over the stylized picture (depth-tested against it)
+  vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  int w, h, x, y;
+  ren->GetTiledSizeAndOrigin(&w, &h, &x, &y);
+  ostate->vtkglViewport(x, y, w, h);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  ostate->vtkglScissor(x, y, w, h);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_LEQUAL);
+  vtkRenderState annotations(ren);
+  annotations.SetPropArrayAndCount(
+    this->AfterProps.data(), static_cast<int>(this->AfterProps.size()));
+  annotations.SetFrameBuffer(s->GetFrameBuffer());
+  this->AnnotationSequence->Render(&annotations);
+  this->NumberOfRenderedProps += this->AnnotationSequence->GetNumberOfRenderedProps();
+  this->OverlayPass->Render(&annotations);
+  this->NumberOfRenderedProps += this->OverlayPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
 void vtkStylizeGBufferPass::RenderAfterGeometry(const vtkRenderState* s)
 {
   vtkRenderer* ren = s->GetRenderer();
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!renWin || this->SceneFromImage) // an image already holds everything
+  if (!renWin)
   {
+    return;
+  }
+  if (this->SceneFromImage)
+  {
+    // an image already holds everything but the annotations a style leaves plain
+    this->RenderAnnotations(s);
     return;
   }
   vtkOpenGLState* ostate = renWin->GetState();
@@ -653,18 +691,7 @@ void vtkStylizeGBufferPass::RenderAfterGeometry(const vtkRenderState* s)
     after->Render(s);
   }
   this->NumberOfRenderedProps += after->GetNumberOfRenderedProps();
-  if (!this->AfterProps.empty())
-  {
-    // the annotations, as VTK draws them, over the stylized picture
-    vtkRenderState annotations(ren);
-    annotations.SetPropArrayAndCount(
-      this->AfterProps.data(), static_cast<int>(this->AfterProps.size()));
-    annotations.SetFrameBuffer(s->GetFrameBuffer());
-    this->AnnotationSequence->Render(&annotations);
-    this->NumberOfRenderedProps += this->AnnotationSequence->GetNumberOfRenderedProps();
-    this->OverlayPass->Render(&annotations);
-    this->NumberOfRenderedProps += this->OverlayPass->GetNumberOfRenderedProps();
-  }
+  this->RenderAnnotations(s);
   this->OverlayPass->Render(s);
   this->NumberOfRenderedProps += this->OverlayPass->GetNumberOfRenderedProps();
 }
@@ -683,8 +710,27 @@ bool vtkStylizeGBufferPass::RenderTranslucentLayer(
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizeGBufferPass::Render(const vtkRenderState* s)
+void vtkStylizeGBufferPass::Render(const vtkRenderState* state)
 {
+  // (LeaveOutAnnotations: the state without them)
+  std::vector<vtkProp*> props;
+  vtkRenderState scene(state->GetRenderer());
+  const vtkRenderState* s = state;
+  if (this->LeaveOutAnnotations)
+  {
+    for (int i = 0; i < state->GetPropArrayCount(); ++i)
+    {
+      vtkProp* prop = state->GetPropArray()[i];
+      if (!vtkStylizeStylePass::IsAnnotation(prop))
+      {
+        props.push_back(prop);
+      }
+    }
+    scene.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+    scene.SetFrameBuffer(state->GetFrameBuffer());
+    scene.SetRequiredKeys(state->GetRequiredKeys());
+    s = &scene;
+  }
   int rendered = 0;
   if (this->RenderGeometry(s))
   {

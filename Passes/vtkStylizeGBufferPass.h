@@ -236,6 +236,13 @@ public:
    */
   void RenderAfterGeometry(const vtkRenderState* s);
 
+  /**
+   * Renders the annotations a style leaves plain (SetAfterProps()) over the output, as VTK draws
+   * them, depth-tested against it (RenderAfterGeometry() does, after the translucent geometry;
+   * over a scene from an image, the only thing it draws).
+   */
+  void RenderAnnotations(const vtkRenderState* s);
+
 #ifndef __VTK_WRAP__
   /**
    * Props RenderAfterGeometry() draws as VTK does (VTK's lighting, opaque then translucent, then
@@ -285,6 +292,16 @@ public:
    */
   vtkSetMacro(DrawTranslucent, bool);
   vtkGetMacro(DrawTranslucent, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether Render() leaves out the annotations (vtkStylizeStylePass::IsAnnotation(): axes and
+   * 3D text), so that a style processing this pass's picture (ParaView's view on one process)
+   * draws them plain over its own (vtkStylizeStylePass::PlainAnnotations). Default off.
+   */
+  vtkSetMacro(LeaveOutAnnotations, bool);
+  vtkGetMacro(LeaveOutAnnotations, bool);
   ///@}
 
   ///@{
@@ -446,6 +463,7 @@ protected:
   vtkSequencePass* AfterSequence = nullptr;
   vtkSequencePass* VolumeSequence = nullptr; // AfterSequence without the translucent geometry
   bool DrawTranslucent = true;
+  bool LeaveOutAnnotations = false;
   bool BuiltLayer = false; // the shaders test a translucent layer's depths
   vtkRenderPass* OverlayPass = nullptr;
   vtkSequencePass* AnnotationSequence = nullptr; // opaque and translucent, VTK's lighting

@@ -338,7 +338,11 @@ const vtkRenderState* vtkStylizeStylePass::SeparateAnnotations(const vtkRenderSt
   vtkInternals& in = *this->Internals;
   in.Annotations.clear();
   in.SceneProps.clear();
-  if (this->PlainAnnotations && !this->DelegatePass && !s->GetRenderer()->GetSelector())
+  // (behind a compositor: when the processes' own G-buffer pass left them out of its picture,
+  // ParaView's view on one process)
+  vtkStylizeGBufferPass* source = in.GBuffer->GetChannelSource();
+  const bool plain = !this->DelegatePass || (source && source->GetLeaveOutAnnotations());
+  if (this->PlainAnnotations && plain && !s->GetRenderer()->GetSelector())
   {
     for (int i = 0; i < s->GetPropArrayCount(); ++i)
     {
@@ -362,8 +366,9 @@ const vtkRenderState* vtkStylizeStylePass::SeparateAnnotations(const vtkRenderSt
 bool vtkStylizeStylePass::IsAnnotation(vtkProp* prop)
 {
   static const char* const classes[] = { "vtkCubeAxesActor", "vtkPolarAxesActor",
-    "vtkGridAxesActor3D", "vtkGridAxesActor2D", "vtkAxesActor", "vtkAxisActor", "vtkTextActor3D",
-    "vtkBillboardTextActor3D", "vtkAxisFollower", "vtkProp3DAxisFollower" };
+    "vtkGridAxesActor3D", "vtkGridAxesActor2D", "vtkGridAxes3DActor", "vtkGridAxes2DActor",
+    "vtkAxesActor", "vtkAxisActor", "vtkTextActor3D", "vtkBillboardTextActor3D", "vtkAxisFollower",
+    "vtkProp3DAxisFollower" };
   for (const char* name : classes)
   {
     if (prop && prop->IsA(name))

@@ -227,8 +227,11 @@ public:
    * vtkBillboardTextActor3D, vtkAxisFollower) are left out of the stylized scene and drawn over
    * the stylized picture, depth-tested against it, so that labels stay readable in every style
    * (line art draws no lines on them, pixel art would pixelate them to blobs). Off stylizes them
-   * with the rest of the scene. Applies when the style renders the geometry itself (not behind a
-   * compositor: ParaView in parallel). Default on.
+   * with the rest of the scene. Applies when the style renders the geometry itself, and behind a
+   * compositor whose per-process G-buffer pass leaves the annotations out
+   * (vtkStylizeGBufferPass::LeaveOutAnnotations: ParaView's view on one process, its data axes
+   * grid); with several processes they are composited into the picture and stylized with it.
+   * Default on.
    */
   vtkSetMacro(PlainAnnotations, bool);
   vtkGetMacro(PlainAnnotations, bool);

@@ -14,7 +14,8 @@ surface's pixels of images blurred by a Gaussian (sigma 4 pixels, the patterns' 
   ink        the share of surface pixels whose largest channel is below 0.5, inked more than
              half (a mid-luminance map must not be drawn as shadow all over: at most 0.5).
 Iso-lines (LineArtIsoLines) on the plate's stress add ink to at least 1% of its surface and to
-at most 0.1% of the background.
+at most 0.1% of the background. The data axes grid off the surface is drawn where ParaView draws it in every style
+(recall and precision of its pixels at least 0.9).
 Colour legends: shown over the comic and the sketch of coloured data, left out over black and
 white (Tint Black and white, line art), as vtkstylize does. Pixel art of the uncoloured bunny
 scan under the same light kit must stay neutral (max CIELAB chroma <= 10 over the surface). Further files (EXTRA.ex2:ARRAY, e.g. ParaView's
@@ -155,6 +156,42 @@ print("plate    lines   iso-lines add ink to %.4f of the surface, %.4f of the ba
 check(added >= 0.01, "plate lines: iso-lines add ink to %.4f >= 0.01 of the surface" % added)
 check(astray <= 0.001, "plate lines: iso-lines add ink to %.4f <= 0.001 of the background"
       % astray)
+
+# The data axes grid (issue 55) drawn where ParaView draws it in every style on one process, off
+# the surface (more than 4 pixels away): its pixels (where the plain picture with the grid
+# differs from the one without) drawn (recall: at least 90% of them within a pixel of what the
+# grid changes in the style's picture) and nothing else (precision: at least 90% of what it
+# changes within a pixel of them). Its labels were thickened by the comic's edges and pixelated by the
+# pixel art, and the line art left the grid out; the text's anti-aliasing differs (ParaView's
+# FXAA in the plain view), its place does not.
+display.DataAxesGrid.GridAxesVisibility = 0
+no_grid = shoot("plate-grid-off", [(0, "plain")])["plain"]
+display.DataAxesGrid.GridAxesVisibility = 1
+grid = shoot("plate-grid-on", [(0, "plain"), (1, "comic"), (2, "pixel"), (3, "sketch"),
+                               (4, "lines")])
+display.DataAxesGrid.GridAxesVisibility = 0
+
+
+def grown(mask, radius):
+    out = mask.copy()
+    for dy in range(-radius, radius + 1):
+        for dx in range(-radius, radius + 1):
+            out |= numpy.roll(numpy.roll(mask, dy, axis=0), dx, axis=1)
+    return out
+
+
+# (the styles' outlines reach past the surface, along the grid's edges)
+on_surface = numpy.abs(no_grid - numpy.array(BACKGROUND)).max(axis=2) > 2.5 / 255.0
+off_surface = ~grown(on_surface, 4)
+axes = (numpy.abs(grid["plain"] - no_grid).sum(axis=2) > 24 / 255.0) & off_surface
+for label in ("comic", "pixel", "sketch", "lines"):
+    drawn = (numpy.abs(grid[label] - no_grid).sum(axis=2) > 24 / 255.0) & off_surface
+    recall = float(grown(drawn, 1)[axes].mean())
+    precision = float(grown(axes, 1)[drawn].mean()) if drawn.any() else 0.0
+    print("plate    %-7s data axes grid: recall %.3f, precision %.3f (%d pixels)"
+          % (label, recall, precision, int(axes.sum())), flush=True)
+    check(recall >= 0.9 and precision >= 0.9, "plate %s: data axes grid where ParaView draws it: "
+          "recall %.3f, precision %.3f >= 0.9" % (label, recall, precision))
 Hide(plate, view)
 
 # One rule for colour legends: shown where the style shows the colours (as vtkstylize draws
