@@ -181,6 +181,10 @@ void SetIsoLines(vtkStylizeFeatureLines* fl, vtkActor* actor, vtkDataSet* data,
     return;
   }
   vtkScalarsToColors* lut = m->GetLookupTable();
+  if (lut->GetIndexedLookup() || lut->GetVectorMode() == vtkScalarsToColors::RGBCOLORS)
+  {
+    return; // categories, or the array's own colours: no levels
+  }
   const double* range = m->GetUseLookupTableScalarRange() ? lut->GetRange() : m->GetScalarRange();
   bool log = false;
   int bands = 0;
