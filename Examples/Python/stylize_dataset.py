@@ -5,7 +5,7 @@ Usage (from the repository, with the build tree's Python package; /usr/bin/pytho
 interpreter Debian's python3-vtk9 is built for; an X display is needed, e.g. Xvfb)::
 
     PYTHONPATH=build/python /usr/bin/python3 Examples/Python/stylize_dataset.py \\
-        [FILE] [-o OUTDIR] [--size WxH]
+        [FILE] [-o OUTDIR] [--size WxH] [--iso-lines N]
 
 FILE      a dataset in any format vtkStylizeReader reads (VTK XML and legacy, .pvd, Exodus,
           EnSight, OpenFOAM, STL, OBJ, PLY), checked before VTK's reader opens it, so that a
@@ -17,6 +17,8 @@ FILE      a dataset in any format vtkStylizeReader reads (VTK XML and legacy, .p
           scene (vtkStylizeDemoScene).
 -o        output folder, created if needed (default: out-python).
 --size    image size in pixels (default: 800x600).
+--iso-lines  the contour plot of the coloured data drawn as lines, at most N round levels of the
+          colour map's range, in the comic, the sketch and the line art (default: 0, none).
 
 It writes OUTDIR/none.png, comic.png, pixel.png and sketch.png (the styles in
 vtkstylize.STYLES, each with the pass's default settings; "none" is plain VTK rendering) and
@@ -227,8 +229,9 @@ def load_parts(path):
     return [(name, with_normals(surface)) for name, surface in parts]
 
 
-def render_styles(parts, built_in, size, outdir):
-    """Renders the parts in every style; returns the PNG paths written."""
+def render_styles(parts, built_in, size, outdir, iso_lines=0):
+    """Renders the parts in every style (with `iso_lines`, the iso-lines of the coloured data in
+    the styles that draw them); returns the PNG paths written."""
     renderer = vtkRenderer()
     renderer.SetBackground(1.0, 1.0, 1.0)
     add_parts(renderer, parts, built_in)
@@ -251,7 +254,8 @@ def render_styles(parts, built_in, size, outdir):
     os.makedirs(outdir, exist_ok=True)
     paths = []
     for style in vtkstylize.STYLES:
-        vtkstylize.apply_style(renderer, style)
+        settings = {"IsoLines": iso_lines} if iso_lines and style not in ("none", "pixel") else {}
+        vtkstylize.apply_style(renderer, style, **settings)
         window.Render()
         grab = vtkWindowToImageFilter()
         grab.SetInput(window)
@@ -280,10 +284,13 @@ def main(argv=None):
                         help="output folder (default: out-python)")
     parser.add_argument("--size", type=parse_size, default=(800, 600), metavar="WxH",
                         help="image size (default: 800x600)")
+    parser.add_argument("--iso-lines", type=int, default=0, metavar="N",
+                        help="iso-lines of the coloured data, at most N round levels of the "
+                             "colour map's range, in the comic, sketch and line art (default: 0)")
     args = parser.parse_args(argv)
     try:
         parts = load_parts(args.file)
-        paths = render_styles(parts, args.file is None, args.size, args.output)
+        paths = render_styles(parts, args.file is None, args.size, args.output, args.iso_lines)
     except (Failure, OSError) as error:
         print("stylize_dataset.py: %s" % error, file=sys.stderr)
         return 1
