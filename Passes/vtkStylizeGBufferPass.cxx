@@ -712,11 +712,11 @@ bool vtkStylizeGBufferPass::RenderTranslucentLayer(
 //------------------------------------------------------------------------------
 void vtkStylizeGBufferPass::Render(const vtkRenderState* state)
 {
-  // (LeaveOutAnnotations: the state without them)
+  // (LeaveOutAnnotations: the state without them; a hardware selection keeps them pickable)
   std::vector<vtkProp*> props;
   vtkRenderState scene(state->GetRenderer());
   const vtkRenderState* s = state;
-  if (this->LeaveOutAnnotations)
+  if (this->LeaveOutAnnotations && !state->GetRenderer()->GetSelector())
   {
     for (int i = 0; i < state->GetPropArrayCount(); ++i)
     {

@@ -298,7 +298,8 @@ public:
   /**
    * Whether Render() leaves out the annotations (vtkStylizeStylePass::IsAnnotation(): axes and
    * 3D text), so that a style processing this pass's picture (ParaView's view on one process)
-   * draws them plain over its own (vtkStylizeStylePass::PlainAnnotations). Default off.
+   * draws them plain over its own (vtkStylizeStylePass::PlainAnnotations). A hardware selection
+   * (picking) draws them. Default off.
    */
   vtkSetMacro(LeaveOutAnnotations, bool);
   vtkGetMacro(LeaveOutAnnotations, bool);
