@@ -617,6 +617,35 @@ void vtkStylizeGBufferPass::CompositeToOutput(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+/** Draws into the renderer's (tiled) viewport, scissored, depth-tested with GL_LEQUAL against
+ * what is there; the viewport, scissor and its test restored on leaving. */
+struct ScopedRendererViewport
+{
+  vtkOpenGLState* State;
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglScissor Scissor;
+  vtkOpenGLState::ScopedglEnableDisable ScissorTest;
+
+  explicit ScopedRendererViewport(vtkRenderer* ren)
+    : State(static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState())
+    , Viewport(State)
+    , Scissor(State)
+    , ScissorTest(State, GL_SCISSOR_TEST)
+  {
+    int w, h, x, y;
+    ren->GetTiledSizeAndOrigin(&w, &h, &x, &y);
+    this->State->vtkglViewport(x, y, w, h);
+    this->State->vtkglEnable(GL_SCISSOR_TEST);
+    this->State->vtkglScissor(x, y, w, h);
+    this->State->vtkglEnable(GL_DEPTH_TEST);
+    this->State->vtkglDepthFunc(GL_LEQUAL);
+  }
+};
+}
+
+//------------------------------------------------------------------------------
 void vtkStylizeGBufferPass::RenderAnnotations(const vtkRenderState* s)
 {
   if (this->AfterProps.empty())
@@ -625,18 +654,7 @@ void vtkStylizeGBufferPass::RenderAnnotations(const vtkRenderState* s)
   }
   // the annotations, as VTK draws them, over the stylized picture (depth-tested against it)
   vtkRenderer* ren = s->GetRenderer();
-  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-  int w, h, x, y;
-  ren->GetTiledSizeAndOrigin(&w, &h, &x, &y);
-  ostate->vtkglViewport(x, y, w, h);
-  ostate->vtkglEnable(GL_SCISSOR_TEST);
-  ostate->vtkglScissor(x, y, w, h);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_LEQUAL);
+  ScopedRendererViewport viewport(ren);
   vtkRenderState annotations(ren);
   annotations.SetPropArrayAndCount(
     this->AfterProps.data(), static_cast<int>(this->AfterProps.size()));
@@ -662,17 +680,7 @@ void vtkStylizeGBufferPass::RenderAfterGeometry(const vtkRenderState* s)
     this->RenderAnnotations(s);
     return;
   }
-  vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-  int w, h, x, y;
-  ren->GetTiledSizeAndOrigin(&w, &h, &x, &y);
-  ostate->vtkglViewport(x, y, w, h);
-  ostate->vtkglEnable(GL_SCISSOR_TEST);
-  ostate->vtkglScissor(x, y, w, h);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_LEQUAL);
+  ScopedRendererViewport viewport(ren);
 
   const double shift[4] = { 1.0, 1.0, this->AfterScreenShift[0], this->AfterScreenShift[1] };
   ScopedScreenTransform screen(ren->GetActiveCamera(), shift);

@@ -26,3 +26,34 @@ def window_array(window):
     w, h, _ = image.GetDimensions()
     pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3]
     return pixels[::-1].copy()
+
+
+def save_png(pixels, path):
+    """Writes (height, width, 3) uint8 pixels, rows top to bottom, as a PNG."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+    h, w, _ = pixels.shape
+    image = vtkImageData()
+    image.SetDimensions(w, h, 1)
+    image.GetPointData().SetScalars(numpy_to_vtk(pixels[::-1].reshape(-1, 3).copy()))
+    writer = vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(image)
+    writer.Write()
+
+
+def luminance(pixels):
+    """Rec. 709 luminance of (height, width, 3) pixels, in their units."""
+    import numpy
+    return pixels.astype(numpy.float64) @ numpy.array([0.2126, 0.7152, 0.0722])
+
+
+def near(mask, radius):
+    """The pixels within `radius` (chessboard distance) of a pixel of the boolean `mask`."""
+    import numpy
+    out = mask.copy()
+    for dy in range(-radius, radius + 1):
+        for dx in range(-radius, radius + 1):
+            out |= numpy.roll(numpy.roll(mask, dy, axis=0), dx, axis=1)
+    return out

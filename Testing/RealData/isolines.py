@@ -39,7 +39,8 @@ from vtk.util import numpy_support
 from vtkstylize import vtkComicPass, vtkLineArtPass, vtkSketchPass, vtkStylizeFeatureLines
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
-from stylize_png import window_array  # noqa: E402
+from stylize_png import luminance, near, window_array  # noqa: E402
+from stylize_png import save_png as save  # noqa: E402
 
 SIZE = (960, 720)
 STYLES = {"comic": vtkComicPass, "sketch": vtkSketchPass, "lines": vtkLineArtPass}
@@ -145,30 +146,6 @@ def render(surface, array, view, style=None, iso_lines=0, reference_levels=None)
         renderer.SetPass(style_pass)
     window.Render()
     return window_array(window), style_pass, (window, renderer)
-
-
-def luminance(pixels):
-    return pixels.astype(np.float64) @ np.array([0.2126, 0.7152, 0.0722])
-
-
-def near(mask, radius):
-    """Pixels within `radius` (chessboard) of a pixel of `mask`."""
-    out = mask.copy()
-    for dy in range(-radius, radius + 1):
-        for dx in range(-radius, radius + 1):
-            out |= np.roll(np.roll(mask, dy, axis=0), dx, axis=1)
-    return out
-
-
-def save(pixels, path):
-    h, w, _ = pixels.shape
-    img = vtk.vtkImageData()
-    img.SetDimensions(w, h, 1)
-    img.GetPointData().SetScalars(numpy_support.numpy_to_vtk(pixels[::-1].reshape(-1, 3).copy()))
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(img)
-    writer.Write()
 
 
 def readable_share(pixels, reference):

@@ -39,13 +39,13 @@ import time
 
 import numpy as np
 import vtk
-from vtk.util import numpy_support
 
 import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401 (the GPU ray caster's factory)
 from vtkstylize import vtkComicPass, vtkLineArtPass, vtkPixelArtPass, vtkSketchPass
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
-from stylize_png import window_array  # noqa: E402
+from stylize_png import luminance, near, window_array  # noqa: E402
+from stylize_png import save_png as save  # noqa: E402
 
 STYLES = {"comic": vtkComicPass, "pixel": vtkPixelArtPass, "sketch": vtkSketchPass,
           "lines": vtkLineArtPass}
@@ -252,17 +252,6 @@ def render(builder, data, style, size, with_volume=True, times=0, only_volume=Fa
     return pixels, (statistics.median(seconds) if seconds else None), surfaces
 
 
-def save(pixels, path):
-    h, w, _ = pixels.shape
-    img = vtk.vtkImageData()
-    img.SetDimensions(w, h, 1)
-    img.GetPointData().SetScalars(numpy_support.numpy_to_vtk(pixels[::-1].reshape(-1, 3).copy()))
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(path)
-    writer.SetInputData(img)
-    writer.Write()
-
-
 def blur(a, radius):
     """A box blur of `radius` pixels, applied twice (about a Gaussian)."""
     out = a.astype(np.float64)
@@ -274,19 +263,6 @@ def blur(a, radius):
             hi = np.take(c, np.arange(2 * radius + 1, 2 * radius + 1 + n), axis=axis)
             lo = np.take(c, np.arange(0, n), axis=axis)
             out = (hi - lo) / (2 * radius + 1)
-    return out
-
-
-def luminance(pixels):
-    return pixels.astype(np.float64) @ np.array([0.2126, 0.7152, 0.0722])
-
-
-def near(mask, radius):
-    """Pixels within `radius` (chessboard) of a pixel of `mask`."""
-    out = mask.copy()
-    for dy in range(-radius, radius + 1):
-        for dx in range(-radius, radius + 1):
-            out |= np.roll(np.roll(mask, dy, axis=0), dx, axis=1)
     return out
 
 
