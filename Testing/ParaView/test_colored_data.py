@@ -34,6 +34,9 @@ from paraview.vtk.util.numpy_support import vtk_to_numpy
 from paraview.vtk.vtkIOImage import vtkPNGReader
 from stylize_pv_scene import BACKGROUND, check, failures, make_view
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+from stylize_png import near  # noqa: E402
+
 out, data = sys.argv[1], sys.argv[2]
 extra = sys.argv[3:]
 os.makedirs(out, exist_ok=True)
@@ -172,22 +175,14 @@ grid = shoot("plate-grid-on", [(0, "plain"), (1, "comic"), (2, "pixel"), (3, "sk
 display.DataAxesGrid.GridAxesVisibility = 0
 
 
-def grown(mask, radius):
-    out = mask.copy()
-    for dy in range(-radius, radius + 1):
-        for dx in range(-radius, radius + 1):
-            out |= numpy.roll(numpy.roll(mask, dy, axis=0), dx, axis=1)
-    return out
-
-
 # (the styles' outlines reach past the surface, along the grid's edges)
 on_surface = numpy.abs(no_grid - numpy.array(BACKGROUND)).max(axis=2) > 2.5 / 255.0
-off_surface = ~grown(on_surface, 4)
+off_surface = ~near(on_surface, 4)
 axes = (numpy.abs(grid["plain"] - no_grid).sum(axis=2) > 24 / 255.0) & off_surface
 for label in ("comic", "pixel", "sketch", "lines"):
     drawn = (numpy.abs(grid[label] - no_grid).sum(axis=2) > 24 / 255.0) & off_surface
-    recall = float(grown(drawn, 1)[axes].mean())
-    precision = float(grown(axes, 1)[drawn].mean()) if drawn.any() else 0.0
+    recall = float(near(drawn, 1)[axes].mean())
+    precision = float(near(axes, 1)[drawn].mean()) if drawn.any() else 0.0
     print("plate    %-7s data axes grid: recall %.3f, precision %.3f (%d pixels)"
           % (label, recall, precision, int(axes.sum())), flush=True)
     check(recall >= 0.9 and precision >= 0.9, "plate %s: data axes grid where ParaView draws it: "

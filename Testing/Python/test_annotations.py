@@ -14,7 +14,7 @@ import sys
 
 import numpy as np
 import vtk
-from stylize_png import window_array
+from stylize_png import near, window_array
 from vtkstylize import vtkComicPass, vtkLineArtPass, vtkPixelArtPass, vtkSketchPass
 
 SIZE = (480, 360)
@@ -69,14 +69,6 @@ def picture(style=None, sphere=True, annotations=True, plain=True):
         renderer.SetPass(p)
     window.Render()
     return window_array(window)
-
-
-def near(mask, radius):
-    out = mask.copy()
-    for dy in range(-radius, radius + 1):
-        for dx in range(-radius, radius + 1):
-            out |= np.roll(np.roll(mask, dy, axis=0), dx, axis=1)
-    return out
 
 
 def ink(pixels):
