@@ -65,6 +65,7 @@ vtkComicPass::vtkComicPass()
   std::vector<vtkStylizeStage> stages(std::begin(ComicStages), std::end(ComicStages));
   this->Field->AddStages(source, mainCall, stages);
   this->SetStages(source, mainCall, stages);
+  this->ForwardProgress(this->Strokes);
 }
 
 //------------------------------------------------------------------------------

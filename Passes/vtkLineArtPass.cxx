@@ -1,6 +1,5 @@
 #include "vtkLineArtPass.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkComicPatterns.h"
 #include "vtkFloatArray.h"
 #include "vtkObjectFactory.h"
@@ -51,12 +50,7 @@ vtkLineArtPass::vtkLineArtPass()
   this->InteractiveImageReduction = 2; // the most expensive styles: a preview while dragging
   this->SetStages(vtkLineArtFS, "  lineArtMain();\n",
     std::vector<vtkStylizeStage>(std::begin(LineArtStages), std::end(LineArtStages)));
-  // The strokes' progress (finding the lines of large meshes) is the pass's ProgressEvent.
-  vtkNew<vtkCallbackCommand> forward;
-  forward->SetClientData(this);
-  forward->SetCallback([](vtkObject*, unsigned long, void* self, void* data)
-    { static_cast<vtkLineArtPass*>(self)->InvokeEvent(vtkCommand::ProgressEvent, data); });
-  this->Internal->Strokes->AddObserver(vtkCommand::ProgressEvent, forward);
+  this->ForwardProgress(this->Internal->Strokes);
 }
 
 //------------------------------------------------------------------------------

@@ -26,7 +26,7 @@
  * and costs: docs/algorithms.md ("Feature lines").
  * The pass invokes ProgressEvent (a double in [0, 1]) while a frame finds the lines of its
  * surfaces (seconds for the first frame of millions of triangles): the vtkstylize program's
- * progress bar.
+ * progress bar and ParaView's. The comic and the sketch report their feature lines the same way.
  *
  * @sa vtkStylizeFeatureLines vtkStylizeLineVisibility vtkComicPass vtkSketchPass
  */

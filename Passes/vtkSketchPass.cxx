@@ -129,6 +129,7 @@ vtkSketchPass::vtkSketchPass()
   this->Internals->Field->AddStages(source, mainCall, stages);
   this->SetStages(source, mainCall, stages);
   this->SetDirectionArrayName("PrincipalDirectionMinAbs");
+  this->ForwardProgress(this->Internals->Strokes);
 }
 
 //------------------------------------------------------------------------------

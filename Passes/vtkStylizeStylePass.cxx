@@ -1,11 +1,13 @@
 #include "vtkStylizeStylePass.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCommunicator.h"
 #include "vtkFloatArray.h"
 #include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkMultiProcessController.h"
+#include "vtkNew.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -44,6 +46,16 @@ vtkStylizeStylePass::vtkStylizeStylePass(int lightingModel)
   in.GBuffer->SetLightingPass(in.Lighting);
   in.LayerGBuffer->SetLightingPass(in.Lighting);
   in.Scene = in.GBuffer;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeStylePass::ForwardProgress(vtkObject* source)
+{
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetClientData(this);
+  forward->SetCallback([](vtkObject*, unsigned long, void* self, void* data)
+    { static_cast<vtkStylizeStylePass*>(self)->InvokeEvent(vtkCommand::ProgressEvent, data); });
+  source->AddObserver(vtkCommand::ProgressEvent, forward);
 }
 
 //------------------------------------------------------------------------------

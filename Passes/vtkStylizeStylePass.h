@@ -379,6 +379,13 @@ protected:
     const std::vector<vtkStylizeStage>& stages);
 #endif
 
+  /**
+   * Makes `source`'s ProgressEvent (a double in [0, 1], e.g. while the strokes find the lines
+   * of a large mesh) this pass's ProgressEvent, which the program's progress bar and ParaView's
+   * progress bar observe. A style calls it once per source it owns.
+   */
+  void ForwardProgress(vtkObject* source);
+
   /** The frame being rendered, as the stages see it (filled by BeginFrame()). */
   struct Frame
   {

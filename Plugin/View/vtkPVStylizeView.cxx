@@ -1,6 +1,8 @@
 #include "vtkPVStylizeView.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkBoundingBox.h"
+#include "vtkCallbackCommand.h"
 #include "vtkComicPass.h"
 #include "vtkContext2DScalarBarActor.h"
 #include "vtkImageData.h"
@@ -9,6 +11,8 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
+#include "vtkPVProgressHandler.h"
+#include "vtkPVSession.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkPixelArtPass.h"
 #include "vtkPropCollection.h"
@@ -178,6 +182,7 @@ vtkPVStylizeView::vtkPVStylizeView()
   this->RankGBuffer = vtkSmartPointer<vtkStylizeGBufferPass>::New();
   this->RankGBuffer->SetLightingPass(this->LightingPass);
   this->RequestedFXAA = this->UseFXAA;
+  this->ProgressReporter = vtkSmartPointer<vtkAlgorithm>::New();
 }
 
 //------------------------------------------------------------------------------
@@ -494,11 +499,50 @@ void vtkPVStylizeView::Render(bool interactive, bool skip_rendering)
   this->NeedsOrderedCompositing = this->DataNeedsOrderedCompositing && !this->GetActiveStylePass();
   const std::vector<vtkProp*> hidden =
     this->ShowsColorLegends() ? std::vector<vtkProp*>() : this->HideColorLegends();
+  vtkStylizeStylePass* style = this->GetActiveStylePass();
+  const unsigned long tag = style ? this->ReportProgressOf(style) : 0;
   this->Superclass::Render(interactive, skip_rendering);
+  if (style)
+  {
+    style->RemoveObserver(tag);
+  }
   for (vtkProp* prop : hidden)
   {
     prop->SetVisibility(1);
   }
+}
+
+//------------------------------------------------------------------------------
+unsigned long vtkPVStylizeView::ReportProgressOf(vtkStylizeStylePass* style)
+{
+  // ParaView's progress bar follows the algorithms registered with the session's progress
+  // handler (only algorithms): the style's progress is the reporter's. Only frames that do
+  // work report: a frame that keeps its lines sends 1 alone, which is not passed on.
+  if (!this->ProgressRegistered)
+  {
+    vtkPVSession* session = this->GetSession();
+    if (session && session->GetProgressHandler())
+    {
+      this->ProgressReporter->SetProgressText("Stylize: finding the lines");
+      session->GetProgressHandler()->RegisterProgressEvent(this->ProgressReporter, 0);
+      this->ProgressRegistered = true;
+    }
+  }
+  vtkNew<vtkCallbackCommand> forward;
+  forward->SetClientData(this);
+  forward->SetCallback(
+    [](vtkObject*, unsigned long, void* self, void* data)
+    {
+      auto* view = static_cast<vtkPVStylizeView*>(self);
+      const double fraction = *static_cast<double*>(data);
+      if (fraction < 1.0 || view->ProgressReported)
+      {
+        view->ProgressReporter->UpdateProgress(std::max(0.0, std::min(fraction, 1.0)));
+      }
+      view->ProgressReported = fraction < 1.0;
+    });
+  this->ProgressReported = false;
+  return style->AddObserver(vtkCommand::ProgressEvent, forward);
 }
 
 //------------------------------------------------------------------------------

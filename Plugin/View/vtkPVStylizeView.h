@@ -42,6 +42,7 @@
 #include <string> // for std::string
 #include <vector> // for std::vector
 
+class vtkAlgorithm;
 class vtkComicPass;
 class vtkImageData;
 class vtkPixelArtPass;
@@ -210,6 +211,12 @@ protected:
   /** Frees the graphics resources of the style passes other than keep (all when nullptr). */
   void ReleasePassResources(vtkStylizeStylePass* keep);
 
+  /**
+   * Passes the style's ProgressEvent (finding the lines of large meshes) to ParaView's progress
+   * bar for one frame; returns the observer's tag on the style.
+   */
+  unsigned long ReportProgressOf(vtkStylizeStylePass* style);
+
   int Style = NONE;
   int LightingModel = STYLE_DEFAULT;
   bool RequestedFXAA = false;
@@ -229,6 +236,9 @@ protected:
   vtkSmartPointer<vtkRenderPass> LightingDelegate;
   vtkSmartPointer<vtkStylizeGBufferPass> RankGBuffer;
   std::string FigureResult;
+  vtkSmartPointer<vtkAlgorithm> ProgressReporter; // what the session's progress handler observes
+  bool ProgressRegistered = false;
+  bool ProgressReported = false; // this frame passed on progress below 1
 
 private:
   vtkPVStylizeView(const vtkPVStylizeView&) = delete;

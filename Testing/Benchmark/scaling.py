@@ -4,11 +4,13 @@
 and 9.7M triangles.
 
     scaling.py VTKSTYLIZE SCAN.ply WORK_DIR OUTPUT.md [--sizes 0,1,2,3,3x2] [--size WxH]
+               [--repeat N]
     scaling.py --from-log LOG WORK_DIR OUTPUT.md     (the table of a run cut short)
 
 The meshes are made here (not committed): the scan Loop-subdivided 0 to 3 times (x4 triangles
 each), and "3x2" two copies of the 3-times one side by side, written to WORK_DIR as binary PLY.
-Per size, one run each at WxH (default 1280x720), in this order: `--style comic` (the
+Per size, N rounds (default 3; medians reported: single runs here vary by a second or more at
+1.2M triangles) of one run each at WxH (default 1280x720), in this order: `--style comic` (the
 reference), `--style lines`, `--style lines --orbit 2` (the second frame: after a camera
 change), `--style sketch --direction-source model`, and `--style lines` to an SVG figure. The
 seconds and the peak resident size (wait4) of each run; the line art's first frame and its figure
@@ -105,21 +107,33 @@ def run(command):
     return seconds, usage.ru_maxrss / 1024.0
 
 
+def median(values):
+    values = sorted(values)
+    n = len(values)
+    return values[n // 2] if n % 2 else 0.5 * (values[n // 2 - 1] + values[n // 2])
+
+
 def row(triangles, measures):
-    """A table row from one size's runs: {name: (seconds, peak MiB)}."""
-    comic = measures["comic"][0]
+    """A table row from one size's runs: {name: [(seconds, peak MiB), one per repeat]}; the
+    medians of the repeats, and the line art's first frame of each repeat (its runs against the
+    comic run of the same round)."""
+    def seconds(name):
+        return median([m[0] for m in measures[name]])
+    comic = seconds("comic")
     return {
         "triangles": triangles,
         "comic": comic,
-        "lines first frame": measures["lines"][0] - comic,
-        "lines next frame": measures["lines orbit 2"][0] - measures["lines"][0],
-        "sketch model first frame": measures["sketch model"][0] - comic,
-        "lines svg": measures["lines svg"][0] - comic,
-        "peak MiB": max(m[1] for m in measures.values()),
+        "lines first frame": seconds("lines") - comic,
+        "lines first frame runs": [l[0] - c[0] for l, c in zip(measures["lines"],
+                                                              measures["comic"])],
+        "lines next frame": seconds("lines orbit 2") - seconds("lines"),
+        "sketch model first frame": seconds("sketch model") - comic,
+        "lines svg": seconds("lines svg") - comic,
+        "peak MiB": max(m[1] for runs in measures.values() for m in runs),
     }
 
 
-def report(rows, output, image):
+def report(rows, output, image, repeats):
     curves = ["comic", "lines first frame", "lines next frame", "sketch model first frame",
               "lines svg", "peak MiB"]
 
@@ -134,18 +148,20 @@ def report(rows, output, image):
         return sum((p[0] - mx) * (p[1] - my) for p in points) / \
             sum((p[0] - mx) ** 2 for p in points)
     with open(output, "w") as f:
-        f.write("| triangles | comic run (s) | line art first frame (s, over comic) | line art "
-                "after a camera change (s) | sketch, model directions (s, over comic) | "
-                "line-art SVG (s, over comic) | peak resident (MiB) |\n")
-        f.write("|---:|---:|---:|---:|---:|---:|---:|\n")
+        f.write("| triangles | comic run (s) | line art first frame (s, over comic) | per round "
+                "(s) | line art after a camera change (s) | sketch, model directions (s, over "
+                "comic) | line-art SVG (s, over comic) | peak resident (MiB) |\n")
+        f.write("|---:|---:|---:|---:|---:|---:|---:|---:|\n")
         for r in rows:
-            f.write("| {:,} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:,.0f} |\n".format(
-                r["triangles"], r["comic"], r["lines first frame"], r["lines next frame"],
-                r["sketch model first frame"], r["lines svg"], r["peak MiB"]))
+            f.write("| {:,} | {:.1f} | {:.1f} | {} | {:.1f} | {:.1f} | {:.1f} | {:,.0f} |\n".format(
+                r["triangles"], r["comic"], r["lines first frame"],
+                ", ".join("%.1f" % v for v in r["lines first frame runs"]),
+                r["lines next frame"], r["sketch model first frame"], r["lines svg"],
+                r["peak MiB"]))
         f.write("\nLog-log slopes from 300k triangles up: " + ", ".join(
             "%s %.2f" % (c, slope(c)) for c in curves) + ".\n")
-        f.write("\n%s, one run per cell, vtkstylize --size %s.\n" % (
-            time.strftime("%Y-%m-%d"), image))
+        f.write("\n%s, the median of %d rounds per cell (each round runs every configuration "
+                "once), vtkstylize --size %s.\n" % (time.strftime("%Y-%m-%d"), repeats, image))
     print(open(output).read())
     try:
         import matplotlib
@@ -176,6 +192,8 @@ def main():
     parser.add_argument("--sizes", default="0,1,2,3,3x2",
                         help="Loop subdivision levels, LxN for N copies (default 0,1,2,3,3x2)")
     parser.add_argument("--size", default="1280x720", help="image size (default 1280x720)")
+    parser.add_argument("--repeat", type=int, default=3,
+                        help="rounds per size, medians reported (default 3)")
     parser.add_argument("--from-log", metavar="LOG",
                         help="the table of a run cut short: LOG WORK_DIR OUTPUT.md")
     parser.add_argument("paths", nargs="+",
@@ -192,10 +210,11 @@ def main():
             if len(parts) == 2 and line.strip().endswith("MiB"):
                 size, name = parts[0].split(" ", 1)
                 seconds, mib = parts[1].replace("s,", "").replace("MiB", "").split()
-                found.setdefault(size, {})[name] = (float(seconds), float(mib))
+                found.setdefault(size, {}).setdefault(name, []).append(
+                    (float(seconds), float(mib)))
         rows = [row(triangles_of(os.path.join(work, "scan-%s.ply" % size)), m)
                 for size, m in found.items() if len(m) == 5]
-        report(rows, output, image)
+        report(rows, output, image, max(len(r) for m in found.values() for r in m.values()))
         return
     program, scan, work, output = args
     os.makedirs(work, exist_ok=True)
@@ -206,17 +225,19 @@ def main():
         out = os.path.join(work, "out-" + size)
         base = [program, "--size", image]
         measures = {}
-        for name, extra, target in (
-                ("comic", ["--style", "comic"], out + "-comic.png"),
-                ("lines", ["--style", "lines"], out + "-lines.png"),
-                ("lines orbit 2", ["--style", "lines", "--orbit", "2"], out + "-orbit.png"),
-                ("sketch model", ["--style", "sketch", "--direction-source", "model"],
-                 out + "-sketch.png"),
-                ("lines svg", ["--style", "lines"], out + "-lines.svg")):
-            measures[name] = run(base + extra + ["--output", target, path])
-            print("%s %s: %.1f s, %.0f MiB" % (size, name, *measures[name]), flush=True)
+        for _ in range(max(1, options.repeat)):
+            for name, extra, target in (
+                    ("comic", ["--style", "comic"], out + "-comic.png"),
+                    ("lines", ["--style", "lines"], out + "-lines.png"),
+                    ("lines orbit 2", ["--style", "lines", "--orbit", "2"], out + "-orbit.png"),
+                    ("sketch model", ["--style", "sketch", "--direction-source", "model"],
+                     out + "-sketch.png"),
+                    ("lines svg", ["--style", "lines"], out + "-lines.svg")):
+                measured = run(base + extra + ["--output", target, path])
+                measures.setdefault(name, []).append(measured)
+                print("%s %s: %.1f s, %.0f MiB" % (size, name, *measured), flush=True)
         rows.append(row(triangles_of(path), measures))
-    report(rows, output, image)
+    report(rows, output, image, max(1, options.repeat))
 
 
 if __name__ == "__main__":

@@ -11,7 +11,9 @@ Writes OUTPUT_PREFIX-none.png, -comic.png, -pixel.png, -sketch.png and -lines.pn
 (comic with the display as a Stylized Surface whose own subject factor is 1: per-representation
 lighting, which every rank must apply to its piece) and -sketch-model.png (the sketch along the
 Principal Curvatures filter's directions, DirectionSource Model), and prints one line
-"ranks N pieces P points M" (P: how many ranks hold part of the data) for the caller to check.
+"ranks N pieces P points M" (P: how many ranks hold part of the data) and one line "progress
+lines ..." (the percentages ParaView's progress bar was given while the line art rendered) for
+the caller to check.
 The data is a contour of ParaView's Wavelet source, which ParaView splits across ranks.
 """
 import sys
@@ -42,10 +44,27 @@ print("ranks %d pieces %d points %d" % (servermanager.ActiveConnection.GetNumber
 
 display = show_framed(contour, view)
 
+# What ParaView's progress bar is told while the styles find their lines: the session's
+# progress handler (every event passed on: the interval at its floor).
+handler = servermanager.ActiveConnection.Session.GetProgressHandler()
+handler.SetProgressInterval(0.01)
+progress = {}
+
+
+def on_progress(caller, event):
+    text = caller.GetLastProgressText() or ""
+    if "Stylize" in text:
+        progress.setdefault(current, []).append(caller.GetLastProgress())
+
+
+handler.AddObserver("ProgressEvent", on_progress)
 for style, name in enumerate(["none", "comic", "pixel", "sketch", "lines"]):
     view.Style = style
+    current = name
     Render(view)
     SaveScreenshot("%s-%s.png" % (prefix, name), view, ImageResolution=size)
+# the line art's first frame found the lines; its later frames kept them (no report)
+print("progress lines %s" % " ".join(str(p) for p in progress.get("lines", [])))
 view.Style = 1
 display.SetRepresentationType("Stylized Surface")
 display.StylizeOverrideLighting = 1
