@@ -206,6 +206,9 @@ void vtkStylizeVolumeSurface::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "OpacityThreshold: " << this->OpacityThreshold << "\n";
   os << indent << "Component: " << this->Component << "\n";
+  os << indent << "WholeExtent: " << this->WholeExtent[0] << " " << this->WholeExtent[1] << " "
+     << this->WholeExtent[2] << " " << this->WholeExtent[3] << " " << this->WholeExtent[4] << " "
+     << this->WholeExtent[5] << "\n";
   os << indent << "IsoValues: " << this->IsoValues.size() << "\n";
   os << indent << "ScalarOpacity: " << this->ScalarOpacity << "\n";
 }
@@ -392,7 +395,12 @@ vtkSmartPointer<vtkImageData> vtkStylizeVolumeSurface::PadToClose(vtkImageData* 
   // (padded with the most transparent value over the data's and the function's ranges)
   int whole[6];
   vtkInformation* info = inputVector[0]->GetInformationObject(0);
-  if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  const int* given = this->WholeExtent;
+  if (given[0] <= given[1] && given[2] <= given[3] && given[4] <= given[5])
+  {
+    std::copy(given, given + 6, whole);
+  }
+  else if (info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
   {
     info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
   }

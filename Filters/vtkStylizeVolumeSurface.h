@@ -66,6 +66,18 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The extent of the whole image, in samples, when the input is one piece of it (a process's
+   * piece in parallel, given as data without the pipeline's WHOLE_EXTENT): the opaque region is
+   * closed only at this extent's faces, not at the piece's own, where the next piece goes on.
+   * An empty extent (the default, min above max) takes the pipeline's WHOLE_EXTENT, or the
+   * image's own extent.
+   */
+  vtkSetVector6Macro(WholeExtent, int);
+  vtkGetVector6Macro(WholeExtent, int);
+  ///@}
+
+  ///@{
   /** The component of the scalar array (as the volume's first independent component). Range
    * [0, 3], default 0. */
   vtkSetClampMacro(Component, int, 0, 3);
@@ -111,6 +123,7 @@ protected:
   vtkPiecewiseFunction* ScalarOpacity = nullptr;
   double OpacityThreshold = 0.1;
   int Component = 0;
+  int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
   std::vector<double> IsoValues;
 
 private:

@@ -325,10 +325,11 @@ void vtkStylizeStylePass::Render(const vtkRenderState* original)
   vtkStylizeVolumeSurfaces& volumes = this->Internals->Volumes;
   const double threshold =
     std::isfinite(this->VolumeOpacityThreshold) ? this->VolumeOpacityThreshold : 0.1;
-  // (behind a compositor, ParaView's ranks, the volumes stay VTK's: not checked there)
-  const vtkRenderState* s =
-    this->StylizeVolumes && !this->DelegatePass && !original->GetRenderer()->GetSelector()
-    ? volumes.Begin(original, threshold)
+  // (behind a compositor, ParaView's, the state reaches each rank's G-buffer pass: each rank
+  // draws the surfaces of its volumes' pieces)
+  const vtkRenderState* s = this->StylizeVolumes && !original->GetRenderer()->GetSelector()
+    ? volumes.Begin(original, threshold, std::isfinite(this->VolumeHaze) ? this->VolumeHaze : 0.0,
+        this->Internals->GBuffer->GetController())
     : original;
   s = this->SeparateAnnotations(s);
   Frame frame;

@@ -186,11 +186,11 @@ public:
    * lighting coefficients, so that the style's zones, edges, patterns, strokes and lines apply
    * to it as to any surface, in rendered frames and vector figures. The surface is recomputed
    * only when the data or the transfer functions change. What the volume holds below the
-   * threshold (a faint haze) is not drawn: lower the threshold to show it. Off, and for a volume
-   * whose STYLIZE_VOLUME key is 0, the volume is drawn by VTK over the stylized picture. Volumes
-   * of composite data or of dependent components (RGBA) are always drawn by VTK, and so are all
-   * volumes when the style stylizes a compositor's picture (a delegate pass: ParaView in
-   * parallel). Default on.
+   * threshold (a faint haze) is not drawn unless VolumeHaze is above 0, or lower the threshold.
+   * Off, and for a volume whose STYLIZE_VOLUME key is 0, the volume is drawn by VTK over the
+   * stylized picture. Volumes of composite data or of dependent components (RGBA) are always
+   * drawn by VTK. Behind a compositor (a delegate pass: ParaView's view) each process draws the
+   * surfaces of its own pieces of the volumes. Default on.
    */
   vtkSetMacro(StylizeVolumes, bool);
   vtkGetMacro(StylizeVolumes, bool);
@@ -206,6 +206,21 @@ public:
    */
   vtkSetClampMacro(VolumeOpacityThreshold, double, 0.001, 1.0);
   vtkGetMacro(VolumeOpacityThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * The opacity of a stylized volume's haze (StylizeVolumes): what the volume holds below
+   * VolumeOpacityThreshold (soft tissue over a CT's bone, a faint shell of a field). 0 leaves
+   * it out: the volume is its solid surface alone. Above 0, a volume whose opacity function
+   * holds values between a tenth of the threshold and the threshold is also drawn as a
+   * translucent surface of this opacity where its opacity first reaches a tenth of the threshold,
+   * which the style draws in its translucent layers (TranslucentLayers: stylized, over the solid
+   * surface; the line art draws it as its paper, without lines). Not with the isosurface blend
+   * mode. Range [0, 1], default 0.
+   */
+  vtkSetClampMacro(VolumeHaze, double, 0.0, 1.0);
+  vtkGetMacro(VolumeHaze, double);
   ///@}
 
   /**
@@ -708,6 +723,7 @@ protected:
    * drawn after the stylized picture, which must then write its depth. */
   bool HasPlainAnnotations();
   double VolumeOpacityThreshold = 0.1;
+  double VolumeHaze = 0.0;
 
   /**
    * For a figure built after the frame (vtkLineArtPass::ComputeFigureStrokes()): puts the

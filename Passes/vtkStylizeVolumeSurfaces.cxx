@@ -4,10 +4,13 @@
 #include "vtkActor.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkCommunicator.h"
 #include "vtkContourValues.h"
 #include "vtkDataSet.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
@@ -25,6 +28,7 @@
 #include "vtkWeakPointer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -37,6 +41,12 @@ struct vtkStylizeVolumeSurfaces::Proxy
   vtkNew<vtkMatrix4x4> Matrix;
   vtkNew<vtkColorTransferFunction> Gray; // a gray transfer function as colours
   std::string Selected;                  // the input array last selected
+  // The haze: a translucent surface where the opacity reaches a tenth of the threshold.
+  vtkNew<vtkStylizeVolumeSurface> HazeSurface;
+  vtkNew<vtkPolyDataMapper> HazeMapper;
+  vtkNew<vtkActor> HazeActor;
+  std::string HazeSelected;
+  bool Hazy = false; // drawn in this frame
 };
 
 namespace
@@ -117,6 +127,69 @@ vtkDataSet* UpdatedInput(vtkAbstractVolumeMapper* mapper)
   }
   return mapper->GetDataSetInput();
 }
+
+/**
+ * Per vtkVolume among `props`, in order, the extent of the whole image it draws a piece of: over
+ * several processes, the union of the processes' image extents (each process holds the same
+ * volumes, each drawing its piece: ParaView's ranks); otherwise, or for data that is not an
+ * image, or when the processes do not hold the same number of volumes, an empty extent (the
+ * surface filter then takes the pipeline's or the image's own).
+ */
+std::vector<std::array<int, 6>> WholeExtents(
+  const std::vector<vtkProp*>& props, vtkMultiProcessController* c)
+{
+  std::vector<std::array<int, 6>> wholes;
+  for (vtkProp* prop : props)
+  {
+    if (auto* volume = vtkVolume::SafeDownCast(prop))
+    {
+      std::array<int, 6> e = { VTK_INT_MAX, VTK_INT_MIN, VTK_INT_MAX, VTK_INT_MIN, VTK_INT_MAX,
+        VTK_INT_MIN };
+      auto* image = volume->GetMapper()
+        ? vtkImageData::SafeDownCast(UpdatedInput(volume->GetMapper()))
+        : nullptr;
+      if (image && image->GetNumberOfPoints() > 0)
+      {
+        image->GetExtent(e.data());
+      }
+      wholes.push_back(e);
+    }
+  }
+  const int count = static_cast<int>(wholes.size());
+  int least = count, most = count;
+  if (c && c->GetNumberOfProcesses() > 1)
+  {
+    c->AllReduce(&count, &least, 1, vtkCommunicator::MIN_OP);
+    c->AllReduce(&count, &most, 1, vtkCommunicator::MAX_OP);
+  }
+  if (!c || c->GetNumberOfProcesses() < 2 || least != most || count == 0)
+  {
+    wholes.assign(wholes.size(), { 0, -1, 0, -1, 0, -1 });
+    return wholes;
+  }
+  // lows (minimum) and negated highs (minimum) in one reduction
+  std::vector<int> local(6 * count), all(6 * count);
+  for (int i = 0; i < count; ++i)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      local[6 * i + a] = wholes[i][2 * a];
+      local[6 * i + 3 + a] =
+        wholes[i][2 * a + 1] == VTK_INT_MIN ? VTK_INT_MAX : -wholes[i][2 * a + 1];
+    }
+  }
+  c->AllReduce(
+    local.data(), all.data(), static_cast<vtkIdType>(all.size()), vtkCommunicator::MIN_OP);
+  for (int i = 0; i < count; ++i)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      wholes[i][2 * a] = all[6 * i + a];
+      wholes[i][2 * a + 1] = all[6 * i + 3 + a] == VTK_INT_MAX ? VTK_INT_MIN : -all[6 * i + 3 + a];
+    }
+  }
+  return wholes;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -160,8 +233,38 @@ bool vtkStylizeVolumeSurfaces::Drawable(vtkVolume* volume)
 }
 
 //------------------------------------------------------------------------------
+bool vtkStylizeVolumeSurfaces::HasHaze(vtkPiecewiseFunction* f, double threshold)
+{
+  if (!f || f->GetSize() == 0)
+  {
+    return false;
+  }
+  const double low = 0.1 * threshold;
+  auto hazy = [&](double o) { return o >= low && o < threshold; };
+  double range[2];
+  f->GetRange(range);
+  for (int i = 0; i <= 1024; ++i)
+  {
+    if (hazy(f->GetValue(range[0] + (range[1] - range[0]) * i / 1024.0)))
+    {
+      return true;
+    }
+  }
+  for (int i = 0; i < f->GetSize(); ++i)
+  {
+    double node[4];
+    f->GetNodeValue(i, node);
+    if (hazy(node[1]))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
-  vtkVolume* volume, double threshold)
+  vtkVolume* volume, double threshold, double haze, const int whole[6])
 {
   std::unique_ptr<Proxy>& slot = this->Proxies[volume];
   if (!slot || slot->Volume.GetPointer() != volume)
@@ -175,6 +278,13 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
     slot->Actor->SetMapper(slot->Mapper);
     slot->Actor->SetUserMatrix(slot->Matrix);
     slot->Actor->PickableOff();
+    slot->HazeMapper->SetInputConnection(slot->HazeSurface->GetOutputPort());
+    slot->HazeMapper->ScalarVisibilityOn();
+    slot->HazeMapper->SetScalarModeToUsePointData();
+    slot->HazeMapper->UseLookupTableScalarRangeOn();
+    slot->HazeActor->SetMapper(slot->HazeMapper);
+    slot->HazeActor->SetUserMatrix(slot->Matrix);
+    slot->HazeActor->PickableOff();
   }
   Proxy& p = *slot;
   vtkAbstractVolumeMapper* mapper = volume->GetMapper();
@@ -194,6 +304,7 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
     p.Surface->SetInputData(data);
   }
   SelectArray(mapper, data, p.Surface, p.Selected);
+  p.Surface->SetWholeExtent(const_cast<int*>(whole));
   p.Surface->SetScalarOpacity(property->GetScalarOpacity(0));
   p.Surface->SetOpacityThreshold(VolumeThreshold(volume, threshold));
   std::vector<double> iso;
@@ -242,25 +353,68 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
     p.Mapper->SetClippingPlanes(mapper->GetClippingPlanes());
   }
   p.Surface->Update();
+
+  // The haze (not with the volume's own isovalues: those are its surfaces).
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  const double solid = VolumeThreshold(volume, threshold);
+  p.Hazy = haze > 0.0 && iso.empty() && HasHaze(opacity, solid);
+  if (p.Hazy)
+  {
+    if (mapper->GetNumberOfInputConnections(0) > 0)
+    {
+      if (p.HazeSurface->GetInputConnection(0, 0) != mapper->GetInputConnection(0, 0))
+      {
+        p.HazeSurface->SetInputConnection(mapper->GetInputConnection(0, 0));
+      }
+    }
+    else if (p.HazeSurface->GetInputDataObject(0, 0) != data)
+    {
+      p.HazeSurface->SetInputData(data);
+    }
+    SelectArray(mapper, data, p.HazeSurface, p.HazeSelected);
+    p.HazeSurface->SetWholeExtent(const_cast<int*>(whole));
+    p.HazeSurface->SetScalarOpacity(opacity);
+    p.HazeSurface->SetOpacityThreshold(0.1 * solid);
+    p.HazeSurface->SetIsoValues({});
+    p.HazeMapper->SetLookupTable(p.Mapper->GetLookupTable());
+    p.HazeActor->GetProperty()->DeepCopy(look);
+    p.HazeActor->GetProperty()->SetOpacity(haze);
+    if (p.HazeMapper->GetClippingPlanes() != mapper->GetClippingPlanes())
+    {
+      p.HazeMapper->SetClippingPlanes(mapper->GetClippingPlanes());
+    }
+    p.HazeSurface->Update();
+  }
   return &p;
 }
 
 //------------------------------------------------------------------------------
-const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, double threshold)
+const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(
+  const vtkRenderState* s, double threshold, double haze, vtkMultiProcessController* controller)
 {
   this->End();
   this->Count = 0;
+  this->Hazes.clear();
   this->Props.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
+  const std::vector<std::array<int, 6>> wholes = WholeExtents(this->Props, controller);
+  size_t v = 0; // the volumes' index in `wholes`
   for (vtkProp*& prop : this->Props)
   {
     auto* volume = vtkVolume::SafeDownCast(prop);
+    const int* whole = volume ? wholes[v++].data() : nullptr;
     if (Drawable(volume))
     {
-      Proxy* p = this->Update(volume, threshold);
+      Proxy* p = this->Update(volume, threshold, haze, whole);
       prop = p->Actor;
       this->Active.push_back(p->Actor);
+      if (p->Hazy)
+      {
+        this->Hazes.push_back(p->HazeActor);
+      }
     }
   }
+  // (the haze surfaces after the props: translucent actors, drawn in the translucent layers)
+  this->Props.insert(this->Props.end(), this->Hazes.begin(), this->Hazes.end());
   // Volumes gone from the scene free their surfaces.
   for (auto it = this->Proxies.begin(); it != this->Proxies.end();)
   {
@@ -278,6 +432,8 @@ const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, d
   this->State->SetPropArrayAndCount(this->Props.data(), static_cast<int>(this->Props.size()));
   this->State->SetFrameBuffer(s->GetFrameBuffer());
   this->State->SetRequiredKeys(s->GetRequiredKeys());
+  this->Active.insert(this->Active.end(), this->Hazes.begin(), this->Hazes.end());
+  this->Hazes.clear();
   for (vtkActor* actor : this->Active)
   {
     ren->GetViewProps()->AddItem(actor);
@@ -302,6 +458,11 @@ void vtkStylizeVolumeSurfaces::AddToRenderer(vtkRenderer* ren)
     {
       props->AddItem(entry.second->Actor);
       this->Active.push_back(entry.second->Actor);
+      if (entry.second->Hazy)
+      {
+        props->AddItem(entry.second->HazeActor);
+        this->Active.push_back(entry.second->HazeActor);
+      }
     }
   }
   this->Renderer = this->Active.empty() ? nullptr : ren;
@@ -334,5 +495,6 @@ void vtkStylizeVolumeSurfaces::ReleaseGraphicsResources(vtkWindow* w)
   for (auto& entry : this->Proxies)
   {
     entry.second->Actor->ReleaseGraphicsResources(w);
+    entry.second->HazeActor->ReleaseGraphicsResources(w);
   }
 }

@@ -11,6 +11,11 @@
  * with each such volume replaced by its actor and adds the actors to the renderer's props (the
  * line art and figures read them there); End() takes them out again.
  *
+ * With a haze opacity above 0, a volume whose opacity function holds values between a tenth of
+ * the threshold and the threshold (a faint material around the solid one: skin over a CT's bone)
+ * also gets a translucent surface of that opacity where its opacity first reaches a tenth of the
+ * threshold: a translucent actor, which the style draws in its translucent layers.
+ *
  * Volumes the class cannot draw so are left to VTK: data that is not one vtkDataSet (a
  * composite volume), dependent components (RGBA volumes), no scalars.
  */
@@ -24,6 +29,8 @@
 #include <vector> // for std::vector
 
 class vtkActor;
+class vtkMultiProcessController;
+class vtkPiecewiseFunction;
 class vtkProp;
 class vtkRenderState;
 class vtkRenderer;
@@ -39,9 +46,13 @@ public:
   /**
    * The state to render: `s` itself when no volume is drawn as a surface, otherwise a state
    * whose props have the volumes replaced (valid until End()). `threshold`: the opacity
-   * threshold of volumes without their own (VOLUME_OPACITY_THRESHOLD key).
+   * threshold of volumes without their own (VOLUME_OPACITY_THRESHOLD key); `haze`, the haze's
+   * opacity (0: none); `controller`, over several processes that each draw their pieces of the
+   * same volumes (a compositor's ranks): the processes' image extents are combined so that each
+   * piece's surface is closed at the whole image's faces only (all processes call Begin()).
    */
-  const vtkRenderState* Begin(const vtkRenderState* s, double threshold);
+  const vtkRenderState* Begin(const vtkRenderState* s, double threshold, double haze = 0.0,
+    vtkMultiProcessController* controller = nullptr);
 
   /**
    * Adds the surfaces of the volumes last drawn as surfaces to `ren`'s props, without updating
@@ -61,13 +72,20 @@ public:
   /** Whether `volume` is drawn as a surface (its data, components and key allow it). */
   static bool Drawable(vtkVolume* volume);
 
+  /**
+   * Whether the opacity function `f` holds a haze below `threshold`: values at least a tenth of
+   * it and below it, anywhere in its range (sampled at 1024 points and at its nodes).
+   */
+  static bool HasHaze(vtkPiecewiseFunction* f, double threshold);
+
 private:
   struct Proxy;
-  Proxy* Update(vtkVolume* volume, double threshold);
+  Proxy* Update(vtkVolume* volume, double threshold, double haze, const int whole[6]);
 
   std::map<vtkVolume*, std::unique_ptr<Proxy>> Proxies;
   std::vector<vtkProp*> Props;
   std::vector<vtkActor*> Active;
+  std::vector<vtkActor*> Hazes; // (Begin()'s haze actors, then in Active)
   std::unique_ptr<vtkRenderState> State;
   vtkRenderer* Renderer = nullptr;
   int Count = 0;

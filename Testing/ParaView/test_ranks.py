@@ -1,12 +1,12 @@
 #!/usr/bin/python3
 """paraview.ranks: the ParaView tests' scenes on 1 and on 2 ranks, rendered once for every test
 that compares them (the fixture paraview_ranks: paraview.mpi, paraview.realdata_mpi,
-paraview.translucent, paraview.client_server).
+paraview.translucent, paraview.volumes, paraview.client_server).
 
     test_ranks.py PVBATCH_WRAPPER DATA_DIR OUTPUT_DIR
 
 Runs render_ranks.py (the Wavelet contour, the real-data bunny and vessel, the translucent bunny
-around the gear) under `mpiexec -n 1` and `mpiexec -n 2`, one pvbatch per rank count, into
+around the gear, the skull CT as a volume) under `mpiexec -n 1` and `mpiexec -n 2`, one pvbatch per rank count, into
 OUTPUT_DIR/ranks1/ and ranks2/ with pvbatch's output in ranks1.log and ranks2.log. Fails unless
 every script ran to its end on both (the comparisons are the other tests').
 
@@ -55,8 +55,8 @@ for ranks in (1, 2):
     finished = result.stdout.count("\nrendered")
     print("%d rank(s): %s in %.0f s, exit %d" % (ranks, ", ".join(sections),
                                                 time.monotonic() - start, result.returncode))
-    if result.returncode != 0 or finished != 3:
-        failures.append("%d rank(s): %s exited with %d after %d of 3 scripts:\n%s" % (
+    if result.returncode != 0 or finished != 4:
+        failures.append("%d rank(s): %s exited with %d after %d of 4 scripts:\n%s" % (
             ranks, " ".join(command[:5]), result.returncode, finished,
             (result.stdout + result.stderr)[-3000:]))
         continue

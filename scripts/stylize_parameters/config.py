@@ -97,9 +97,6 @@ XML_SKIP = {("vtkStylizeLightingPass", "Model"): "set by the view",
             ("vtkSketchPass", "SceneBounds"): "set by the view (the data's bounds on all ranks)",
             ("vtkPixelArtPass", "InteractiveImageReduction"):
                 "no effect: the pixel art renders its scene at its art resolution already",
-            **{(c, n): "no effect in ParaView's view (a compositor's picture)"
-               for c in ("vtkComicPass", "vtkPixelArtPass", "vtkSketchPass", "vtkLineArtPass")
-               for n in ("StylizeVolumes", "VolumeOpacityThreshold")},
             **{(c, "PlainAnnotations"): "always on in ParaView's view on one process (its data "
                "axes grid drawn as ParaView draws it); with several ranks no effect"
                for c in ("vtkComicPass", "vtkPixelArtPass", "vtkSketchPass", "vtkLineArtPass")},

@@ -5,7 +5,8 @@
 // it meets the image's edge; isovalues replace the crossings; an opacity that is solid
 // everywhere gives the outer faces and one solid nowhere nothing; the same field as an
 // unstructured grid (vtkContourFilter's path) gives the sphere; cell scalars are moved to the
-// points; a crossing is found to 1e-9 and a threshold of NaN or an empty input give nothing.
+// points; a crossing is found to 1e-9 and a threshold of NaN or an empty input give nothing; a
+// piece of the image is closed at its cut unless the whole image's extent is given.
 #include "vtkStylizeTestChecks.h"
 #include "vtkStylizeVolumeSurface.h"
 
@@ -21,6 +22,7 @@
 #include "vtkPolygon.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -194,6 +196,39 @@ int TestVolumeSurface(int, char*[])
     STYLIZE_CHECK(s.Outward < 0.001 && s.Agreeing > 0.999, "shell normals: outward %g, agreeing %g",
       s.Outward, s.Agreeing);
     STYLIZE_CHECK(s.OnFaces > 6 * (N - 2) * (N - 2) / 2, "box faces: %lld points",
+      static_cast<long long>(s.OnFaces));
+  }
+  // A piece of the image (x <= 0, a process's half, given as data): closed at its own face x = 0
+  // unless the whole image's extent says that face is a cut, where the next piece goes on.
+  {
+    vtkNew<vtkImageData> piece;
+    piece->ShallowCopy(field);
+    piece->Crop(std::array<int, 6>{ 0, N / 2, 0, N - 1, 0, N - 1 }.data());
+    auto down = Ramp(1.0, 0.0);
+    auto onCut = [&](vtkPolyData* pd)
+    {
+      vtkIdType count = 0;
+      for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+      {
+        double p[3];
+        pd->GetPoint(i, p);
+        count += p[0] > 1e-6 ? 1 : 0; // (a cap lies between the cut and the padding sample)
+      }
+      return count;
+    };
+    const vtkIdType closed = onCut(Surface(piece, down, 0.5));
+    vtkNew<vtkStylizeVolumeSurface> surface;
+    surface->SetInputData(piece);
+    surface->SetScalarOpacity(down);
+    surface->SetOpacityThreshold(0.5);
+    surface->SetWholeExtent(0, N - 1, 0, N - 1, 0, N - 1);
+    surface->Update();
+    const vtkIdType open = onCut(surface->GetOutput());
+    Shape s = Measure(surface->GetOutput(), 0.5);
+    STYLIZE_CHECK(
+      closed > (N - 2) * (N - 2) / 2 && open == 0 && s.OnFaces > 0 && s.MaxRadiusError < 0.25 * h,
+      "piece: %lld points on the cut closed, %lld with the whole extent, %lld on the box's faces",
+      static_cast<long long>(closed), static_cast<long long>(open),
       static_cast<long long>(s.OnFaces));
   }
   // Isovalues instead of the crossings.

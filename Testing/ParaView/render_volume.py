@@ -1,0 +1,76 @@
+"""Renders a CT volume in the stylized view (ParaView's Volume representation), for
+test_volumes.py, on one rank or split across several.
+
+    mpiexec -n N pvbatch-stylize render_volume.py OUTPUT_PREFIX DATA_DIR
+
+The real-data set's skull.vti (a CT of a skull) read by ParaView's XML image reader, which reads
+one piece of the extent per rank, shown as a Volume with the transfer functions of
+realdata.volumes' skull (Testing/RealData/volumes.py), 400x300. Writes OUTPUT_PREFIX-<name>.png:
+  vtk     Style None: the volume as ParaView draws it
+  bare    Style None without the volume (the volume's region is where the two differ)
+  white, black   the volume alone as ParaView draws it over white and over black (its opacity)
+  comic, pixel, sketch, lines   each style at its defaults (pixel art: Palette 16)
+  haze    the comic with VolumeHaze 0.5 (the tissue below the opacity threshold as a translucent
+          surface)
+and prints "pieces K" (how many ranks hold part of the volume).
+"""
+import sys
+
+import paraview.simple as simple
+from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction,
+                             GetOpacityTransferFunction, Render, SaveScreenshot, Show,
+                             XMLImageDataReader)
+from stylize_pv_scene import make_view
+
+prefix, data = sys.argv[1], sys.argv[2]
+SIZE = [400, 300]
+view = CreateView("StylizeView")
+make_view(view, SIZE)
+reader = XMLImageDataReader(FileName=[data + "/skull.vti"])
+reader.UpdatePipeline()
+name = reader.PointData.keys()[0]
+display = Show(reader, view)
+display.SetRepresentationType("Volume")
+ColorBy(display, ("POINTS", name))
+lut = GetColorTransferFunction(name)
+lut.AutomaticRescaleRangeMode = "Never"
+lut.RGBPoints = [0.0, 0.2, 0.1, 0.05, 1.5, 0.9, 0.5, 0.4, 3.0, 1.0, 0.95, 0.85, 5.5, 1.0, 1.0, 1.0]
+opacity = GetOpacityTransferFunction(name)
+opacity.Points = [0.0, 0.0, 0.5, 0.0, 1.0, 0.0, 0.5, 0.0, 2.0, 0.05, 0.5, 0.0,
+                  2.9, 0.6, 0.5, 0.0, 5.5, 0.9, 0.5, 0.0]
+display.Shade = 1
+# how many ranks read part of the volume
+ids = (getattr(simple, "GenerateProcessIds", None) or simple.ProcessIdScalars)(Input=reader)
+ids.UpdatePipeline()
+array = ids.PointData.GetArray("ProcessId")
+low, high = array.GetRange() if array else (0, 0)
+print("pieces %d" % (int(high - low) + 1))
+view.CameraFocalPoint = [0.0, 0.0, 0.0]
+view.CameraPosition = [0.0, -1.0, 0.15]
+view.CameraViewUp = [0.0, 0.0, 1.0]
+view.ResetCamera()
+view.GetActiveCamera().Dolly(1.5)  # (the skull fills most of the view's height)
+
+
+def shot(label):
+    Render(view)
+    SaveScreenshot("%s-%s.png" % (prefix, label), view, ImageResolution=SIZE)
+
+
+view.PixelArtPalette = 2
+for style, label in enumerate(["vtk", "comic", "pixel", "sketch", "lines"]):
+    view.Style = style
+    shot(label)
+view.Style = 1
+view.ComicVolumeHaze = 0.5
+shot("haze")
+view.ComicVolumeHaze = 0.0
+view.Style = 0
+background = list(view.Background)
+for label, color in (("white", [1.0, 1.0, 1.0]), ("black", [0.0, 0.0, 0.0])):
+    view.Background = color
+    shot(label)
+view.Background = background
+display.Visibility = 0
+shot("bare")
+print("rendered")

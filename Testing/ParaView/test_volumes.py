@@ -1,0 +1,82 @@
+#!/usr/bin/python3
+"""paraview.volumes: a volume in ParaView's Volume representation drawn in every style, on 1 rank
+and read in pieces on 2 (issue 55).
+
+    test_volumes.py RANKS_DIR
+
+The renders are paraview.ranks' (render_volume.py inside render_ranks.py: the real-data set's CT
+of a skull, 400x300). On 1 rank, per style, the measures of realdata.volumes
+(stylize_volume_measures.py) in the volume's region (where ParaView's picture with the volume
+differs from the one without it): the share of pixels left exactly as ParaView draws them (at
+most 0.2), pixel art's pixels in Palette 16, its outline ink or the view's background (1), the
+line art's recall of the volume's outline (at least 0.9, within 2 px of where the volume's own
+opacity is at least 0.5), and the sketch's tone correlation with ParaView's picture (printed).
+With VolumeHaze 0.5 the comic must differ from the comic without it (the tissue below the
+threshold drawn). On 2 ranks the volume is read in two pieces (checked) and each style's picture
+must match the 1-rank one: at most 0.5% of the pixels more than 16 levels apart (measured 0.07%
+to 0.22%; 0.31% to 0.96% while each piece's surface was closed at its own faces, the cut drawn
+as a line across the skull).
+Prints a table (the images are in RANKS_DIR).
+"""
+import os
+import sys
+
+import numpy as np
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, here)
+sys.path.insert(0, os.path.join(here, "..", "Python"))
+from pvbatch_script import ranks_run  # noqa: E402
+from stylize_png import png_array  # noqa: E402
+from stylize_volume_measures import measure  # noqa: E402
+
+ranks_dir = sys.argv[1]
+failures = []
+# (the sketch's tone correlation is printed, not checked: under ParaView's light kit it measures
+# 0.80 here, at the goal realdata.volumes checks in VTK's own scene of this CT; the surface has
+# the colour of its one value, where ParaView's picture brightens with the bone's density)
+GOALS = {"plain": (0.2, False), "palette": (1.0, True), "recall": (0.9, True)}
+
+one, _ = ranks_run(ranks_dir, 1, "volume")
+two, log2 = ranks_run(ranks_dir, 2, "volume")
+pieces = [line.split()[1] for line in log2.splitlines() if line.startswith("pieces ")]
+if pieces != ["2"]:
+    failures.append("2 ranks: the volume is not read in 2 pieces: %s" % pieces)
+
+
+def image(prefix, name):
+    return png_array("%s-%s.png" % (prefix, name))[..., :3]
+
+
+plain, bare = image(one, "vtk"), image(one, "bare")
+region = np.abs(plain.astype(int) - bare.astype(int)).sum(axis=2) > 24
+white, black = image(one, "white"), image(one, "black")
+alpha = 1.0 - (white.astype(float) - black.astype(float)).mean(axis=2) / 255.0
+solid = region & (alpha >= 0.5)
+if region.sum() < 1000:
+    failures.append("the volume covers %d pixels of ParaView's picture" % region.sum())
+print("| style | region (px) | left as ParaView | palette | tone corr. | outline recall | "
+      "2 ranks: pixels > 16 levels |")
+print("|---|---:|---:|---:|---:|---:|---:|")
+for style in ("comic", "pixel", "sketch", "lines"):
+    styled = image(one, style)
+    m = measure(style, styled, plain, region, solid, bare[0, 0])
+    split = image(two, style)
+    far = float(np.mean(np.abs(styled.astype(int) - split.astype(int)).max(axis=2) > 16))
+    print("| %s | %d | " % (style, region.sum()) + " | ".join(
+        "%.3f" % m[k] if k in m else "" for k in ("plain", "palette", "tone", "recall")) +
+        " | %.4f |" % far)
+    for key, (goal, above) in GOALS.items():
+        if key in m and (m[key] < goal if above else m[key] > goal):
+            failures.append("%s: %s %.3f, goal %s %.2f" % (style, key, m[key],
+                                                          ">=" if above else "<=", goal))
+    if far > 0.005:
+        failures.append("%s: 2 ranks differ from 1 at %.2f%% of the pixels" % (style, 100 * far))
+haze = image(one, "haze")
+drawn = float(np.mean(np.abs(haze.astype(int) - image(one, "comic").astype(int)).sum(axis=2)
+                      > 24))
+print("comic with VolumeHaze 0.5: %.3f of the picture differs from the comic without it" % drawn)
+if drawn < 0.01:
+    failures.append("VolumeHaze 0.5 changed %.4f of the comic's picture" % drawn)
+print("\n".join("FAIL: " + f for f in failures) or "PASS")
+sys.exit(1 if failures else 0)
