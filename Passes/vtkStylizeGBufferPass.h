@@ -297,7 +297,7 @@ public:
   ///@{
   /**
    * Whether Render() leaves out the annotations (vtkStylizeStylePass::IsAnnotation(): axes and
-   * 3D text), so that a style processing this pass's picture (ParaView's view on one process)
+   * 3D text), so that a style processing this pass's picture (ParaView's view, each rank's pass)
    * draws them plain over its own (vtkStylizeStylePass::PlainAnnotations). A hardware selection
    * (picking) draws them. Default off.
    */

@@ -244,9 +244,8 @@ public:
    * (line art draws no lines on them, pixel art would pixelate them to blobs). Off stylizes them
    * with the rest of the scene. Applies when the style renders the geometry itself, and behind a
    * compositor whose per-process G-buffer pass leaves the annotations out
-   * (vtkStylizeGBufferPass::LeaveOutAnnotations: ParaView's view on one process, its data axes
-   * grid); with several processes they are composited into the picture and stylized with it.
-   * Default on.
+   * (vtkStylizeGBufferPass::LeaveOutAnnotations: ParaView's view, its data axes grid, on one
+   * process and on several, where the first process's annotations are drawn). Default on.
    */
   vtkSetMacro(PlainAnnotations, bool);
   vtkGetMacro(PlainAnnotations, bool);

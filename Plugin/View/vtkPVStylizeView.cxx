@@ -395,10 +395,10 @@ void vtkPVStylizeView::ConfigurePasses()
     // of its own props and the style composites the layers by depth across the ranks.
     this->RankGBuffer->SetDrawTranslucent(style->GetTranslucentLayers() == 0);
     const bool severalRanks = controller && controller->GetNumberOfProcesses() > 1;
-    // Annotations (the data axes grid, 3D text) drawn plain over the style's picture: on one
-    // process, where the style's props are the whole scene's (on several, each rank's axes are
-    // composited into the picture, and stylized with it).
-    this->RankGBuffer->SetLeaveOutAnnotations(style->GetPlainAnnotations() && !severalRanks);
+    // Annotations (the data axes grid, 3D text) drawn plain over the style's picture: each rank's
+    // G-buffer leaves them out of the composited picture and the style draws rank 0's over it
+    // (ParaView gives every rank's grid the whole data's bounds).
+    this->RankGBuffer->SetLeaveOutAnnotations(style->GetPlainAnnotations());
     if (severalRanks && style->GetTranslucentLayers() == 0 && this->DataNeedsOrderedCompositing &&
       !this->WarnedUnlayered)
     {

@@ -12,6 +12,7 @@ realdata.volumes' skull (Testing/RealData/volumes.py), 400x300. Writes OUTPUT_PR
   comic, pixel, sketch, lines   each style at its defaults (pixel art: Palette 16)
   haze    the comic with VolumeHaze 0.5 (the tissue below the opacity threshold as a translucent
           surface)
+  grid-<style>   the data axes grid on: vtk (Style None) and each style
 and prints "pieces K" (how many ranks hold part of the volume).
 """
 import sys
@@ -71,6 +72,13 @@ for label, color in (("white", [1.0, 1.0, 1.0]), ("black", [0.0, 0.0, 0.0])):
     view.Background = color
     shot(label)
 view.Background = background
+# the data axes grid, plain (Style None) and in each style, and the plain picture without it
+display.DataAxesGrid.GridAxesVisibility = 1
+for style, label in enumerate(["vtk", "comic", "pixel", "sketch", "lines"]):
+    view.Style = style
+    shot("grid-" + label)
+display.DataAxesGrid.GridAxesVisibility = 0
+view.Style = 0
 display.Visibility = 0
 shot("bare")
 print("rendered")

@@ -35,7 +35,7 @@ from paraview.vtk.vtkIOImage import vtkPNGReader
 from stylize_pv_scene import BACKGROUND, check, failures, make_view
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
-from stylize_png import near  # noqa: E402
+from stylize_png import near, overlay_match  # noqa: E402
 
 out, data = sys.argv[1], sys.argv[2]
 extra = sys.argv[3:]
@@ -178,13 +178,11 @@ display.DataAxesGrid.GridAxesVisibility = 0
 # (the styles' outlines reach past the surface, along the grid's edges)
 on_surface = numpy.abs(no_grid - numpy.array(BACKGROUND)).max(axis=2) > 2.5 / 255.0
 off_surface = ~near(on_surface, 4)
-axes = (numpy.abs(grid["plain"] - no_grid).sum(axis=2) > 24 / 255.0) & off_surface
 for label in ("comic", "pixel", "sketch", "lines"):
-    drawn = (numpy.abs(grid[label] - no_grid).sum(axis=2) > 24 / 255.0) & off_surface
-    recall = float(near(drawn, 1)[axes].mean())
-    precision = float(near(axes, 1)[drawn].mean()) if drawn.any() else 0.0
+    recall, precision, count = overlay_match(grid["plain"], no_grid, grid[label], off_surface,
+                                             24 / 255.0)
     print("plate    %-7s data axes grid: recall %.3f, precision %.3f (%d pixels)"
-          % (label, recall, precision, int(axes.sum())), flush=True)
+          % (label, recall, precision, count), flush=True)
     check(recall >= 0.9 and precision >= 0.9, "plate %s: data axes grid where ParaView draws it: "
           "recall %.3f, precision %.3f >= 0.9" % (label, recall, precision))
 Hide(plate, view)

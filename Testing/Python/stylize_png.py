@@ -57,3 +57,18 @@ def near(mask, radius):
         for dx in range(-radius, radius + 1):
             out |= numpy.roll(numpy.roll(mask, dy, axis=0), dx, axis=1)
     return out
+
+
+def overlay_match(plain, bare, styled, where, level):
+    """Whether a style draws an overlay (axes, text) where the plain picture draws it: the
+    overlay's pixels are where `plain` (with it) differs from `bare` (without it) by more than
+    `level` summed over the channels, within the boolean mask `where`; what the style draws of
+    it, where `styled` differs from `bare` so. Returns (recall: the share of the overlay's pixels
+    within 1 px of the style's, precision: the share of the style's within 1 px of the overlay's,
+    the overlay's pixel count)."""
+    import numpy
+    overlay = (numpy.abs(plain - bare).sum(axis=2) > level) & where
+    drawn = (numpy.abs(styled - bare).sum(axis=2) > level) & where
+    recall = float(near(drawn, 1)[overlay].mean()) if overlay.any() else 0.0
+    precision = float(near(overlay, 1)[drawn].mean()) if drawn.any() else 0.0
+    return recall, precision, int(overlay.sum())

@@ -31,7 +31,7 @@ Writes OUTDIR/volume-SCENE-STYLE.png and prints markdown tables; --check fails t
 goals.
 
 usage: volumes.py DATA OUTDIR [--check] [--bench] [--primitives] [--scenes skull,liver,field]
-                  [--size WxH] [--haze OPACITY]
+                  [--size WxH] [--haze OPACITY] [--figures]
 """
 import argparse
 import os
@@ -43,7 +43,7 @@ import numpy as np
 import vtk
 
 import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401 (the GPU ray caster's factory)
-from vtkstylize import vtkComicPass, vtkLineArtPass, vtkPixelArtPass, vtkSketchPass
+from vtkstylize import save_figure, vtkComicPass, vtkLineArtPass, vtkPixelArtPass, vtkSketchPass
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
 from stylize_png import luminance, near, window_array  # noqa: E402
@@ -203,7 +203,7 @@ SCENES = {"skull": skull, "liver": liver, "field": field}
 
 
 def render(builder, data, style, size, with_volume=True, times=0, only_volume=False,
-           background=1.0, only=None, haze=0.0):
+           background=1.0, only=None, haze=0.0, figure=None):
     """The scene's picture (H x W x 3 uint8) drawn by VTK (style None) or a style; with `times`,
     also the median of that many more frames' seconds; `only`: the one tagged prop drawn (no
     volume)."""
@@ -247,6 +247,8 @@ def render(builder, data, style, size, with_volume=True, times=0, only_volume=Fa
     window.Render()
     pixels = window_array(window)
     surfaces = style_pass.GetNumberOfVolumeSurfaces() if style_pass else 0
+    if figure:
+        save_figure(window, figure)
     seconds = []  # (after the picture: each frame turns the camera a little)
     for _ in range(times):
         camera.Azimuth(0.5)
@@ -287,6 +289,8 @@ def main():
     parser.add_argument("--bench", action="store_true")
     parser.add_argument("--scenes", default="skull,liver,field")
     parser.add_argument("--size", default="640x480")
+    parser.add_argument("--figures", action="store_true",
+                        help="also write each style's vector figure (OUTDIR/volume-SCENE-STYLE.svg)")
     parser.add_argument("--haze", type=float, default=0.0,
                         help="the styles' VolumeHaze (default 0: the solid surface alone)")
     parser.add_argument("--primitives", action="store_true",
@@ -309,8 +313,10 @@ def main():
         solid = region & (alpha >= 0.5)
         save(plain, os.path.join(args.outdir, "volume-%s-vtk.png" % name))
         for style in STYLES:
+            figure = os.path.join(args.outdir, "volume-%s-%s.svg" % (name, style)) \
+                if args.figures else None
             styled, styled_time, surfaces = render(builder, args.data, style, size, True, times,
-                                                   haze=args.haze)
+                                                   haze=args.haze, figure=figure)
             save(styled, os.path.join(args.outdir, "volume-%s-%s.png" % (name, style)))
             m = measure(style, styled, plain, region, solid)
             m["surfaces"] = surfaces

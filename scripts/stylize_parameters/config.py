@@ -97,8 +97,8 @@ XML_SKIP = {("vtkStylizeLightingPass", "Model"): "set by the view",
             ("vtkSketchPass", "SceneBounds"): "set by the view (the data's bounds on all ranks)",
             ("vtkPixelArtPass", "InteractiveImageReduction"):
                 "no effect: the pixel art renders its scene at its art resolution already",
-            **{(c, "PlainAnnotations"): "always on in ParaView's view on one process (its data "
-               "axes grid drawn as ParaView draws it); with several ranks no effect"
+            **{(c, "PlainAnnotations"): "always on in ParaView's view (its data axes grid "
+               "drawn as ParaView draws it)"
                for c in ("vtkComicPass", "vtkPixelArtPass", "vtkSketchPass", "vtkLineArtPass")},
             **{("vtkPixelArtPass", n): "the pixel art draws no iso-lines"
                for n in ("IsoLines", "IsoLineWidth", "IsoLineSpacing")},
