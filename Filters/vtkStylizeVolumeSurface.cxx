@@ -1,9 +1,11 @@
 #include "vtkStylizeVolumeSurface.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellDataToPointData.h"
+#include "vtkClipPolyData.h"
 #include "vtkContourFilter.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkDoubleArray.h"
@@ -184,6 +186,67 @@ void OrientOutwards(
     turned->InsertNextCell(n, ids.data());
   }
   surface->SetPolys(turned);
+}
+
+/**
+ * Where the opaque region (`opaque`: a scalar value's opacity at least the threshold) meets the
+ * outer faces of a mesh that is not an image (no padding closes it there): those faces, cut along
+ * the isovalues, with their outward normals, so that the region stays closed. The faces carry the
+ * scalar, so they are coloured by the data as VTK's volume shows its boundary.
+ */
+vtkSmartPointer<vtkPolyData> BoundaryCaps(vtkDataSet* data, const std::vector<double>& isovalues,
+  const std::vector<bool>& rising, const double range[2], const std::function<bool(double)>& opaque)
+{
+  // The opaque intervals of the scalar: between a rising crossing and the next falling one,
+  // from the range's start when the first crossing falls, to its end when the last rises.
+  std::vector<std::pair<double, double>> intervals;
+  double from = range[0];
+  bool inside = isovalues.empty() ? opaque(0.5 * (range[0] + range[1])) : !rising[0];
+  for (size_t i = 0; i < isovalues.size(); ++i)
+  {
+    if (rising[i])
+    {
+      from = isovalues[i];
+      inside = true;
+    }
+    else if (inside)
+    {
+      intervals.emplace_back(from, isovalues[i]);
+      inside = false;
+    }
+  }
+  if (inside)
+  {
+    intervals.emplace_back(from, range[1]);
+  }
+  vtkNew<vtkDataSetSurfaceFilter> faces;
+  faces->SetInputData(data);
+  faces->Update();
+  vtkNew<vtkAppendPolyData> append;
+  for (const auto& interval : intervals)
+  {
+    vtkNew<vtkClipPolyData> above;
+    above->SetInputConnection(faces->GetOutputPort());
+    above->SetValue(interval.first);
+    vtkNew<vtkClipPolyData> below;
+    below->SetInputConnection(above->GetOutputPort());
+    below->SetValue(interval.second);
+    below->InsideOutOn();
+    below->Update();
+    vtkNew<vtkPolyData> piece;
+    piece->ShallowCopy(below->GetOutput());
+    append->AddInputData(piece);
+  }
+  if (intervals.empty())
+  {
+    return nullptr;
+  }
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(append->GetOutputPort());
+  normals->SplittingOff();
+  normals->ConsistencyOff(); // (the surface filter's faces point out of the cells)
+  normals->Update();
+  return normals->GetOutput();
 }
 }
 
@@ -382,6 +445,17 @@ int vtkStylizeVolumeSurface::RequestData(
   if (crossings)
   {
     OrientOutwards(result, isovalues, rising);
+  }
+  // Other meshes: closed where the opaque region meets their outer faces.
+  vtkSmartPointer<vtkPolyData> caps =
+    !image && crossings ? BoundaryCaps(data, isovalues, rising, range, opaque) : nullptr;
+  if (caps && caps->GetNumberOfCells() > 0)
+  {
+    vtkNew<vtkAppendPolyData> both;
+    both->AddInputData(result);
+    both->AddInputData(caps);
+    both->Update();
+    result->ShallowCopy(both->GetOutput());
   }
   output->ShallowCopy(result);
   this->UpdateProgress(1.0);

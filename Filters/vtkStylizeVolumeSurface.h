@@ -8,7 +8,9 @@
  * OpacityThreshold, so that the region of samples at least that opaque is closed by them. Where
  * that region reaches the edge of an image's whole extent, the image is padded by one sample of
  * a transparent value so that the region is closed there too (a CT's outer faces, a field's
- * box). With IsoValues set (the volume's isosurface blend mode), those values are used instead.
+ * box); where it reaches the outer faces of any other mesh (an unstructured grid's), those faces,
+ * cut along the isovalues, close it, with the data's scalar on them. With IsoValues set (the
+ * volume's isosurface blend mode), those values are used instead.
  *
  * The output's point normals are the scalar's gradient, pointing out of the opaque region, and
  * its point scalars are the isovalue (the input array's name), for colouring with the volume's

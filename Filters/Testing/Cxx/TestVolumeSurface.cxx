@@ -6,7 +6,8 @@
 // everywhere gives the outer faces and one solid nowhere nothing; the same field as an
 // unstructured grid (vtkContourFilter's path) gives the sphere; cell scalars are moved to the
 // points; a crossing is found to 1e-9 and a threshold of NaN or an empty input give nothing; a
-// piece of the image is closed at its cut unless the whole image's extent is given.
+// piece of the image is closed at its cut unless the whole image's extent is given; an
+// unstructured grid's opaque shell is closed by the grid's outer faces.
 #include "vtkStylizeTestChecks.h"
 #include "vtkStylizeVolumeSurface.h"
 
@@ -265,6 +266,31 @@ int TestVolumeSurface(int, char*[])
     Shape s = Measure(Surface(grid->GetOutput(), up, 0.5), 0.5);
     STYLIZE_CHECK(s.Points > 1000 && s.MaxRadiusError < 0.25 * h && s.Agreeing > 0.99,
       "unstructured: error %g, agreeing %g", s.MaxRadiusError, s.Agreeing);
+    // the shell r > 0.5, closed by the mesh's outer faces (no padding there: its boundary cut
+    // along the isovalue), their normals pointing out of the box
+    auto down = Ramp(1.0, 0.0);
+    auto shell = Surface(grid->GetOutput(), down, 0.5);
+    s = Measure(shell, 0.5);
+    vtkIdType outward = 0, faces = 0;
+    vtkDataArray* n = shell->GetPointData()->GetNormals();
+    for (vtkIdType i = 0; n && i < shell->GetNumberOfPoints(); ++i)
+    {
+      double p[3], m[3];
+      shell->GetPoint(i, p);
+      n->GetTuple(i, m);
+      const int axis = std::abs(p[0]) > std::abs(p[1]) ? (std::abs(p[0]) > std::abs(p[2]) ? 0 : 2)
+                                                       : (std::abs(p[1]) > std::abs(p[2]) ? 1 : 2);
+      if (std::abs(p[axis]) > 0.999 && std::abs(m[axis]) > 0.9)
+      {
+        ++faces;
+        outward += m[axis] * p[axis] > 0.0 ? 1 : 0;
+      }
+    }
+    STYLIZE_CHECK(s.OnFaces > 6 * (N - 2) * (N - 2) / 2 && faces > 0 && outward == faces &&
+        s.MaxRadiusError < 0.25 * h,
+      "unstructured shell: %lld points on the box's faces, %lld of %lld face normals outward",
+      static_cast<long long>(s.OnFaces), static_cast<long long>(outward),
+      static_cast<long long>(faces));
     auto cells = Field(true);
     s = Measure(Surface(cells, up, 0.5), 0.5);
     STYLIZE_CHECK(
