@@ -34,19 +34,20 @@
 
 struct vtkStylizeVolumeSurfaces::Proxy
 {
+  /** A surface of the volume, drawn by its own actor. */
+  struct Part
+  {
+    vtkNew<vtkStylizeVolumeSurface> Surface;
+    vtkNew<vtkPolyDataMapper> Mapper;
+    vtkNew<vtkActor> Actor;
+    std::string Selected; // the input array last selected
+  };
   vtkWeakPointer<vtkVolume> Volume;
-  vtkNew<vtkStylizeVolumeSurface> Surface;
-  vtkNew<vtkPolyDataMapper> Mapper;
-  vtkNew<vtkActor> Actor;
+  Part Solid; // where the opacity reaches the threshold
+  Part Haze;  // translucent, where the opacity reaches a tenth of the threshold
   vtkNew<vtkMatrix4x4> Matrix;
   vtkNew<vtkColorTransferFunction> Gray; // a gray transfer function as colours
-  std::string Selected;                  // the input array last selected
-  // The haze: a translucent surface where the opacity reaches a tenth of the threshold.
-  vtkNew<vtkStylizeVolumeSurface> HazeSurface;
-  vtkNew<vtkPolyDataMapper> HazeMapper;
-  vtkNew<vtkActor> HazeActor;
-  std::string HazeSelected;
-  bool Hazy = false; // drawn in this frame
+  bool Hazy = false;                     // the haze drawn in this frame
 };
 
 namespace
@@ -126,6 +127,31 @@ vtkDataSet* UpdatedInput(vtkAbstractVolumeMapper* mapper)
     mapper->GetInputAlgorithm()->Update();
   }
   return mapper->GetDataSetInput();
+}
+
+/**
+ * Gives `surface` the volume's data (the mapper's input connection, for the pipeline's whole
+ * extent, or its data), its array (`selected`: see SelectArray()), the whole image's extent, the
+ * opacity function and the threshold.
+ */
+void Feed(vtkStylizeVolumeSurface* surface, std::string& selected, vtkAbstractVolumeMapper* mapper,
+  vtkDataSet* data, const int whole[6], vtkPiecewiseFunction* opacity, double threshold)
+{
+  if (mapper->GetNumberOfInputConnections(0) > 0)
+  {
+    if (surface->GetInputConnection(0, 0) != mapper->GetInputConnection(0, 0))
+    {
+      surface->SetInputConnection(mapper->GetInputConnection(0, 0));
+    }
+  }
+  else if (surface->GetInputDataObject(0, 0) != data)
+  {
+    surface->SetInputData(data);
+  }
+  SelectArray(mapper, data, surface, selected);
+  surface->SetWholeExtent(const_cast<int*>(whole));
+  surface->SetScalarOpacity(opacity);
+  surface->SetOpacityThreshold(threshold);
 }
 
 /**
@@ -271,20 +297,17 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
   {
     slot.reset(new Proxy);
     slot->Volume = volume;
-    slot->Mapper->SetInputConnection(slot->Surface->GetOutputPort());
-    slot->Mapper->ScalarVisibilityOn();
-    slot->Mapper->SetScalarModeToUsePointData();
-    slot->Mapper->UseLookupTableScalarRangeOn();
-    slot->Actor->SetMapper(slot->Mapper);
-    slot->Actor->SetUserMatrix(slot->Matrix);
-    slot->Actor->PickableOff();
-    slot->HazeMapper->SetInputConnection(slot->HazeSurface->GetOutputPort());
-    slot->HazeMapper->ScalarVisibilityOn();
-    slot->HazeMapper->SetScalarModeToUsePointData();
-    slot->HazeMapper->UseLookupTableScalarRangeOn();
-    slot->HazeActor->SetMapper(slot->HazeMapper);
-    slot->HazeActor->SetUserMatrix(slot->Matrix);
-    slot->HazeActor->PickableOff();
+    // each surface drawn by its actor, coloured by its point scalars, placed by the volume's matrix
+    for (auto* part : { &slot->Solid, &slot->Haze })
+    {
+      part->Mapper->SetInputConnection(part->Surface->GetOutputPort());
+      part->Mapper->ScalarVisibilityOn();
+      part->Mapper->SetScalarModeToUsePointData();
+      part->Mapper->UseLookupTableScalarRangeOn();
+      part->Actor->SetMapper(part->Mapper);
+      part->Actor->SetUserMatrix(slot->Matrix);
+      part->Actor->PickableOff();
+    }
   }
   Proxy& p = *slot;
   vtkAbstractVolumeMapper* mapper = volume->GetMapper();
@@ -292,21 +315,9 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
 
   // The surface: from the mapper's input connection (the pipeline's whole extent), or its data.
   vtkDataSet* data = UpdatedInput(mapper);
-  if (mapper->GetNumberOfInputConnections(0) > 0)
-  {
-    if (p.Surface->GetInputConnection(0, 0) != mapper->GetInputConnection(0, 0))
-    {
-      p.Surface->SetInputConnection(mapper->GetInputConnection(0, 0));
-    }
-  }
-  else if (p.Surface->GetInputDataObject(0, 0) != data)
-  {
-    p.Surface->SetInputData(data);
-  }
-  SelectArray(mapper, data, p.Surface, p.Selected);
-  p.Surface->SetWholeExtent(const_cast<int*>(whole));
-  p.Surface->SetScalarOpacity(property->GetScalarOpacity(0));
-  p.Surface->SetOpacityThreshold(VolumeThreshold(volume, threshold));
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  const double solid = VolumeThreshold(volume, threshold);
+  Feed(p.Solid.Surface, p.Solid.Selected, mapper, data, whole, opacity, solid);
   std::vector<double> iso;
   auto* volumeMapper = vtkVolumeMapper::SafeDownCast(mapper);
   if (volumeMapper && volumeMapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND &&
@@ -318,12 +329,12 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
       iso.push_back(values->GetValue(i));
     }
   }
-  p.Surface->SetIsoValues(iso);
+  p.Solid.Surface->SetIsoValues(iso);
 
   // Its colour, light, place and clipping: the volume's.
   if (property->GetColorChannels(0) == 3)
   {
-    p.Mapper->SetLookupTable(property->GetRGBTransferFunction(0));
+    p.Solid.Mapper->SetLookupTable(property->GetRGBTransferFunction(0));
   }
   else
   {
@@ -338,52 +349,35 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
         p.Gray->AddRGBPoint(node[0], node[1], node[1], node[1], node[2], node[3]);
       }
     }
-    p.Mapper->SetLookupTable(p.Gray);
+    p.Solid.Mapper->SetLookupTable(p.Gray);
   }
   // (unshaded: a surface's defaults, so that the style's light still shapes it)
-  vtkProperty* look = p.Actor->GetProperty();
+  vtkProperty* look = p.Solid.Actor->GetProperty();
   const bool shade = property->GetShade(0) != 0;
   look->SetAmbient(shade ? property->GetAmbient(0) : 0.0);
   look->SetDiffuse(shade ? property->GetDiffuse(0) : 1.0);
   look->SetSpecular(shade ? property->GetSpecular(0) : 0.0);
   look->SetSpecularPower(shade ? property->GetSpecularPower(0) : 1.0);
   p.Matrix->DeepCopy(volume->GetMatrix());
-  if (p.Mapper->GetClippingPlanes() != mapper->GetClippingPlanes())
+  if (p.Solid.Mapper->GetClippingPlanes() != mapper->GetClippingPlanes())
   {
-    p.Mapper->SetClippingPlanes(mapper->GetClippingPlanes());
+    p.Solid.Mapper->SetClippingPlanes(mapper->GetClippingPlanes());
   }
-  p.Surface->Update();
+  p.Solid.Surface->Update();
 
   // The haze (not with the volume's own isovalues: those are its surfaces).
-  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
-  const double solid = VolumeThreshold(volume, threshold);
   p.Hazy = haze > 0.0 && iso.empty() && HasHaze(opacity, solid);
   if (p.Hazy)
   {
-    if (mapper->GetNumberOfInputConnections(0) > 0)
+    Feed(p.Haze.Surface, p.Haze.Selected, mapper, data, whole, opacity, 0.1 * solid);
+    p.Haze.Mapper->SetLookupTable(p.Solid.Mapper->GetLookupTable());
+    p.Haze.Actor->GetProperty()->DeepCopy(look);
+    p.Haze.Actor->GetProperty()->SetOpacity(haze);
+    if (p.Haze.Mapper->GetClippingPlanes() != mapper->GetClippingPlanes())
     {
-      if (p.HazeSurface->GetInputConnection(0, 0) != mapper->GetInputConnection(0, 0))
-      {
-        p.HazeSurface->SetInputConnection(mapper->GetInputConnection(0, 0));
-      }
+      p.Haze.Mapper->SetClippingPlanes(mapper->GetClippingPlanes());
     }
-    else if (p.HazeSurface->GetInputDataObject(0, 0) != data)
-    {
-      p.HazeSurface->SetInputData(data);
-    }
-    SelectArray(mapper, data, p.HazeSurface, p.HazeSelected);
-    p.HazeSurface->SetWholeExtent(const_cast<int*>(whole));
-    p.HazeSurface->SetScalarOpacity(opacity);
-    p.HazeSurface->SetOpacityThreshold(0.1 * solid);
-    p.HazeSurface->SetIsoValues({});
-    p.HazeMapper->SetLookupTable(p.Mapper->GetLookupTable());
-    p.HazeActor->GetProperty()->DeepCopy(look);
-    p.HazeActor->GetProperty()->SetOpacity(haze);
-    if (p.HazeMapper->GetClippingPlanes() != mapper->GetClippingPlanes())
-    {
-      p.HazeMapper->SetClippingPlanes(mapper->GetClippingPlanes());
-    }
-    p.HazeSurface->Update();
+    p.Haze.Surface->Update();
   }
   return &p;
 }
@@ -405,11 +399,11 @@ const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(
     if (Drawable(volume))
     {
       Proxy* p = this->Update(volume, threshold, haze, whole);
-      prop = p->Actor;
-      this->Active.push_back(p->Actor);
+      prop = p->Solid.Actor;
+      this->Active.push_back(p->Solid.Actor);
       if (p->Hazy)
       {
-        this->Hazes.push_back(p->HazeActor);
+        this->Hazes.push_back(p->Haze.Actor);
       }
     }
   }
@@ -418,8 +412,8 @@ const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(
   // Volumes gone from the scene free their surfaces.
   for (auto it = this->Proxies.begin(); it != this->Proxies.end();)
   {
-    const bool used =
-      std::find(this->Active.begin(), this->Active.end(), it->second->Actor) != this->Active.end();
+    const bool used = std::find(this->Active.begin(), this->Active.end(),
+                        it->second->Solid.Actor) != this->Active.end();
     it = used || it->second->Volume ? std::next(it) : this->Proxies.erase(it);
   }
   this->Count = static_cast<int>(this->Active.size());
@@ -456,12 +450,12 @@ void vtkStylizeVolumeSurfaces::AddToRenderer(vtkRenderer* ren)
     vtkVolume* volume = entry.second->Volume;
     if (volume && props->IsItemPresent(volume) && Drawable(volume))
     {
-      props->AddItem(entry.second->Actor);
-      this->Active.push_back(entry.second->Actor);
+      props->AddItem(entry.second->Solid.Actor);
+      this->Active.push_back(entry.second->Solid.Actor);
       if (entry.second->Hazy)
       {
-        props->AddItem(entry.second->HazeActor);
-        this->Active.push_back(entry.second->HazeActor);
+        props->AddItem(entry.second->Haze.Actor);
+        this->Active.push_back(entry.second->Haze.Actor);
       }
     }
   }
@@ -494,7 +488,7 @@ void vtkStylizeVolumeSurfaces::ReleaseGraphicsResources(vtkWindow* w)
 {
   for (auto& entry : this->Proxies)
   {
-    entry.second->Actor->ReleaseGraphicsResources(w);
-    entry.second->HazeActor->ReleaseGraphicsResources(w);
+    entry.second->Solid.Actor->ReleaseGraphicsResources(w);
+    entry.second->Haze.Actor->ReleaseGraphicsResources(w);
   }
 }
