@@ -331,12 +331,10 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
   }
   p.Solid.Surface->SetIsoValues(iso);
 
-  // Its colour, light, place and clipping: the volume's.
-  if (property->GetColorChannels(0) == 3)
-  {
-    p.Solid.Mapper->SetLookupTable(property->GetRGBTransferFunction(0));
-  }
-  else
+  // Its colour, light, place and clipping: the volume's (set only when they change: a changed
+  // property or matrix would rebuild the actors' shaders or buffers at every frame).
+  vtkScalarsToColors* colors = property->GetRGBTransferFunction(0);
+  if (property->GetColorChannels(0) != 3)
   {
     vtkPiecewiseFunction* gray = property->GetGrayTransferFunction(0);
     if (p.Gray->GetMTime() < gray->GetMTime())
@@ -349,35 +347,39 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
         p.Gray->AddRGBPoint(node[0], node[1], node[1], node[1], node[2], node[3]);
       }
     }
-    p.Solid.Mapper->SetLookupTable(p.Gray);
+    colors = p.Gray;
   }
-  // (unshaded: a surface's defaults, so that the style's light still shapes it)
-  vtkProperty* look = p.Solid.Actor->GetProperty();
-  const bool shade = property->GetShade(0) != 0;
-  look->SetAmbient(shade ? property->GetAmbient(0) : 0.0);
-  look->SetDiffuse(shade ? property->GetDiffuse(0) : 1.0);
-  look->SetSpecular(shade ? property->GetSpecular(0) : 0.0);
-  look->SetSpecularPower(shade ? property->GetSpecularPower(0) : 1.0);
-  p.Matrix->DeepCopy(volume->GetMatrix());
-  if (p.Solid.Mapper->GetClippingPlanes() != mapper->GetClippingPlanes())
+  vtkMatrix4x4* matrix = volume->GetMatrix();
+  if (!std::equal(&p.Matrix->Element[0][0], &p.Matrix->Element[0][0] + 16, &matrix->Element[0][0]))
   {
-    p.Solid.Mapper->SetClippingPlanes(mapper->GetClippingPlanes());
+    p.Matrix->DeepCopy(matrix);
   }
-  p.Solid.Surface->Update();
-
   // The haze (not with the volume's own isovalues: those are its surfaces).
   p.Hazy = haze > 0.0 && iso.empty() && HasHaze(opacity, solid);
   if (p.Hazy)
   {
     Feed(p.Haze.Surface, p.Haze.Selected, mapper, data, whole, opacity, 0.1 * solid);
-    p.Haze.Mapper->SetLookupTable(p.Solid.Mapper->GetLookupTable());
-    p.Haze.Actor->GetProperty()->DeepCopy(look);
-    p.Haze.Actor->GetProperty()->SetOpacity(haze);
-    if (p.Haze.Mapper->GetClippingPlanes() != mapper->GetClippingPlanes())
+  }
+  const bool shade = property->GetShade(0) != 0;
+  for (Proxy::Part* part : { &p.Solid, &p.Haze })
+  {
+    if (part == &p.Haze && !p.Hazy)
     {
-      p.Haze.Mapper->SetClippingPlanes(mapper->GetClippingPlanes());
+      break;
     }
-    p.Haze.Surface->Update();
+    part->Mapper->SetLookupTable(colors);
+    // (unshaded: a surface's defaults, so that the style's light still shapes it)
+    vtkProperty* look = part->Actor->GetProperty();
+    look->SetAmbient(shade ? property->GetAmbient(0) : 0.0);
+    look->SetDiffuse(shade ? property->GetDiffuse(0) : 1.0);
+    look->SetSpecular(shade ? property->GetSpecular(0) : 0.0);
+    look->SetSpecularPower(shade ? property->GetSpecularPower(0) : 1.0);
+    look->SetOpacity(part == &p.Haze ? haze : 1.0);
+    if (part->Mapper->GetClippingPlanes() != mapper->GetClippingPlanes())
+    {
+      part->Mapper->SetClippingPlanes(mapper->GetClippingPlanes());
+    }
+    part->Surface->Update();
   }
   return &p;
 }
