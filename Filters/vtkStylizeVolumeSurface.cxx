@@ -219,6 +219,10 @@ vtkSmartPointer<vtkPolyData> BoundaryCaps(vtkDataSet* data, const std::vector<do
   {
     intervals.emplace_back(from, range[1]);
   }
+  if (intervals.empty())
+  {
+    return nullptr;
+  }
   vtkNew<vtkDataSetSurfaceFilter> faces;
   faces->SetInputData(data);
   faces->Update();
@@ -236,10 +240,6 @@ vtkSmartPointer<vtkPolyData> BoundaryCaps(vtkDataSet* data, const std::vector<do
     vtkNew<vtkPolyData> piece;
     piece->ShallowCopy(below->GetOutput());
     append->AddInputData(piece);
-  }
-  if (intervals.empty())
-  {
-    return nullptr;
   }
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputConnection(append->GetOutputPort());
