@@ -528,21 +528,25 @@ unsigned long vtkPVStylizeView::ReportProgressOf(vtkStylizeStylePass* style)
       this->ProgressRegistered = true;
     }
   }
-  vtkNew<vtkCallbackCommand> forward;
-  forward->SetClientData(this);
-  forward->SetCallback(
-    [](vtkObject*, unsigned long, void* self, void* data)
-    {
-      auto* view = static_cast<vtkPVStylizeView*>(self);
-      const double fraction = *static_cast<double*>(data);
-      if (fraction < 1.0 || view->ProgressReported)
+  if (!this->ProgressForward)
+  {
+    auto forward = vtkSmartPointer<vtkCallbackCommand>::New();
+    forward->SetClientData(this);
+    forward->SetCallback(
+      [](vtkObject*, unsigned long, void* self, void* data)
       {
-        view->ProgressReporter->UpdateProgress(std::max(0.0, std::min(fraction, 1.0)));
-      }
-      view->ProgressReported = fraction < 1.0;
-    });
+        auto* view = static_cast<vtkPVStylizeView*>(self);
+        const double fraction = *static_cast<double*>(data);
+        if (fraction < 1.0 || view->ProgressReported)
+        {
+          view->ProgressReporter->UpdateProgress(std::max(0.0, std::min(fraction, 1.0)));
+        }
+        view->ProgressReported = fraction < 1.0;
+      });
+    this->ProgressForward = forward;
+  }
   this->ProgressReported = false;
-  return style->AddObserver(vtkCommand::ProgressEvent, forward);
+  return style->AddObserver(vtkCommand::ProgressEvent, this->ProgressForward);
 }
 
 //------------------------------------------------------------------------------

@@ -43,6 +43,7 @@
 #include <vector> // for std::vector
 
 class vtkAlgorithm;
+class vtkCommand;
 class vtkComicPass;
 class vtkImageData;
 class vtkPixelArtPass;
@@ -237,6 +238,7 @@ protected:
   vtkSmartPointer<vtkStylizeGBufferPass> RankGBuffer;
   std::string FigureResult;
   vtkSmartPointer<vtkAlgorithm> ProgressReporter; // what the session's progress handler observes
+  vtkSmartPointer<vtkCommand> ProgressForward;    // the style's progress to the reporter
   bool ProgressRegistered = false;
   bool ProgressReported = false; // this frame passed on progress below 1
 
