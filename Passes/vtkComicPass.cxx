@@ -139,7 +139,10 @@ void vtkComicPass::PrintSelf(ostream& os, vtkIndent indent)
 void vtkComicPass::ConfigureLightingColors(vtkStylizeLightingPass* lighting)
 {
   lighting->SetColorMode(ColorModeForTint(this->Tint));
-  lighting->SetSolidColorTones(false);
+  // A dark solid colour (black glyphs, a dark part) is hatched as a comic's inker would; light
+  // ones (VTK's white, ParaView's, the program's light gray) stay paper in the light.
+  lighting->SetSolidColorTones(true);
+  lighting->SetSolidColorWhite(0.75);
 }
 
 //------------------------------------------------------------------------------

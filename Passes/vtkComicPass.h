@@ -282,8 +282,9 @@ public:
    * Values: BLACK_AND_WHITE, none: black ink on white paper; DATA_COLORS, surfaces coloured by an
    * array: the paper takes the hue and saturation of the colour map at full value, so the data
    * reads under the ink, solid colours stay white; ALL_COLORS, every surface, solid colours
-   * included. The tone (dots, hatching) comes from the light alone in all three: a surface
-   * coloured by a dark or mid-luminance map is not hatched all over.
+   * included. The tone (dots, hatching) comes from the light in all three: a surface coloured by a
+   * dark or mid-luminance map is not hatched all over; a dark solid colour (luminance below 0.75)
+   * darkens it in proportion, so black glyphs are hatched and a white or light gray part is not.
    */
   vtkSetClampMacro(Tint, int, BLACK_AND_WHITE, ALL_COLORS);
   vtkGetMacro(Tint, int);

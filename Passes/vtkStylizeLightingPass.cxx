@@ -105,6 +105,7 @@ void vtkStylizeLightingPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SpecularGain: " << this->SpecularGain << "\n";
   os << indent << "ColorMode: " << this->ColorMode << "\n";
   os << indent << "SolidColorTones: " << this->SolidColorTones << "\n";
+  os << indent << "SolidColorWhite: " << this->SolidColorWhite << "\n";
   os << indent << "Scattering: " << this->Scattering << "\n";
   os << indent << "SpecularOcclusion: " << this->SpecularOcclusion << "\n";
   os << indent << "NumberOfLights: " << this->NumberOfLights << "\n";
@@ -535,6 +536,7 @@ bool vtkStylizeLightingPass::SetShaderParameters(
     static_cast<float>(ActorValue(prop, GRAY_LEVELS_FAR(), this->GrayLevelsFar, 0.0, 100.0)));
   program->SetUniformi("stylizeColorMode", this->ColorMode);
   program->SetUniformi("stylizeSolidColorTones", this->SolidColorTones ? 1 : 0);
+  program->SetUniformf("stylizeSolidColorWhite", static_cast<float>(this->SolidColorWhite));
   program->SetUniformf("stylizeSpecularGain",
     static_cast<float>(ActorValue(prop, SPECULAR_GAIN(), this->SpecularGain, 0.0, 100.0)));
   const float range[2] = { static_cast<float>(this->DepthRange[0]),

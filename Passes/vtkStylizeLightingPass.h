@@ -152,14 +152,26 @@ public:
   /**
    * In the colour modes LIGHT_TONE, DATA_HUES and ALL_HUES: whether a solid colour's lightness
    * darkens the tone. On: a dark gray actor is drawn darker than a white one under the same
-   * light (the sketch: the pencil renders the material's value); off (default): every solid
-   * colour is lit as white (the comic's halftone is the light's). A colour from an array is
-   * lit as white either way: a colour map's lightness is not the surface's. The style passes
-   * set it with ColorMode.
+   * light (the sketch: the pencil renders the material's value; the comic, from a luminance
+   * below SolidColorWhite); off (default): every solid colour is lit as white. A colour from an
+   * array is lit as white either way: a colour map's lightness is not the surface's. The style
+   * passes set it with ColorMode.
    */
   vtkSetMacro(SolidColorTones, bool);
   vtkGetMacro(SolidColorTones, bool);
   vtkBooleanMacro(SolidColorTones, bool);
+  ///@}
+
+  ///@{
+  /**
+   * With SolidColorTones: the luminance (Rec. 709) from which a solid colour is lit as white, in
+   * [0.05, 1], default 1. Darker colours scale the tone by their luminance over this value, so 1
+   * keeps each colour's own lightness (the sketch) and a lower value draws light colours as white
+   * and only dark ones darker (the comic's 0.75: a light gray part stays paper in the light, a
+   * dark glyph or part is hatched). The style passes set it with ColorMode.
+   */
+  vtkSetClampMacro(SolidColorWhite, double, 0.05, 1.0);
+  vtkGetMacro(SolidColorWhite, double);
   ///@}
 
   ///@{
@@ -256,6 +268,7 @@ protected:
   double SpecularGain = 1.5;
   int ColorMode = LIT_COLORS;
   bool SolidColorTones = false;
+  double SolidColorWhite = 1.0;
   double Scattering = 1.0;
   double SpecularOcclusion = 1.0;
 

@@ -23,6 +23,7 @@ uniform vec2 stylizeDepthRange;     // view depth mapped to 0 and 1 for the leve
 // from one), 4 every colour's hue times the tone. 1 to 4 light with neutral lights.
 uniform int stylizeColorMode;
 uniform int stylizeSolidColorTones; // 1: in modes 2 to 4 a solid colour's lightness darkens the tone
+uniform float stylizeSolidColorWhite; // the luminance from which a solid colour counts as white
 // Pixel art (docs/algorithms.md section 1)
 uniform float stylizeScattering;    // s in [0, 1]; diffuse scaled by sqrt(s)
 uniform float stylizeOcclusion;     // M in [0, 1]; specular occlusion factor
@@ -175,7 +176,7 @@ vec3 stylizePixelArt(vec3 N, vec3 P, vec3 V, vec3 ambientC, vec3 diffuseC, vec3 
 // The colour of the lit surface for the colour modes 2 to 4: the surface's hue and saturation at
 // full value (modes 3 and 4) or white, times the tone (the luminance of `lit`, the surface lit as
 // white, or in its solid colour under stylizeSolidColorTones).
-vec3 stylizeToned(vec3 lit, vec3 ambientC, vec3 diffuseC, float ka, float kd)
+vec3 stylizeToned(vec3 lit, vec3 ambientC, vec3 diffuseC, float ka, float kd, bool solid)
 {
   float tone = dot(lit, vec3(0.2126, 0.7152, 0.0722));
 #ifdef STYLIZE_DATA_COLORS
@@ -186,5 +187,11 @@ vec3 stylizeToned(vec3 lit, vec3 ambientC, vec3 diffuseC, float ka, float kd)
   vec3 base = kd > 1e-6 ? diffuseC / kd : (ka > 1e-6 ? ambientC / ka : vec3(1.0));
   float m = max(base.r, max(base.g, base.b));
   vec3 paper = hue && m > 1e-4 ? base / m : vec3(1.0);
+  if (solid)
+  {
+    // lit in its own colour: the tone times min(1, luminance / white) over its luminance
+    float l = dot(base, vec3(0.2126, 0.7152, 0.0722));
+    tone *= min(1.0 / max(l, 1e-4), 1.0 / max(stylizeSolidColorWhite, 0.05));
+  }
   return paper * tone;
 }

@@ -27,6 +27,6 @@
   if (stylizeTone)
   {
     stylizeRGB = stylizeToned(stylizeRGB, ambientColor, diffuseColor, ambientIntensity,
-      diffuseIntensity);
+      diffuseIntensity, !stylizeWhite);
   }
   gl_FragData[0] = vec4(stylizeSaturateFinite(stylizeRGB), opacity);

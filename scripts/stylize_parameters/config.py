@@ -94,6 +94,7 @@ XML_MODEL_SOURCES = {"Comic:": "vtkComicPass", "PixelArt:": "vtkPixelArtPass"}
 XML_SKIP = {("vtkStylizeLightingPass", "Model"): "set by the view",
             ("vtkStylizeLightingPass", "ColorMode"): "set by the style (its Tint, ColoredLights)",
             ("vtkStylizeLightingPass", "SolidColorTones"): "set by the style with ColorMode",
+            ("vtkStylizeLightingPass", "SolidColorWhite"): "set by the style with ColorMode",
             ("vtkSketchPass", "SceneBounds"): "set by the view (the data's bounds on all ranks)",
             ("vtkPixelArtPass", "InteractiveImageReduction"):
                 "no effect: the pixel art renders its scene at its art resolution already",
