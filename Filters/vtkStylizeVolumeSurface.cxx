@@ -11,12 +11,14 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkFlyingEdges3D.h"
+#include "vtkIdList.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkSMPTools.h"
@@ -24,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <iterator>
 
@@ -188,14 +191,77 @@ void OrientOutwards(
   surface->SetPolys(turned);
 }
 
+/** A key of a point's exact coordinates (-0 taken as 0): equal coordinates, equal keys. */
+vtkTypeUInt64 PointKey(const double x[3])
+{
+  vtkTypeUInt64 h = 1469598103934665603ULL; // FNV-1a over the coordinates' bytes
+  for (int i = 0; i < 3; ++i)
+  {
+    const double v = x[i] == 0.0 ? 0.0 : x[i];
+    vtkTypeUInt64 bits;
+    std::memcpy(&bits, &v, sizeof(bits));
+    for (int b = 0; b < 8; ++b)
+    {
+      h = (h ^ ((bits >> (8 * b)) & 0xffu)) * 1099511628211ULL;
+    }
+  }
+  return h;
+}
+
+/**
+ * The outer faces of `data` (vtkDataSetSurfaceFilter), without those whose points all lie among
+ * `shared` (sorted keys of other pieces' outer points: faces between pieces).
+ */
+vtkSmartPointer<vtkPolyData> OuterFaces(vtkDataSet* data, const std::vector<vtkTypeUInt64>& shared)
+{
+  vtkNew<vtkDataSetSurfaceFilter> faces;
+  faces->SetInputData(data);
+  faces->Update();
+  auto outer = vtkSmartPointer<vtkPolyData>::New();
+  outer->ShallowCopy(faces->GetOutput());
+  if (shared.empty())
+  {
+    return outer;
+  }
+  vtkPoints* points = outer->GetPoints();
+  std::vector<char> onShared(outer->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < outer->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    points->GetPoint(i, x);
+    onShared[i] = std::binary_search(shared.begin(), shared.end(), PointKey(x)) ? 1 : 0;
+  }
+  vtkNew<vtkCellArray> kept;
+  vtkNew<vtkIdList> pts;
+  vtkCellArray* polys = outer->GetPolys();
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, pts);
+    bool between = pts->GetNumberOfIds() > 0;
+    for (vtkIdType k = 0; k < pts->GetNumberOfIds() && between; ++k)
+    {
+      between = onShared[pts->GetId(k)] != 0;
+    }
+    if (!between)
+    {
+      kept->InsertNextCell(pts);
+    }
+  }
+  outer->GetCellData()->Initialize(); // (the kept faces no longer match the cell data)
+  outer->SetPolys(kept);
+  return outer;
+}
+
 /**
  * Where the opaque region (`opaque`: a scalar value's opacity at least the threshold) meets the
- * outer faces of a mesh that is not an image (no padding closes it there): those faces, cut along
- * the isovalues, with their outward normals, so that the region stays closed. The faces carry the
- * scalar, so they are coloured by the data as VTK's volume shows its boundary.
+ * outer faces of a mesh that is not an image (no padding closes it there): those faces (but not
+ * the faces between pieces: `shared`), cut along the isovalues, with their outward normals, so
+ * that the region stays closed. The faces carry the scalar, so they are coloured by the data as
+ * VTK's volume shows its boundary.
  */
 vtkSmartPointer<vtkPolyData> BoundaryCaps(vtkDataSet* data, const std::vector<double>& isovalues,
-  const std::vector<bool>& rising, const double range[2], const std::function<bool(double)>& opaque)
+  const std::vector<bool>& rising, const double range[2], const std::function<bool(double)>& opaque,
+  const std::vector<vtkTypeUInt64>& shared)
 {
   // The opaque intervals of the scalar: between a rising crossing and the next falling one,
   // from the range's start when the first crossing falls, to its end when the last rises.
@@ -223,14 +289,12 @@ vtkSmartPointer<vtkPolyData> BoundaryCaps(vtkDataSet* data, const std::vector<do
   {
     return nullptr;
   }
-  vtkNew<vtkDataSetSurfaceFilter> faces;
-  faces->SetInputData(data);
-  faces->Update();
+  vtkSmartPointer<vtkPolyData> faces = OuterFaces(data, shared);
   vtkNew<vtkAppendPolyData> append;
   for (const auto& interval : intervals)
   {
     vtkNew<vtkClipPolyData> above;
-    above->SetInputConnection(faces->GetOutputPort());
+    above->SetInputData(faces);
     above->SetValue(interval.first);
     vtkNew<vtkClipPolyData> below;
     below->SetInputConnection(above->GetOutputPort());
@@ -273,6 +337,7 @@ void vtkStylizeVolumeSurface::PrintSelf(ostream& os, vtkIndent indent)
      << this->WholeExtent[2] << " " << this->WholeExtent[3] << " " << this->WholeExtent[4] << " "
      << this->WholeExtent[5] << "\n";
   os << indent << "IsoValues: " << this->IsoValues.size() << "\n";
+  os << indent << "SharedPoints: " << this->SharedPoints.size() << "\n";
   os << indent << "ScalarOpacity: " << this->ScalarOpacity << "\n";
 }
 
@@ -287,6 +352,40 @@ void vtkStylizeVolumeSurface::SetIsoValues(const std::vector<double>& values)
     this->IsoValues = finite;
     this->Modified();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeVolumeSurface::SetSharedPoints(const std::vector<vtkTypeUInt64>& keys)
+{
+  std::vector<vtkTypeUInt64> sorted = keys;
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  if (sorted != this->SharedPoints)
+  {
+    this->SharedPoints.swap(sorted);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkTypeUInt64> vtkStylizeVolumeSurface::OuterPointKeys(vtkDataSet* data)
+{
+  std::vector<vtkTypeUInt64> keys;
+  if (!data || data->GetNumberOfCells() == 0)
+  {
+    return keys;
+  }
+  vtkSmartPointer<vtkPolyData> outer = OuterFaces(data, {});
+  keys.reserve(outer->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < outer->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    outer->GetPoint(i, x);
+    keys.push_back(PointKey(x));
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  return keys;
 }
 
 //------------------------------------------------------------------------------
@@ -410,12 +509,10 @@ int vtkStylizeVolumeSurface::RequestData(
     {
       if (opaque(0.5 * (range[0] + range[1])))
       {
-        // Opaque throughout: the volume shows its outer faces.
-        vtkNew<vtkDataSetSurfaceFilter> faces;
-        faces->SetInputData(data);
-        faces->Update();
+        // Opaque throughout: the volume shows its outer faces (the mesh's).
         vtkNew<vtkPolyDataNormals> normals;
-        normals->SetInputConnection(faces->GetOutputPort());
+        normals->SetInputData(OuterFaces(data,
+          vtkImageData::SafeDownCast(data) ? std::vector<vtkTypeUInt64>() : this->SharedPoints));
         normals->SplittingOff();
         normals->Update();
         output->ShallowCopy(normals->GetOutput());
@@ -447,8 +544,9 @@ int vtkStylizeVolumeSurface::RequestData(
     OrientOutwards(result, isovalues, rising);
   }
   // Other meshes: closed where the opaque region meets their outer faces.
-  vtkSmartPointer<vtkPolyData> caps =
-    !image && crossings ? BoundaryCaps(data, isovalues, rising, range, opaque) : nullptr;
+  vtkSmartPointer<vtkPolyData> caps = !image && crossings
+    ? BoundaryCaps(data, isovalues, rising, range, opaque, this->SharedPoints)
+    : nullptr;
   if (caps && caps->GetNumberOfCells() > 0)
   {
     vtkNew<vtkAppendPolyData> both;

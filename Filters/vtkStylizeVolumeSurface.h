@@ -9,8 +9,9 @@
  * that region reaches the edge of an image's whole extent, the image is padded by one sample of
  * a transparent value so that the region is closed there too (a CT's outer faces, a field's
  * box); where it reaches the outer faces of any other mesh (an unstructured grid's), those faces,
- * cut along the isovalues, close it, with the data's scalar on them. With IsoValues set (the
- * volume's isosurface blend mode), those values are used instead.
+ * cut along the isovalues, close it, with the data's scalar on them (but not the faces between
+ * processes' pieces: SharedPoints). With IsoValues set (the volume's isosurface blend mode),
+ * those values are used instead.
  *
  * The output's point normals are the scalar's gradient, pointing out of the opaque region, and
  * its point scalars are the isovalue (the input array's name), for colouring with the volume's
@@ -96,6 +97,28 @@ public:
   const std::vector<double>& GetIsoValues() const { return this->IsoValues; }
   ///@}
 
+#if !defined(__VTK_WRAP__)
+  ///@{
+  /**
+   * For a mesh that is not an image, split over processes (ParaView's ranks): the keys
+   * (OuterPointKeys()) of the points on the other pieces' outer faces. An outer face of this
+   * piece whose points all lie among them is a face between pieces, not the mesh's boundary, so
+   * the opaque region is not closed there. Empty (the default): every outer face is the mesh's.
+   */
+  void SetSharedPoints(const std::vector<vtkTypeUInt64>& keys);
+  const std::vector<vtkTypeUInt64>& GetSharedPoints() const
+  {
+    return this->SharedPoints;
+  }
+  ///@}
+
+  /**
+   * The keys of the points of `data`'s outer faces (from the exact coordinates: a point copied
+   * to another process's piece has the same key), sorted, without repeats.
+   */
+  static std::vector<vtkTypeUInt64> OuterPointKeys(vtkDataSet* data);
+#endif
+
   /**
    * The scalar values at which `function` crosses `threshold` within [low, high], sorted, each
    * to within 1e-9 of the range; `rising` receives whether the opacity rises through each (the
@@ -127,6 +150,7 @@ protected:
   int Component = 0;
   int WholeExtent[6] = { 0, -1, 0, -1, 0, -1 };
   std::vector<double> IsoValues;
+  std::vector<vtkTypeUInt64> SharedPoints;
 
 private:
   vtkStylizeVolumeSurface(const vtkStylizeVolumeSurface&) = delete;

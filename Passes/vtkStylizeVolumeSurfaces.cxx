@@ -135,7 +135,8 @@ vtkDataSet* UpdatedInput(vtkAbstractVolumeMapper* mapper)
  * opacity function and the threshold.
  */
 void Feed(vtkStylizeVolumeSurface* surface, std::string& selected, vtkAbstractVolumeMapper* mapper,
-  vtkDataSet* data, const int whole[6], vtkPiecewiseFunction* opacity, double threshold)
+  vtkDataSet* data, const int whole[6], const std::vector<vtkTypeUInt64>& shared,
+  vtkPiecewiseFunction* opacity, double threshold)
 {
   if (mapper->GetNumberOfInputConnections(0) > 0)
   {
@@ -150,6 +151,7 @@ void Feed(vtkStylizeVolumeSurface* surface, std::string& selected, vtkAbstractVo
   }
   SelectArray(mapper, data, surface, selected);
   surface->SetWholeExtent(const_cast<int*>(whole));
+  surface->SetSharedPoints(shared);
   surface->SetScalarOpacity(opacity);
   surface->SetOpacityThreshold(threshold);
 }
@@ -289,8 +291,117 @@ bool vtkStylizeVolumeSurfaces::HasHaze(vtkPiecewiseFunction* f, double threshold
 }
 
 //------------------------------------------------------------------------------
-vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
-  vtkVolume* volume, double threshold, double haze, const int whole[6])
+std::vector<std::vector<vtkTypeUInt64>> vtkStylizeVolumeSurfaces::SharedPoints(
+  vtkMultiProcessController* c)
+{
+  // This process's keys per volume (none for images: their extents close them), recomputed
+  // only when the piece changed.
+  std::vector<const std::vector<vtkTypeUInt64>*> local;
+  std::map<vtkDataSet*, OuterKeys> kept;
+  int changed = 0;
+  const bool parallel = c && c->GetNumberOfProcesses() > 1;
+  static const std::vector<vtkTypeUInt64> none;
+  for (vtkProp* prop : this->Props)
+  {
+    auto* volume = vtkVolume::SafeDownCast(prop);
+    if (!volume)
+    {
+      continue;
+    }
+    vtkDataSet* data =
+      parallel && volume->GetMapper() ? UpdatedInput(volume->GetMapper()) : nullptr;
+    if (!data || vtkImageData::SafeDownCast(data) || data->GetNumberOfCells() == 0)
+    {
+      local.push_back(&none);
+      continue;
+    }
+    auto found = this->OuterKeyCache.find(data);
+    OuterKeys& entry = kept[data];
+    if (found != this->OuterKeyCache.end() && found->second.Time == data->GetMTime())
+    {
+      entry = std::move(found->second);
+    }
+    else
+    {
+      entry.Time = data->GetMTime();
+      entry.Keys = vtkStylizeVolumeSurface::OuterPointKeys(data);
+      changed = 1;
+    }
+    local.push_back(&entry.Keys);
+  }
+  changed = changed || kept.size() != this->OuterKeyCache.size();
+  this->OuterKeyCache.swap(kept);
+  std::vector<std::vector<vtkTypeUInt64>> shared(local.size());
+  if (!parallel)
+  {
+    this->LastShared.clear();
+    return shared;
+  }
+  // The same number of volumes on every process, else none (as the extents).
+  const int count = static_cast<int>(local.size());
+  int least = count, most = count, any = changed;
+  c->AllReduce(&count, &least, 1, vtkCommunicator::MIN_OP);
+  c->AllReduce(&count, &most, 1, vtkCommunicator::MAX_OP);
+  if (least != most || count == 0)
+  {
+    this->LastShared.clear(); // (the next exchange is then due on every process)
+    return shared;
+  }
+  // (every process decides alike whether to exchange: a collective call each makes, or none)
+  changed = changed || this->LastShared.size() != local.size();
+  c->AllReduce(&changed, &any, 1, vtkCommunicator::MAX_OP);
+  if (!any)
+  {
+    return this->LastShared;
+  }
+  // Every process's keys, volume after volume: the lengths, then the keys.
+  const int processes = c->GetNumberOfProcesses();
+  const int rank = c->GetLocalProcessId();
+  std::vector<vtkIdType> lengths(count), all(static_cast<size_t>(count) * processes);
+  std::vector<unsigned long long> send;
+  for (int v = 0; v < count; ++v)
+  {
+    lengths[v] = static_cast<vtkIdType>(local[v]->size());
+    send.insert(send.end(), local[v]->begin(), local[v]->end());
+  }
+  c->AllGather(lengths.data(), all.data(), count);
+  std::vector<vtkIdType> totals(processes, 0), offsets(processes, 0);
+  for (int p = 0; p < processes; ++p)
+  {
+    for (int v = 0; v < count; ++v)
+    {
+      totals[p] += all[static_cast<size_t>(p) * count + v];
+    }
+    offsets[p] = p > 0 ? offsets[p - 1] + totals[p - 1] : 0;
+  }
+  std::vector<unsigned long long> received(offsets[processes - 1] + totals[processes - 1]);
+  c->AllGatherV(send.data(), received.data(), static_cast<vtkIdType>(send.size()), totals.data(),
+    offsets.data());
+  for (int p = 0; p < processes; ++p)
+  {
+    vtkIdType at = offsets[p];
+    for (int v = 0; v < count; ++v)
+    {
+      const vtkIdType n = all[static_cast<size_t>(p) * count + v];
+      if (p != rank && !local[v]->empty())
+      {
+        shared[v].insert(shared[v].end(), received.begin() + at, received.begin() + at + n);
+      }
+      at += n;
+    }
+  }
+  for (auto& keys : shared)
+  {
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  }
+  this->LastShared = shared;
+  return shared;
+}
+
+//------------------------------------------------------------------------------
+vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* volume,
+  double threshold, double haze, const int whole[6], const std::vector<vtkTypeUInt64>& shared)
 {
   std::unique_ptr<Proxy>& slot = this->Proxies[volume];
   if (!slot || slot->Volume.GetPointer() != volume)
@@ -317,7 +428,7 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
   vtkDataSet* data = UpdatedInput(mapper);
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
   const double solid = VolumeThreshold(volume, threshold);
-  Feed(p.Solid.Surface, p.Solid.Selected, mapper, data, whole, opacity, solid);
+  Feed(p.Solid.Surface, p.Solid.Selected, mapper, data, whole, shared, opacity, solid);
   std::vector<double> iso;
   auto* volumeMapper = vtkVolumeMapper::SafeDownCast(mapper);
   if (volumeMapper && volumeMapper->GetBlendMode() == vtkVolumeMapper::ISOSURFACE_BLEND &&
@@ -358,7 +469,7 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(
   p.Hazy = haze > 0.0 && iso.empty() && HasHaze(opacity, solid);
   if (p.Hazy)
   {
-    Feed(p.Haze.Surface, p.Haze.Selected, mapper, data, whole, opacity, 0.1 * solid);
+    Feed(p.Haze.Surface, p.Haze.Selected, mapper, data, whole, shared, opacity, 0.1 * solid);
   }
   const bool shade = property->GetShade(0) != 0;
   for (Proxy::Part* part : { &p.Solid, &p.Haze })
@@ -393,14 +504,16 @@ const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(
   this->Hazes.clear();
   this->Props.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
   const std::vector<std::array<int, 6>> wholes = WholeExtents(this->Props, controller);
-  size_t v = 0; // the volumes' index in `wholes`
+  const std::vector<std::vector<vtkTypeUInt64>> shared = this->SharedPoints(controller);
+  size_t v = 0; // the volumes' index in `wholes` and `shared`
   for (vtkProp*& prop : this->Props)
   {
     auto* volume = vtkVolume::SafeDownCast(prop);
-    const int* whole = volume ? wholes[v++].data() : nullptr;
+    const int* whole = volume ? wholes[v].data() : nullptr;
+    const std::vector<vtkTypeUInt64>* own = volume ? &shared[v++] : nullptr;
     if (Drawable(volume))
     {
-      Proxy* p = this->Update(volume, threshold, haze, whole);
+      Proxy* p = this->Update(volume, threshold, haze, whole, *own);
       prop = p->Solid.Actor;
       this->Active.push_back(p->Solid.Actor);
       if (p->Hazy)

@@ -29,6 +29,7 @@
 #include <vector> // for std::vector
 
 class vtkActor;
+class vtkDataSet;
 class vtkMultiProcessController;
 class vtkPiecewiseFunction;
 class vtkProp;
@@ -49,7 +50,9 @@ public:
    * threshold of volumes without their own (VOLUME_OPACITY_THRESHOLD key); `haze`, the haze's
    * opacity (0: none); `controller`, over several processes that each draw their pieces of the
    * same volumes (a compositor's ranks): the processes' image extents are combined so that each
-   * piece's surface is closed at the whole image's faces only (all processes call Begin()).
+   * piece's surface is closed at the whole image's faces only, and the points of other meshes'
+   * outer faces are exchanged so that a piece is not closed where another piece goes on (all
+   * processes call Begin()).
    */
   const vtkRenderState* Begin(const vtkRenderState* s, double threshold, double haze = 0.0,
     vtkMultiProcessController* controller = nullptr);
@@ -80,7 +83,23 @@ public:
 
 private:
   struct Proxy;
-  Proxy* Update(vtkVolume* volume, double threshold, double haze, const int whole[6]);
+  Proxy* Update(vtkVolume* volume, double threshold, double haze, const int whole[6],
+    const std::vector<vtkTypeUInt64>& shared);
+  /**
+   * Per vtkVolume among Props, in order: over several processes, the keys of the points on the
+   * other processes' pieces' outer faces (vtkStylizeVolumeSurface::SetSharedPoints()) for data
+   * that is not an image; otherwise none. Collective.
+   */
+  std::vector<std::vector<vtkTypeUInt64>> SharedPoints(vtkMultiProcessController* c);
+
+  /** A piece's outer point keys, kept while its data is unchanged. */
+  struct OuterKeys
+  {
+    vtkMTimeType Time = 0;
+    std::vector<vtkTypeUInt64> Keys;
+  };
+  std::map<vtkDataSet*, OuterKeys> OuterKeyCache;
+  std::vector<std::vector<vtkTypeUInt64>> LastShared; // the last exchange's result
 
   std::map<vtkVolume*, std::unique_ptr<Proxy>> Proxies;
   std::vector<vtkProp*> Props;

@@ -13,14 +13,16 @@ realdata.volumes' skull (Testing/RealData/volumes.py), 400x300. Writes OUTPUT_PR
   haze    the comic with VolumeHaze 0.5 (the tissue below the opacity threshold as a translucent
           surface)
   grid-<style>   the data axes grid on: vtk (Style None) and each style
-and prints "pieces K" (how many ranks hold part of the volume).
+  disk-<style>   ParaView's disk_out_ref simulation, an unstructured volume redistributed over
+                 the ranks, seen across the cut between their pieces: vtk and each style
+and prints "pieces K" and "disk pieces K" (how many ranks hold part of each volume).
 """
 import sys
 
 import paraview.simple as simple
-from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction,
-                             GetOpacityTransferFunction, Render, SaveScreenshot, Show,
-                             XMLImageDataReader)
+from paraview.simple import (ColorBy, CreateView, ExodusIIReader, GetColorTransferFunction,
+                             GetOpacityTransferFunction, MergeBlocks, RedistributeDataSet, Render,
+                             SaveScreenshot, Show, XMLImageDataReader)
 from stylize_pv_scene import make_view
 
 prefix, data = sys.argv[1], sys.argv[2]
@@ -81,4 +83,34 @@ display.DataAxesGrid.GridAxesVisibility = 0
 view.Style = 0
 display.Visibility = 0
 shot("bare")
+
+# An unstructured volume split over the ranks: ParaView's tutorial simulation disk_out_ref.ex2,
+# its blocks merged and redistributed (RedistributeDataSet), shown as a Volume by the
+# temperature (the ramp of realdata.volumes' disk scene), seen across the cut between the ranks'
+# pieces; its surface must not be closed along that cut.
+disk = ExodusIIReader(FileName=[data + "/disk_out_ref.ex2"])
+disk.PointVariables = ["Temp"]
+split = RedistributeDataSet(Input=MergeBlocks(Input=disk))
+split.UpdatePipeline()
+disk_display = Show(split, view)
+disk_display.SetRepresentationType("Volume")
+ColorBy(disk_display, ("POINTS", "Temp"))
+temp = GetColorTransferFunction("Temp")
+temp.AutomaticRescaleRangeMode = "Never"
+low, high = 293.15, 913.15
+temp.RGBPoints = [low, 1.0, 0.9, 0.5, high, 0.8, 0.2, 0.0]
+GetOpacityTransferFunction("Temp").Points = [low, 0.0, 0.5, 0.0, low + 0.4 * (high - low), 0.0,
+                                             0.5, 0.0, high, 0.8, 0.5, 0.0]
+ids = (getattr(simple, "GenerateProcessIds", None) or simple.ProcessIdScalars)(Input=split)
+ids.UpdatePipeline()
+array = ids.PointData.GetArray("ProcessId")
+low_id, high_id = array.GetRange() if array else (0, 0)
+print("disk pieces %d" % (int(high_id - low_id) + 1))
+Render(view)
+view.CameraFocalPoint = [0.0, 0.0, 1.5]
+view.CameraPosition = [3.0, 14.0, 6.0]  # (the cut, x = 0, crosses the view from top to bottom)
+view.CameraViewUp = [0.0, 0.0, 1.0]
+for style, label in enumerate(["vtk", "comic", "pixel", "sketch", "lines"]):
+    view.Style = style
+    shot("disk-" + label)
 print("rendered")

@@ -7,12 +7,14 @@
 // unstructured grid (vtkContourFilter's path) gives the sphere; cell scalars are moved to the
 // points; a crossing is found to 1e-9 and a threshold of NaN or an empty input give nothing; a
 // piece of the image is closed at its cut unless the whole image's extent is given; an
-// unstructured grid's opaque shell is closed by the grid's outer faces.
+// unstructured grid's opaque shell is closed by the grid's outer faces, but a piece of it not
+// where the other piece's outer points are shared (SetSharedPoints).
 #include "vtkStylizeTestChecks.h"
 #include "vtkStylizeVolumeSurface.h"
 
 #include "vtkAppendFilter.h"
 #include "vtkCellData.h"
+#include "vtkExtractVOI.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
@@ -145,15 +147,67 @@ Shape Measure(vtkPolyData* pd, double radius)
 }
 
 vtkSmartPointer<vtkPolyData> Surface(vtkDataObject* data, vtkPiecewiseFunction* opacity,
-  double threshold, std::vector<double> iso = {})
+  double threshold, std::vector<double> iso = {}, const std::vector<vtkTypeUInt64>& shared = {})
 {
   vtkNew<vtkStylizeVolumeSurface> surface;
   surface->SetInputData(data);
   surface->SetScalarOpacity(opacity);
   surface->SetOpacityThreshold(threshold);
   surface->SetIsoValues(iso);
+  surface->SetSharedPoints(shared);
   surface->Update();
   return surface->GetOutput();
+}
+
+/** The half of `image` with x <= 0 (`low`) or x >= 0, as an unstructured grid. */
+vtkSmartPointer<vtkUnstructuredGrid> Half(vtkImageData* image, bool low)
+{
+  vtkNew<vtkExtractVOI> voi;
+  voi->SetInputData(image);
+  voi->SetVOI(low ? 0 : N / 2, low ? N / 2 : N - 1, 0, N - 1, 0, N - 1);
+  vtkNew<vtkAppendFilter> grid;
+  grid->SetInputConnection(voi->GetOutputPort());
+  grid->Update();
+  return grid->GetOutput();
+}
+
+/** The points of `surface` on the plane x = 0 whose normal is along x: faces closing a cut. */
+vtkIdType OnCut(vtkPolyData* surface)
+{
+  vtkIdType count = 0;
+  vtkDataArray* n = surface->GetPointData()->GetNormals();
+  for (vtkIdType i = 0; n && i < surface->GetNumberOfPoints(); ++i)
+  {
+    double p[3], m[3];
+    surface->GetPoint(i, p);
+    n->GetTuple(i, m);
+    count += std::abs(p[0]) < 1e-9 && std::abs(m[0]) > 0.9 ? 1 : 0;
+  }
+  return count;
+}
+
+/**
+ * `field` split at x = 0 into two pieces (ParaView's ranks): each closed at the cut alone, not
+ * with the other piece's outer points shared, the box's faces closing both either way.
+ */
+void CheckSplit(vtkImageData* field, vtkPiecewiseFunction* down)
+{
+  auto low = Half(field, true);
+  auto high = Half(field, false);
+  const auto lowKeys = vtkStylizeVolumeSurface::OuterPointKeys(low);
+  const auto highKeys = vtkStylizeVolumeSurface::OuterPointKeys(high);
+  auto alone = Surface(low, down, 0.5);
+  auto joined = Surface(low, down, 0.5, {}, highKeys);
+  auto other = Surface(high, down, 0.5, {}, lowKeys);
+  const Shape a = Measure(alone, 0.5), j = Measure(joined, 0.5), o = Measure(other, 0.5);
+  STYLIZE_CHECK(OnCut(alone) > (N - 2) * (N - 2) / 4 && OnCut(joined) == 0 && OnCut(other) == 0 &&
+      j.OnFaces > a.OnFaces / 2 && o.OnFaces > a.OnFaces / 2 &&
+      lowKeys.size() > 6 * (N / 2) * (N / 2),
+    "split: %lld, %lld and %lld points closing the cut (alone, shared, the other piece), "
+    "%lld and %lld on the box's faces, %zu keys",
+    static_cast<long long>(OnCut(alone)), static_cast<long long>(OnCut(joined)),
+    static_cast<long long>(OnCut(other)), static_cast<long long>(j.OnFaces),
+    static_cast<long long>(o.OnFaces), lowKeys.size());
 }
 }
 
@@ -291,6 +345,7 @@ int TestVolumeSurface(int, char*[])
       "unstructured shell: %lld points on the box's faces, %lld of %lld face normals outward",
       static_cast<long long>(s.OnFaces), static_cast<long long>(outward),
       static_cast<long long>(faces));
+    CheckSplit(field, down);
     auto cells = Field(true);
     s = Measure(Surface(cells, up, 0.5), 0.5);
     STYLIZE_CHECK(
