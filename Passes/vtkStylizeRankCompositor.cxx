@@ -116,10 +116,11 @@ bool vtkStylizeRankCompositor::Reduce(Part& own, const std::vector<int>& compone
       const int to = rank - step;
       // A part the receiver would refuse (outside the image, or with fewer values than its
       // rectangle holds) is sent as an empty rectangle and no data: the receiver receives data
-      // only for a part it keeps, so data sent anyway would be read as the next frame's.
+      // only for a part it keeps, so data sent anyway would be read as the next frame's. An
+      // empty part (a process that drew nothing: a rank without data) is sent as it is.
       bool valid =
         InsideImage(own.Rect, w, h) && own.Depth.size() >= static_cast<size_t>(own.Area());
-      for (size_t c = 0; c < channels && valid; ++c)
+      for (size_t c = 0; c < channels && valid && own.Area() > 0; ++c)
       {
         valid = c < own.Channels.size() &&
           own.Channels[c].size() >= static_cast<size_t>(components[c] * own.Area());
