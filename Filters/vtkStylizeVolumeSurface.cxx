@@ -191,6 +191,61 @@ void OrientOutwards(
   surface->SetPolys(turned);
 }
 
+/**
+ * The caps that close an image's opaque region at its whole extent's faces (the surface's points
+ * past `image`'s own samples, toward the padding) take the data's value at the face (the image
+ * trilinearly interpolated there), not the isovalue: a volume cut by its extent (a CT's top and
+ * bottom) shows its data on the cut, as VTK's ray caster does. After OrientOutwards(), which
+ * reads the isovalues.
+ */
+void ColourCaps(vtkPolyData* surface, vtkImageData* image, vtkDataArray* values)
+{
+  vtkDataArray* scalars = surface->GetPointData()->GetScalars();
+  int e[6];
+  image->GetExtent(e);
+  if (!scalars || !values || e[0] > e[1] || e[2] > e[3] || e[4] > e[5])
+  {
+    return;
+  }
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+  {
+    double x[3], ijk[3];
+    surface->GetPoint(i, x);
+    image->TransformPhysicalPointToContinuousIndex(x, ijk);
+    bool outside = false;
+    int lo[3];
+    double t[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      outside = outside || ijk[a] < e[2 * a] - 1e-6 || ijk[a] > e[2 * a + 1] + 1e-6;
+      const double c = std::min(std::max(ijk[a], double(e[2 * a])), double(e[2 * a + 1]));
+      lo[a] = std::min(static_cast<int>(std::floor(c)), std::max(e[2 * a + 1] - 1, e[2 * a]));
+      t[a] = c - lo[a];
+    }
+    if (!outside)
+    {
+      continue;
+    }
+    double v = 0.0;
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      int at[3];
+      double w = 1.0;
+      for (int a = 0; a < 3; ++a)
+      {
+        const int up = (corner >> a) & 1;
+        at[a] = std::min(lo[a] + up, e[2 * a + 1]);
+        w *= up ? t[a] : 1.0 - t[a];
+      }
+      if (w > 0.0)
+      {
+        v += w * values->GetComponent(image->ComputePointId(at), 0);
+      }
+    }
+    scalars->SetComponent(i, 0, v);
+  }
+}
+
 /** A key of a point's exact coordinates (-0 taken as 0): equal coordinates, equal keys. */
 vtkTypeUInt64 PointKey(const double x[3])
 {
@@ -523,11 +578,13 @@ int vtkStylizeVolumeSurface::RequestData(
 
   // Images: closed where the opaque region meets the whole extent's faces.
   vtkImageData* image = vtkImageData::SafeDownCast(data);
+  vtkSmartPointer<vtkImageData> unpadded; // (kept: `data` moves on to the padded image)
   if (image && crossings)
   {
     vtkSmartPointer<vtkImageData> padded = this->PadToClose(image, values, range, inputVector);
     if (padded)
     {
+      unpadded = image;
       data = padded;
       image = padded;
       double padRange[2];
@@ -542,6 +599,10 @@ int vtkStylizeVolumeSurface::RequestData(
   if (crossings)
   {
     OrientOutwards(result, isovalues, rising);
+  }
+  if (unpadded)
+  {
+    ColourCaps(result, unpadded, values);
   }
   // Other meshes: closed where the opaque region meets their outer faces.
   vtkSmartPointer<vtkPolyData> caps = !image && crossings

@@ -8,14 +8,16 @@
  * OpacityThreshold, so that the region of samples at least that opaque is closed by them. Where
  * that region reaches the edge of an image's whole extent, the image is padded by one sample of
  * a transparent value so that the region is closed there too (a CT's outer faces, a field's
- * box); where it reaches the outer faces of any other mesh (an unstructured grid's), those faces,
- * cut along the isovalues, close it, with the data's scalar on them (but not the faces between
- * processes' pieces: SharedPoints). With IsoValues set (the volume's isosurface blend mode),
- * those values are used instead.
+ * box), those faces carrying the data's value there (a CT cut by its extent shows the cut's
+ * data, as the ray caster does); where it reaches the outer faces of any other mesh (an
+ * unstructured grid's), those faces, cut along the isovalues, close it, with the data's scalar on
+ * them (but not the faces between processes' pieces: SharedPoints). With IsoValues set (the
+ * volume's isosurface blend mode), those values are used instead.
  *
  * The output's point normals are the scalar's gradient, pointing out of the opaque region, and
- * its point scalars are the isovalue (the input array's name), for colouring with the volume's
- * colour transfer function. The styles of VTK Stylize draw a volume as this surface
+ * its point scalars are the isovalue (the data on the faces that close it; the input array's
+ * name), for colouring with the volume's colour transfer function. The styles of VTK Stylize
+ * draw a volume as this surface
  * (vtkStylizeStylePass::StylizeVolumes): comic zones, pixel art, pencil strokes and feature lines
  * then apply to it like to any surface.
  *

@@ -2,11 +2,11 @@
 // 0 to 1 at 1 and the threshold 0.5 the surface is the sphere r = 0.5 with normals pointing
 // out of it (and the triangles' own normals agreeing); a falling opacity makes the outside
 // opaque: the same sphere, normals pointing in, and the box's faces closing the region where
-// it meets the image's edge; isovalues replace the crossings; an opacity that is solid
-// everywhere gives the outer faces and one solid nowhere nothing; the same field as an
-// unstructured grid (vtkContourFilter's path) gives the sphere; cell scalars are moved to the
-// points; a crossing is found to 1e-9 and a threshold of NaN or an empty input give nothing; a
-// piece of the image is closed at its cut unless the whole image's extent is given; an
+// it meets the image's edge, with the data's values there; isovalues replace the crossings; an
+// opacity that is solid everywhere gives the outer faces and one solid nowhere nothing; the same
+// field as an unstructured grid (vtkContourFilter's path) gives the sphere; cell scalars are
+// moved to the points; a crossing is found to 1e-9 and a threshold of NaN or an empty input give
+// nothing; a piece of the image is closed at its cut unless the whole image's extent is given; an
 // unstructured grid's opaque shell is closed by the grid's outer faces, but a piece of it not
 // where the other piece's outer points are shared (SetSharedPoints).
 #include "vtkStylizeTestChecks.h"
@@ -209,6 +209,33 @@ void CheckSplit(vtkImageData* field, vtkPiecewiseFunction* down)
     static_cast<long long>(OnCut(other)), static_cast<long long>(j.OnFaces),
     static_cast<long long>(o.OnFaces), lowKeys.size());
 }
+
+/** The box's faces that close `field`'s opaque shell carry f there (the point moved onto the
+ * face), not the isovalue. */
+void CheckCapValues(vtkImageData* field, vtkPiecewiseFunction* down)
+{
+  const double h = 2.0 / (N - 1);
+  auto shell = Surface(field, down, 0.5);
+  vtkDataArray* f = shell->GetPointData()->GetScalars();
+  double worst = 0.0;
+  vtkIdType capped = 0;
+  for (vtkIdType i = 0; f && i < shell->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    shell->GetPoint(i, p);
+    if (std::max(std::abs(p[0]), std::max(std::abs(p[1]), std::abs(p[2]))) > 1.0 + 1e-6)
+    {
+      for (double& c : p)
+      {
+        c = std::min(1.0, std::max(-1.0, c));
+      }
+      worst = std::max(worst, std::abs(f->GetComponent(i, 0) - (1.0 - vtkMath::Norm(p))));
+      ++capped;
+    }
+  }
+  STYLIZE_CHECK(capped > 6 * (N - 2) * (N - 2) / 2 && worst < 0.5 * h,
+    "box faces' values: %lld points, error %g", static_cast<long long>(capped), worst);
+}
 }
 
 int TestVolumeSurface(int, char*[])
@@ -252,6 +279,7 @@ int TestVolumeSurface(int, char*[])
       s.Outward, s.Agreeing);
     STYLIZE_CHECK(s.OnFaces > 6 * (N - 2) * (N - 2) / 2, "box faces: %lld points",
       static_cast<long long>(s.OnFaces));
+    CheckCapValues(field, down);
   }
   // A piece of the image (x <= 0, a process's half, given as data): closed at its own face x = 0
   // unless the whole image's extent says that face is a cut, where the next piece goes on.
