@@ -211,6 +211,51 @@ def field(_data):
     return [volume], props, (35, 25, 1.0)
 
 
+def exodus_grid(path):
+    """The first block of an Exodus II file with all its point arrays."""
+    reader = vtk.vtkExodusIIReader()
+    reader.SetFileName(path)
+    reader.UpdateInformation()
+    for i in range(reader.GetNumberOfPointResultArrays()):
+        reader.SetPointResultArrayStatus(reader.GetPointResultArrayName(i), 1)
+    reader.Update()
+    blocks = reader.GetOutput().NewIterator()
+    blocks.InitTraversal()
+    return blocks.GetCurrentDataObject()
+
+
+def unstructured_volume(grid, name, low_color, high_color, opacities):
+    """`grid` tetrahedralized as a vtkVolume of VTK's unstructured ray caster by its array `name`:
+    colours from `low_color` to `high_color` over its range, (fraction of the range, opacity)
+    points, opacity per 5% of the mesh's diagonal."""
+    tets = vtk.vtkDataSetTriangleFilter()
+    tets.SetInputData(grid)
+    tets.Update()
+    cells = tets.GetOutput()
+    cells.GetPointData().SetActiveScalars(name)
+    lo, hi = cells.GetPointData().GetArray(name).GetRange()
+    mapper = vtk.vtkUnstructuredGridVolumeRayCastMapper()
+    mapper.AutoAdjustSampleDistancesOff()  # (a sample per pixel: the same picture at any load)
+    mapper.SetImageSampleDistance(1.0)
+    mapper.SetInputData(cells)
+    prop = vtk.vtkVolumeProperty()
+    prop.ShadeOn()
+    prop.SetInterpolationTypeToLinear()
+    ctf = vtk.vtkColorTransferFunction()
+    ctf.AddRGBPoint(lo, *low_color)
+    ctf.AddRGBPoint(hi, *high_color)
+    otf = vtk.vtkPiecewiseFunction()
+    for fraction, o in opacities:
+        otf.AddPoint(lo + fraction * (hi - lo), o)
+    prop.SetColor(ctf)
+    prop.SetScalarOpacity(otf)
+    prop.SetScalarOpacityUnitDistance(0.05 * cells.GetLength())
+    volume = vtk.vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    return volume
+
+
 def headsq(data):
     """VTK's headsq CT (64 x 64 x 93) with the transfer functions of VTK's MedicalDemo4 example
     (skin at a sixth of full opacity, bone nearly opaque; not chosen here), seen as VTK's
@@ -227,15 +272,7 @@ def disk(data):
     ParaView's tutorial shows it: the temperature as a volume, a slice across the flow coloured
     by the pressure, streamlines of the velocity, arrow glyphs of it on the slice, the domain's
     outline and cube axes."""
-    reader = vtk.vtkExodusIIReader()
-    reader.SetFileName(os.path.join(data, "disk_out_ref.ex2"))
-    reader.UpdateInformation()
-    for i in range(reader.GetNumberOfPointResultArrays()):
-        reader.SetPointResultArrayStatus(reader.GetPointResultArrayName(i), 1)
-    reader.Update()
-    blocks = reader.GetOutput().NewIterator()
-    blocks.InitTraversal()
-    grid = blocks.GetCurrentDataObject()
+    grid = exodus_grid(os.path.join(data, "disk_out_ref.ex2"))
     grid.GetPointData().SetActiveVectors("V")
     props = []
     pres = grid.GetPointData().GetArray("Pres").GetRange()
@@ -305,31 +342,8 @@ def disk(data):
     outline = vtk.vtkOutlineFilter()
     outline.SetInputData(grid)
     actor(outline, "outline", colored=False, color=(0.3, 0.3, 0.3), width=1.5)
-    tets = vtk.vtkDataSetTriangleFilter()
-    tets.SetInputData(grid)
-    tets.Update()
-    cells = tets.GetOutput()
-    cells.GetPointData().SetActiveScalars("Temp")
-    lo, hi = cells.GetPointData().GetArray("Temp").GetRange()
-    mapper = vtk.vtkUnstructuredGridVolumeRayCastMapper()
-    mapper.AutoAdjustSampleDistancesOff()  # (a sample per pixel: the same picture at any load)
-    mapper.SetImageSampleDistance(1.0)
-    mapper.SetInputData(cells)
-    prop = vtk.vtkVolumeProperty()
-    prop.ShadeOn()
-    prop.SetInterpolationTypeToLinear()
-    ctf = vtk.vtkColorTransferFunction()
-    ctf.AddRGBPoint(lo, 1.0, 0.9, 0.5)
-    ctf.AddRGBPoint(hi, 0.8, 0.2, 0.0)
-    otf = vtk.vtkPiecewiseFunction()
-    for v, o in ((lo, 0.0), (lo + 0.4 * (hi - lo), 0.0), (hi, 0.8)):
-        otf.AddPoint(v, o)
-    prop.SetColor(ctf)
-    prop.SetScalarOpacity(otf)
-    prop.SetScalarOpacityUnitDistance(0.05 * cells.GetLength())
-    volume = vtk.vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
+    volume = unstructured_volume(grid, "Temp", (1.0, 0.9, 0.5), (0.8, 0.2, 0.0),
+                                 ((0.0, 0.0), (0.4, 0.0), (1.0, 0.8)))
     axes = vtk.vtkCubeAxesActor()
     axes.SetBounds(grid.GetBounds())
     for i in range(3):
@@ -345,39 +359,9 @@ def disk(data):
 def vessel(data):
     """The real-data set's Exodus vessel (hexahedra) by its temperature, tetrahedralized, as an
     unstructured volume (VTK's unstructured ray caster); held out: its ramp was set once."""
-    reader = vtk.vtkExodusIIReader()
-    reader.SetFileName(os.path.join(data, "vessel.ex2"))
-    reader.UpdateInformation()
-    for i in range(reader.GetNumberOfPointResultArrays()):
-        reader.SetPointResultArrayStatus(reader.GetPointResultArrayName(i), 1)
-    reader.Update()
-    blocks = reader.GetOutput().NewIterator()
-    blocks.InitTraversal()
-    tets = vtk.vtkDataSetTriangleFilter()
-    tets.SetInputData(blocks.GetCurrentDataObject())
-    tets.Update()
-    grid = tets.GetOutput()
-    grid.GetPointData().SetActiveScalars("Temp")
-    lo, hi = grid.GetPointData().GetArray("Temp").GetRange()
-    mapper = vtk.vtkUnstructuredGridVolumeRayCastMapper()
-    mapper.AutoAdjustSampleDistancesOff()  # (a sample per pixel: the same picture at any load)
-    mapper.SetImageSampleDistance(1.0)
-    mapper.SetInputData(grid)
-    prop = vtk.vtkVolumeProperty()
-    prop.ShadeOn()
-    prop.SetInterpolationTypeToLinear()
-    ctf = vtk.vtkColorTransferFunction()
-    ctf.AddRGBPoint(lo, 0.23, 0.30, 0.75)
-    ctf.AddRGBPoint(hi, 0.71, 0.02, 0.15)
-    otf = vtk.vtkPiecewiseFunction()
-    for v, o in ((lo, 0.0), (lo + 0.5 * (hi - lo), 0.05), (hi, 0.8)):
-        otf.AddPoint(v, o)
-    prop.SetColor(ctf)
-    prop.SetScalarOpacity(otf)
-    prop.SetScalarOpacityUnitDistance(0.05 * grid.GetLength())
-    volume = vtk.vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
+    volume = unstructured_volume(exodus_grid(os.path.join(data, "vessel.ex2")), "Temp",
+                                 (0.23, 0.30, 0.75), (0.71, 0.02, 0.15),
+                                 ((0.0, 0.0), (0.5, 0.05), (1.0, 0.8)))
     return [volume], [], (30, 20, 1.2)
 
 
