@@ -115,6 +115,49 @@ def liver(data):
     return [volume], [], (30, 20, 1.2)
 
 
+def diverging(low, high):
+    """ParaView's cool-to-warm colour map over [low, high]."""
+    lut = vtk.vtkColorTransferFunction()
+    lut.SetColorSpaceToDiverging()
+    lut.AddRGBPoint(low, 0.23, 0.30, 0.75)
+    lut.AddRGBPoint(high, 0.71, 0.02, 0.15)
+    return lut
+
+
+def tagged_actor(props, lut, algorithm, tag, colored=True, color=(1, 1, 1), width=1.0,
+                 array=None):
+    """An actor of `algorithm`'s output appended to `props`, coloured through `lut` (by the point
+    array `array`, else the active scalars) or in `color`, tagged for render(only=...)."""
+    mapper = vtk.vtkDataSetMapper()
+    mapper.SetInputConnection(algorithm.GetOutputPort())
+    mapper.SetLookupTable(lut)
+    mapper.SetScalarVisibility(colored)
+    if array:
+        mapper.SetScalarModeToUsePointFieldData()
+        mapper.SelectColorArray(array)
+    mapper.UseLookupTableScalarRangeOn()
+    a = vtk.vtkActor()
+    a.SetMapper(mapper)
+    a.GetProperty().SetColor(*color)
+    a.GetProperty().SetLineWidth(width)
+    a.tag = tag
+    props.append(a)
+    return a
+
+
+def black_cube_axes(bounds):
+    """vtkCubeAxesActor around `bounds`, its lines, titles and labels black."""
+    axes = vtk.vtkCubeAxesActor()
+    axes.SetBounds(bounds)
+    for i in range(3):
+        axes.GetTitleTextProperty(i).SetColor(0, 0, 0)
+        axes.GetLabelTextProperty(i).SetColor(0, 0, 0)
+    for lines in (axes.GetXAxesLinesProperty(), axes.GetYAxesLinesProperty(),
+                  axes.GetZAxesLinesProperty()):
+        lines.SetColor(0, 0, 0)
+    return axes
+
+
 def field(_data):
     """VTK's wavelet as ParaView shows a field: slice, glyphs, streamlines, contour, axes, volume."""
     source = vtk.vtkRTAnalyticSource()
@@ -122,25 +165,11 @@ def field(_data):
     source.Update()
     image = source.GetOutput()
     lo, hi = image.GetPointData().GetScalars().GetRange()
-    lut = vtk.vtkColorTransferFunction()
-    lut.SetColorSpaceToDiverging()
-    lut.AddRGBPoint(lo, 0.23, 0.30, 0.75)
-    lut.AddRGBPoint(hi, 0.71, 0.02, 0.15)
+    lut = diverging(lo, hi)
     props = []
 
-    def actor(algorithm, tag, colored=True, color=(1, 1, 1), width=1.0):
-        mapper = vtk.vtkPolyDataMapper()
-        mapper.SetInputConnection(algorithm.GetOutputPort())
-        mapper.SetLookupTable(lut)
-        mapper.SetScalarVisibility(colored)
-        mapper.UseLookupTableScalarRangeOn()
-        a = vtk.vtkActor()
-        a.SetMapper(mapper)
-        a.GetProperty().SetColor(*color)
-        a.GetProperty().SetLineWidth(width)
-        a.tag = tag
-        props.append(a)
-        return a
+    def actor(algorithm, tag, **kwargs):
+        return tagged_actor(props, lut, algorithm, tag, **kwargs)
 
     plane = vtk.vtkPlane()
     plane.SetOrigin(0, 0, -12)
@@ -197,17 +226,7 @@ def field(_data):
     volume = volume_of(image, [(lo, 0.23, 0.30, 0.75), (hi, 0.71, 0.02, 0.15)],
                        [(lo, 0.0), (0.5 * (lo + hi), 0.0), (0.75 * (lo + hi) / 1.5 + 0.25 * hi, 0.3),
                         (hi, 0.8)])
-    axes = vtk.vtkCubeAxesActor()
-    axes.SetBounds(image.GetBounds())
-    axes.GetTitleTextProperty(0).SetColor(0, 0, 0)
-    axes.GetLabelTextProperty(0).SetColor(0, 0, 0)
-    for i in range(3):
-        axes.GetXAxesLinesProperty().SetColor(0, 0, 0)
-        axes.GetYAxesLinesProperty().SetColor(0, 0, 0)
-        axes.GetZAxesLinesProperty().SetColor(0, 0, 0)
-        axes.GetTitleTextProperty(i).SetColor(0, 0, 0)
-        axes.GetLabelTextProperty(i).SetColor(0, 0, 0)
-    props.append(axes)
+    props.append(black_cube_axes(image.GetBounds()))
     return [volume], props, (35, 25, 1.0)
 
 
@@ -275,27 +294,10 @@ def disk(data):
     grid = exodus_grid(os.path.join(data, "disk_out_ref.ex2"))
     grid.GetPointData().SetActiveVectors("V")
     props = []
-    pres = grid.GetPointData().GetArray("Pres").GetRange()
-    lut = vtk.vtkColorTransferFunction()
-    lut.SetColorSpaceToDiverging()
-    lut.AddRGBPoint(pres[0], 0.23, 0.30, 0.75)
-    lut.AddRGBPoint(pres[1], 0.71, 0.02, 0.15)
+    lut = diverging(*grid.GetPointData().GetArray("Pres").GetRange())
 
-    def actor(algorithm, tag, colored=True, color=(1, 1, 1), width=1.0, array="Pres"):
-        mapper = vtk.vtkDataSetMapper()
-        mapper.SetInputConnection(algorithm.GetOutputPort())
-        mapper.SetLookupTable(lut)
-        mapper.SetScalarVisibility(colored)
-        mapper.SetScalarModeToUsePointFieldData()
-        mapper.SelectColorArray(array)
-        mapper.UseLookupTableScalarRangeOn()
-        a = vtk.vtkActor()
-        a.SetMapper(mapper)
-        a.GetProperty().SetColor(*color)
-        a.GetProperty().SetLineWidth(width)
-        a.tag = tag
-        props.append(a)
-        return a
+    def actor(algorithm, tag, **kwargs):
+        return tagged_actor(props, lut, algorithm, tag, array="Pres", **kwargs)
 
     plane = vtk.vtkPlane()
     plane.SetNormal(1, 0, 0)
@@ -344,15 +346,7 @@ def disk(data):
     actor(outline, "outline", colored=False, color=(0.3, 0.3, 0.3), width=1.5)
     volume = unstructured_volume(grid, "Temp", (1.0, 0.9, 0.5), (0.8, 0.2, 0.0),
                                  ((0.0, 0.0), (0.4, 0.0), (1.0, 0.8)))
-    axes = vtk.vtkCubeAxesActor()
-    axes.SetBounds(grid.GetBounds())
-    for i in range(3):
-        axes.GetTitleTextProperty(i).SetColor(0, 0, 0)
-        axes.GetLabelTextProperty(i).SetColor(0, 0, 0)
-    for lines in (axes.GetXAxesLinesProperty(), axes.GetYAxesLinesProperty(),
-                  axes.GetZAxesLinesProperty()):
-        lines.SetColor(0, 0, 0)
-    props.append(axes)
+    props.append(black_cube_axes(grid.GetBounds()))
     return [volume], props, (35, 15, 1.0, (1, 0, 0), (0, 0, 1))
 
 
