@@ -1,7 +1,9 @@
 #include "vtkLineArtPass.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkComicPatterns.h"
 #include "vtkFloatArray.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
@@ -35,7 +37,7 @@ static_assert(vtkStylizeStagesInOrder(LineArtStages), "the line art's stages out
 struct vtkLineArtPass::Internals
 {
   vtkNew<vtkStylizeFeatureStrokes> Strokes;
-  /** The translucent layers': no lines (their ink stays empty). */
+  /** The translucent layers' outlines (TranslucentOutlines). */
   vtkNew<vtkStylizeFeatureStrokes> LayerStrokes;
   vtkWeakPointer<vtkRenderer> LastRenderer;
 };
@@ -111,13 +113,47 @@ vtkStylizeFeatureStrokes::Settings StrokeSettings(vtkLineArtPass* pass)
   s.SuggestiveThreshold = pass->GetSuggestiveThreshold();
   return s.WithIsoLines(pass->GetIsoLines(), pass->GetIsoLineWidth(), pass->GetIsoLineSpacing());
 }
+
+/** The translucent surfaces' lines: their outline (TranslucentOutlines), or none. */
+vtkStylizeFeatureStrokes::Settings OutlineSettings(vtkLineArtPass* pass)
+{
+  vtkStylizeFeatureStrokes::Settings s = StrokeSettings(pass);
+  for (int k = 0; k < vtkStylizeFeatureStrokes::Kinds; ++k)
+  {
+    const bool outline =
+      k == vtkStylizeFeatureLines::CONTOUR || k == vtkStylizeFeatureLines::BOUNDARY;
+    s.Widths[k] = outline && pass->GetTranslucentOutlines() ? s.Widths[k] : 0.0;
+  }
+  s.Translucent = true;
+  return s;
+}
 }
 
 //------------------------------------------------------------------------------
 vtkPolyData* vtkLineArtPass::ComputeFigureStrokes(int width, int height, int tiles)
 {
-  return this->Internal->Strokes->RenderFigure(
-    this, this->Internal->LastRenderer, StrokeSettings(this), width, height, tiles);
+  Internals& in = *this->Internal;
+  vtkPolyData* strokes =
+    in.Strokes->RenderFigure(this, in.LastRenderer, StrokeSettings(this), width, height, tiles);
+  // The translucent surfaces' outlines, as the frame's translucent layers draw them (on one
+  // process: several would need the opaque pieces gathered as occluders of the translucent ones).
+  vtkMultiProcessController* c = this->GetGBufferPass()->GetController();
+  if (!this->TranslucentOutlines || this->GetTranslucentLayers() == 0 || !in.LastRenderer ||
+    (c && c->GetNumberOfProcesses() > 1))
+  {
+    return strokes;
+  }
+  vtkPolyData* outlines = in.LayerStrokes->RenderFigure(
+    this, in.LastRenderer, OutlineSettings(this), width, height, tiles);
+  if (outlines->GetNumberOfCells() > 0)
+  {
+    vtkNew<vtkAppendPolyData> append;
+    append->AddInputData(strokes);
+    append->AddInputData(outlines);
+    append->Update();
+    strokes->ShallowCopy(append->GetOutput());
+  }
+  return strokes;
 }
 
 //------------------------------------------------------------------------------
@@ -160,11 +196,8 @@ bool vtkLineArtPass::RenderStyle(const vtkRenderState* s, const Frame& frame)
   Internals& in = *this->Internal;
   in.LastRenderer = frame.Renderer;
   const bool layer = this->GetTranslucentLayer() > 0;
-  vtkStylizeFeatureStrokes::Settings settings = StrokeSettings(this);
-  if (layer)
-  {
-    std::fill(settings.Widths, settings.Widths + vtkStylizeFeatureStrokes::Kinds, 0.0);
-  }
+  const vtkStylizeFeatureStrokes::Settings settings =
+    layer ? OutlineSettings(this) : StrokeSettings(this);
   vtkTextureObject* ink =
     (layer ? in.LayerStrokes : in.Strokes)->RenderFrame(this, frame, settings);
 
@@ -217,6 +250,7 @@ void vtkLineArtPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CreaseAngle: " << this->CreaseAngle << " deg\n";
   os << indent << "RidgeThreshold: " << this->RidgeThreshold << "\n";
   os << indent << "SuggestiveThreshold: " << this->SuggestiveThreshold << "\n";
+  os << indent << "TranslucentOutlines: " << (this->TranslucentOutlines ? "on" : "off") << "\n";
   os << indent
      << "Tone: " << (this->Tone == DOTS ? "dots" : (this->Tone == SHADES ? "shades" : "none"))
      << "\n";

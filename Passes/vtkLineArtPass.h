@@ -20,8 +20,8 @@
  * What does not depend on the view (curvature, creases, ridges and valleys) is computed once per
  * mesh and kept; a new camera recomputes only the contours and suggestive contours. The
  * interactive variant (InteractiveUpdateRate) draws contours, boundaries and creases only.
- * Lines are found on opaque surfaces: a translucent surface (TranslucentLayers) is drawn as
- * its paper or tone, without lines, over the line art with its opacity.
+ * A translucent surface (TranslucentLayers) is drawn as its paper or tone with its outline
+ * (TranslucentOutlines), over the line art with its opacity.
  * Lengths are in points (one pixel of an image ReferenceHeight pixels tall). Method, measures
  * and costs: docs/algorithms.md ("Feature lines").
  * The pass invokes ProgressEvent (a double in [0, 1]) while a frame finds the lines of its
@@ -133,6 +133,18 @@ public:
    */
   vtkSetClampMacro(SuggestiveThreshold, double, 0.0, 1.0e9);
   vtkGetMacro(SuggestiveThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Whether a translucent surface's outline is drawn: its contours and boundaries, in its
+   * translucent layer (TranslucentLayers), hidden by the surfaces in front of it and seen through
+   * the translucent ones as the layer is (a glass shell, a volume's haze: VolumeHaze). Off, a
+   * translucent surface is its paper (or tone) alone. Default on.
+   */
+  vtkSetMacro(TranslucentOutlines, bool);
+  vtkGetMacro(TranslucentOutlines, bool);
+  vtkBooleanMacro(TranslucentOutlines, bool);
   ///@}
 
   /** The paper under the ink. */
@@ -251,6 +263,7 @@ protected:
   double CreaseAngle = 40.0;
   double RidgeThreshold = 40.0;
   double SuggestiveThreshold = 2000.0;
+  bool TranslucentOutlines = true;
   int Tone = NONE;
   int ToneLevels = 3;
   double ToneDarkest = 0.6;

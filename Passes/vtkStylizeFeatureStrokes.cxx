@@ -348,7 +348,7 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
   const int mask = KindMask(settings, view.Interactive);
   vtkCamera* camera = view.Renderer ? view.Renderer->GetActiveCamera() : nullptr;
   const std::vector<vtkActor*> actors =
-    camera && mask ? LineActors(view.Renderer) : std::vector<vtkActor*>();
+    camera && mask ? LineActors(view.Renderer, settings.Translucent) : std::vector<vtkActor*>();
   const std::vector<Item> items = SurfacesOf(actors, view);
   if (linearDepth)
   {
@@ -371,15 +371,28 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
     s->Seen = true;
   }
   // Ray casting: one locator per occluding surface, built once and queried by every surface's
-  // visibility (a locator per pair of surfaces was quadratic in their number).
-  std::vector<vtkSmartPointer<vtkStylizeRayOccluder>> occluders;
-  for (const Item& other : linearDepth ? std::vector<Item>() : items)
+  // visibility (a locator per pair of surfaces was quadratic in their number). Translucent
+  // surfaces' lines are hidden by the opaque surfaces alone (the translucent ones are seen
+  // through).
+  std::vector<Item> occluding;
+  if (!linearDepth)
   {
+    occluding = settings.Translucent && !items.empty()
+      ? SurfacesOf(LineActors(view.Renderer), View())
+      : items;
+  }
+  std::vector<vtkSmartPointer<vtkStylizeRayOccluder>> occluders;
+  for (const Item& other : occluding)
+  {
+    std::unique_ptr<Surface>& s = in.Cache[{ other.Data, other.Wireframe }];
+    if (!s || s->Data.GetPointer() != other.Data)
+    {
+      s.reset(new Surface(other.Data, other.Wireframe));
+    }
     if (!other.Wireframe)
     {
       occluders.push_back(vtkSmartPointer<vtkStylizeRayOccluder>::New());
-      occluders.back()->SetSurface(
-        in.Cache[{ other.Data, other.Wireframe }]->SurfaceOf(), other.Matrix);
+      occluders.back()->SetSurface(s->SurfaceOf(), other.Matrix);
     }
   }
   // Each surface's lines report their progress as this object's (ProgressEvent, over all the
@@ -573,6 +586,23 @@ vtkTextureObject* vtkStylizeFeatureStrokes::RenderFrame(
   vtkFloatArray* depth = in.LinearDepth;
   bool haveDepth =
     style->GetGBufferPass()->DownloadChannel(vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER, depth);
+  if (haveDepth && settings.Translucent && style->GetSceneGBufferPass() != style->GetGBufferPass())
+  {
+    // A translucent layer's lines are hidden by the layer's surface and by the opaque scene
+    // where the layer has none (a depth of 0).
+    vtkNew<vtkFloatArray> layer;
+    if (style->GetSceneGBufferPass()->DownloadChannel(
+          vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER, layer) &&
+      layer->GetNumberOfTuples() == depth->GetNumberOfTuples())
+    {
+      float* d = depth->GetPointer(0);
+      const float* l = layer->GetPointer(0);
+      for (vtkIdType i = 0; i < depth->GetNumberOfTuples(); ++i)
+      {
+        d[i] = l[i] > 0.0f && (d[i] <= 0.0f || l[i] < d[i]) ? l[i] : d[i];
+      }
+    }
+  }
   // Several processes, each with its own pieces: process 0 holds the composited depth, which
   // every process tests its lines against; their ink is combined on process 0.
   vtkMultiProcessController* c = style->GetGBufferPass()->GetController();
@@ -588,7 +618,7 @@ vtkTextureObject* vtkStylizeFeatureStrokes::RenderFrame(
     }
     c->Broadcast(depth->GetPointer(0), pixels, 0);
     haveDepth = true;
-    ShareBounds(c, LineActors(frame.Renderer), view);
+    ShareBounds(c, LineActors(frame.Renderer, settings.Translucent), view);
   }
   this->Build(view, settings, haveDepth ? depth : nullptr);
   this->Rasterize(in.Coverage);

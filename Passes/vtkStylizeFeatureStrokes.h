@@ -71,6 +71,9 @@ public:
     double CreaseAngle = 40.0;
     double RidgeThreshold = 40.0;
     double SuggestiveThreshold = 2000.0;
+    /** The lines of the translucent surfaces (opacity below 1: a translucent layer's, seen
+     * against that layer's depth) instead of the opaque ones'. */
+    bool Translucent = false;
 
     /**
      * The default proportions between the kinds (those of vtkLineArtPass), the contours

@@ -85,7 +85,7 @@ void AddSurface(
 }
 
 /** The actors whose lines are drawn: visible, opaque, drawn as surfaces or wireframe. */
-std::vector<vtkActor*> LineActors(vtkRenderer* ren)
+std::vector<vtkActor*> LineActors(vtkRenderer* ren, bool translucent)
 {
   std::vector<vtkActor*> actors;
   vtkPropCollection* props = ren->GetViewProps();
@@ -95,7 +95,7 @@ std::vector<vtkActor*> LineActors(vtkRenderer* ren)
   {
     auto* actor = vtkActor::SafeDownCast(prop);
     if (actor && actor->GetVisibility() && actor->GetMapper() &&
-      actor->GetProperty()->GetOpacity() >= 1.0 &&
+      (actor->GetProperty()->GetOpacity() < 1.0) == translucent &&
       actor->GetProperty()->GetRepresentation() != VTK_POINTS)
     {
       actors.push_back(actor);

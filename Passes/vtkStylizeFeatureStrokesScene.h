@@ -124,8 +124,11 @@ double MeanEdgeLength(vtkPolyData* pd);
 /** How much a matrix scales lengths (the cube root of its 3 x 3 part's determinant). */
 double ScaleOf(vtkMatrix4x4* m);
 
-/** The actors whose lines are drawn: visible, opaque, drawn as surfaces or wireframe. */
-std::vector<vtkActor*> LineActors(vtkRenderer* ren);
+/**
+ * The actors whose lines are drawn: visible, drawn as surfaces or wireframe, and opaque (or,
+ * `translucent`, those with an opacity below 1: a translucent layer's).
+ */
+std::vector<vtkActor*> LineActors(vtkRenderer* ren, bool translucent = false);
 
 /** Appends the datasets of `data` with cells (itself, or every leaf of composite data). */
 void AddSurface(

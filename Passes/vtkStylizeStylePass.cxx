@@ -236,6 +236,12 @@ void vtkStylizeStylePass::RestorePatternAnchors()
 }
 
 //------------------------------------------------------------------------------
+vtkStylizeGBufferPass* vtkStylizeStylePass::GetSceneGBufferPass()
+{
+  return this->Internals->Scene;
+}
+
+//------------------------------------------------------------------------------
 int vtkStylizeStylePass::GetTranslucentLayer() const
 {
   return this->Internals->Layer;
@@ -754,7 +760,7 @@ void vtkStylizeStylePass::SetSceneOutputUniforms(vtkStylizeUniforms& u, vtkRende
   const double* bg = gbuffer->GetImageBackground();
   const bool layer = this->Internals->Layer > 0;
   u.Int("stylizeDiscardBackground", ren->Transparent() || layer ? 1 : 0)
-    .Int("stylizeTranslucentLayer", layer ? 1 : 0)
+    .Int("stylizeTranslucentLayer", this->Internals->Layer)
     .Int("stylizeSceneFromImage", gbuffer->GetSceneFromImage() ? 1 : 0)
     .Float4(
       "stylizeImageBackground", bg[0], bg[1], bg[2], gbuffer->GetImageBackgroundApplied() ? 1 : 0)

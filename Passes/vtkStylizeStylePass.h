@@ -532,6 +532,9 @@ protected:
   /** The translucent layer RenderStyle() is stylizing: 0 for the opaque scene, 1 the nearest. */
   int GetTranslucentLayer() const;
 
+  /** The G-buffer RenderStyle() is stylizing: GetGBufferPass(), or the translucent layer's. */
+  vtkStylizeGBufferPass* GetSceneGBufferPass();
+
   /** Ends a frame: draws what follows the stylized image (translucent geometry, volumes, the
    * overlay), then checks GL errors. */
   void EndFrame(const vtkRenderState* s);

@@ -420,11 +420,20 @@ vec3 pixelQuantize(vec3 c, float t)
 #endif
 
 #if defined(PIXEL_STAGE_STYLIZE) || defined(PIXEL_STAGE_UPSAMPLE)
-// An art pixel (the stylize stage's rgb and alpha code) as the output pixel it becomes.
-vec4 pixelOutputColour(vec4 art)
+// An art pixel (the stylize stage's rgb and alpha code) as the output pixel it becomes; q, its
+// index on the tiles' common grid. In a translucent layer of the quantized picture an art pixel
+// is all there or not at all (a screen door: its opacity against the Bayer matrix, shifted by
+// the golden ratio for each layer so that the layers' doors interleave), so that the layers
+// composite to the palette's colours; the PIXELATED layer blends.
+vec4 pixelOutputColour(vec4 art, ivec2 q)
 {
-  return stylizeOutput(art.a < 0.5, art.rgb, clamp(2.0 * (art.a - 1.0), 0.0, 1.0),
-    art.a > 1.75 ? 1.0 : 0.0);
+  float opacity = clamp(2.0 * (art.a - 1.0), 0.0, 1.0);
+  if (stylizeTranslucentLayer > 0 && PIXEL_LAYER != 1)
+  {
+    float t = fract((float(stylizeBayer(q)) - 0.5) / 64.0 + 0.618034 * float(stylizeTranslucentLayer - 1));
+    opacity = opacity > t ? 1.0 : 0.0;
+  }
+  return stylizeOutput(art.a < 0.5, art.rgb, opacity, art.a > 1.75 ? 1.0 : 0.0);
 }
 #endif
 
@@ -507,7 +516,7 @@ void pixelMain()
   vec4 art = vec4(result, edge ? 2.0 : (surface || plain ? 1.0 + 0.5 * opacity : 0.0));
 #ifdef PIXEL_BLIT_OUTPUT
   // the upsample's output colour, computed here once per art pixel and blitted to the screen
-  gl_FragData[0] = pixelOutputColour(art);
+  gl_FragData[0] = pixelOutputColour(art, p + pixelDitherOrigin);
 #else
   gl_FragData[0] = art;
 #endif
@@ -791,7 +800,7 @@ void pixelMain()
   {
     discard;
   }
-  gl_FragData[0] = pixelOutputColour(art);
+  gl_FragData[0] = pixelOutputColour(art, k + pixelDitherOrigin);
 #ifdef PIXEL_WRITE_DEPTH
 #ifdef PIXEL_FAST
   float depth = texelFetch(stylizeDepthTexture, k, 0).r;

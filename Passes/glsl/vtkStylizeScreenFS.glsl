@@ -198,8 +198,8 @@ uniform int stylizeSceneFromImage;
 uniform vec4 stylizeImageBackground;
 uniform vec3 stylizeRendererBackground;
 
-// 1 while the style draws a translucent layer (vtkStylizeStylePass::TranslucentLayers): the
-// output is premultiplied, its alpha the surface's opacity (imageAlpha: the G-buffer colour's
+// The translucent layer the style draws (vtkStylizeStylePass::TranslucentLayers: 1 the nearest,
+// 0 the opaque scene). In a layer the output is premultiplied, its alpha the surface's opacity (imageAlpha: the G-buffer colour's
 // alpha) or the ink of the style's lines, whichever is more; on the layer's background the ink
 // alone.
 uniform int stylizeTranslucentLayer;
@@ -218,7 +218,7 @@ float stylizeOutputAlpha(bool background, float imageAlpha, float ink)
 vec4 stylizeOutput(bool background, vec3 rgb, float imageAlpha, float ink)
 {
   vec3 colour = stylizeSaturateFinite(rgb);
-  if (stylizeTranslucentLayer == 1)
+  if (stylizeTranslucentLayer > 0)
   {
     float layerAlpha = background ? ink : max(imageAlpha, ink);
     layerAlpha = stylizeIsFinite(layerAlpha) ? clamp(layerAlpha, 0.0, 1.0) : 1.0;

@@ -16,8 +16,10 @@ over the stylized opaque scene with the surfaces' opacity, lines at full strengt
 2. Every style on real data: a scanned bunny at opacity 0.35 around an opaque CAD part (a
    gear, pinion). The translucent surface is stylized (the picture differs from plain blending);
    the renderer's depth-peeling setting changes no pixel; the pinion shows through a translucent
-   bunny and not through an opaque one, and more through a lower opacity; comic draws the
-   bunny's outline in full-strength ink.
+   bunny and not through an opaque one, and more through a lower opacity; the comic and the
+   line art draw the bunny's outline in full-strength ink (the line art not with
+   TranslucentOutlines off); pixel art with PALETTE16 keeps every pixel of the bunny in the
+   palette (its layers composited as a screen door).
 3. A magnified screenshot (vtkWindowToImageFilter, 3 x 3 tiles) of the translucent scene equals
    the direct render at the full size within realdata.seams' limits (a pixel differs when a
    channel is more than 16 levels apart): pixel art none, comic at most 0.05%.
@@ -35,7 +37,9 @@ from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
                                          vtkWindowToImageFilter)
 
+from stylize_png import near
 from stylize_test_scene import check, failures, offscreen_window, ply_mesh
+from stylize_volume_measures import in_palette
 
 data, out = sys.argv[1], sys.argv[2]
 os.makedirs(out, exist_ok=True)
@@ -194,7 +198,8 @@ print("pinion: %d px on the screen, %d of them inside the bunny"
 check(np.count_nonzero(pinion_mask) > 2000 and np.count_nonzero(inside) ==
       np.count_nonzero(pinion_mask), "the pinion should lie inside the bunny on the screen")
 
-STYLES = {"comic": "vtkComicPass", "pixel": "vtkPixelArtPass", "sketch": "vtkSketchPass"}
+STYLES = {"comic": "vtkComicPass", "pixel": "vtkPixelArtPass", "sketch": "vtkSketchPass",
+          "lines": "vtkLineArtPass"}
 for key, cls in STYLES.items():
     win, style = real_scene(cls)
     styled = capture(win, key + "_translucent")
@@ -225,13 +230,29 @@ for key, cls in STYLES.items():
           % (key, shows_low, shows))
     check(shows_opaque == 0, "%s: the pinion shows through an opaque bunny (%d px)"
           % (key, shows_opaque))
-    if key == "comic":
-        # the outline of the translucent bunny: ink as dark as on an opaque surface
-        edge = bunny_mask & ~np.roll(bunny_mask, 3, axis=1)
-        dark = np.count_nonzero(styled.max(axis=2)[edge] < 64)
-        print("comic: %d of %d pixels at the bunny's left border are dark ink" % (dark,
-                                                                                 np.count_nonzero(edge)))
-        check(dark > 0.5 * np.count_nonzero(edge), "comic: the translucent outline is not inked")
+    # the outline of the translucent bunny (the comic's edges, the line art's TranslucentOutlines):
+    # ink as dark as on an opaque surface
+    edge = bunny_mask & ~np.roll(bunny_mask, 3, axis=1)
+    if key in ("comic", "lines"):
+        dark = np.count_nonzero(near(styled.max(axis=2) < 64, 1)[edge])
+        print("%s: %d of %d pixels at the bunny's left border have dark ink within 1 px"
+              % (key, dark, np.count_nonzero(edge)))
+        check(dark > 0.5 * np.count_nonzero(edge), "%s: the translucent outline is not inked" % key)
+    if key == "lines":
+        win, style = real_scene(cls)
+        style.SetTranslucentOutlines(False)
+        bare = capture(win, "lines_no_outlines")
+        dark = np.count_nonzero(near(bare.max(axis=2) < 64, 1)[edge])
+        check(dark < 0.1 * np.count_nonzero(edge),
+              "lines: TranslucentOutlines off still inks the bunny's border (%d px)" % dark)
+    if key == "pixel":
+        # the layers composited as a screen door: the palette's colours only
+        win, style = real_scene(cls)
+        style.SetPalette(vtkstylize.vtkPixelArtPass.PALETTE16)
+        on_palette = in_palette(capture(win, "pixel_translucent_palette16")[bunny_mask])
+        print("pixel: %.3f of the bunny's pixels in PALETTE16" % on_palette)
+        check(on_palette == 1.0, "pixel: translucent layers left the palette (%.3f in it)"
+              % on_palette)
 
 # 3. A magnified screenshot of the translucent scene ---------------------------------------------
 for key in ("comic", "pixel"):

@@ -1,4 +1,4 @@
-// The line art at the extremes: odd scenes (no surface, wireframe, a translucent actor,
+// The line art at the extremes: odd scenes (no surface, wireframe, a translucent actor's outline,
 // composite data, a dataset that is not polygonal data, a single plane), scales, depth ranges,
 // a 1 x 1 window and every setting at or beyond its limits. Each renders without an error from
 // the pass (its GL errors included), draws ink where there are lines and none where there are
@@ -112,9 +112,16 @@ int TestLineArtExtremes(int, char*[])
       [](vtkRenderer* r, P*)
       { ForEachActor(r, [](vtkActor* a) { a->GetProperty()->SetRepresentationToWireframe(); }); },
       true },
-    { "a translucent actor", 240, 180, 1.0,
+    { "a translucent actor (its outline)", 240, 180, 1.0,
       [](vtkRenderer* r, P*)
       { ForEachActor(r, [](vtkActor* a) { a->GetProperty()->SetOpacity(0.5); }); },
+      true },
+    { "a translucent actor, TranslucentOutlines off", 240, 180, 1.0,
+      [](vtkRenderer* r, P* p)
+      {
+        ForEachActor(r, [](vtkActor* a) { a->GetProperty()->SetOpacity(0.5); });
+        p->TranslucentOutlinesOff();
+      },
       false },
     { "composite data", 240, 180, 1.0,
       [](vtkRenderer* r, P*)
