@@ -95,7 +95,7 @@ std::vector<vtkActor*> LineActors(vtkRenderer* ren, bool translucent)
   {
     auto* actor = vtkActor::SafeDownCast(prop);
     if (actor && actor->GetVisibility() && actor->GetMapper() &&
-      (actor->GetProperty()->GetOpacity() < 1.0) == translucent &&
+      (actor->HasTranslucentPolygonalGeometry() != 0) == translucent &&
       actor->GetProperty()->GetRepresentation() != VTK_POINTS)
     {
       actors.push_back(actor);

@@ -223,6 +223,30 @@ public:
   vtkGetMacro(VolumeHaze, double);
   ///@}
 
+  /** How a volume's haze is coloured (VolumeHazeMode). */
+  enum VolumeHazeModes
+  {
+    HAZE_SHELL = 0, ///< the colour map's colour at the haze, at the VolumeHaze opacity
+    HAZE_FOG = 1    ///< the colour and opacity VTK's ray casting accumulates, times VolumeHaze
+  };
+
+  ///@{
+  /**
+   * How a volume's haze (VolumeHaze above 0) is coloured: HAZE_SHELL (default), a shell of the
+   * VolumeHaze opacity in the colour the colour map gives there; HAZE_FOG, each point of the haze
+   * takes the colour and opacity VTK's ray casting accumulates from it along the view ray
+   * through the volume to its solid surface or out of it (opacity times VolumeHaze: 1 is VTK's
+   * own), recomputed when the view changes, so that a thick fog is as dark as VTK draws it and
+   * the shell's back and its grazing parts as faint or as strong: the layers of the shell,
+   * composited front to back, add up to the whole ray (the fog in front of the shell included).
+   * Data that is not an image is sampled on an image of 64 points along its longest side (again
+   * when it changes). HAZE_FOG needs the whole volume on one process and point scalars; on
+   * several processes (ParaView's ranks, each holding a piece) the haze is the shell.
+   */
+  vtkSetClampMacro(VolumeHazeMode, int, HAZE_SHELL, HAZE_FOG);
+  vtkGetMacro(VolumeHazeMode, int);
+  ///@}
+
   /**
    * Per-volume settings, as keys of the volume's vtkProp::GetPropertyKeys() information:
    * STYLIZE_VOLUME 0 leaves the volume to VTK (drawn as it is, over the stylized picture), 1
@@ -726,6 +750,7 @@ protected:
   bool HasPlainAnnotations();
   double VolumeOpacityThreshold = 0.1;
   double VolumeHaze = 0.0;
+  int VolumeHazeMode = HAZE_SHELL;
 
   /**
    * For a figure built after the frame (vtkLineArtPass::ComputeFigureStrokes()): puts the

@@ -2,6 +2,7 @@
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkActor.h"
+#include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommunicator.h"
@@ -9,19 +10,26 @@
 #include "vtkDataSet.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkResampleToImage.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStylizeStylePass.h"
+#include "vtkStylizeVolumeFog.h"
 #include "vtkStylizeVolumeSurface.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
@@ -48,10 +56,21 @@ struct vtkStylizeVolumeSurfaces::Proxy
   vtkNew<vtkMatrix4x4> Matrix;
   vtkNew<vtkColorTransferFunction> Gray; // a gray transfer function as colours
   bool Hazy = false;                     // the haze drawn in this frame
+  // The haze's accumulated colours (HAZE_FOG): what they were computed for.
+  vtkMTimeType FogTime = 0;
+  double FogScale = -1.0;
+  double FogSolid = -1.0;
+  bool Fogged = false; // the haze drawn with them
+  // Data that is not an image, resampled on an image for the fog (when the data changes).
+  vtkSmartPointer<vtkImageData> Resampled;
+  vtkMTimeType ResampledTime = 0;
 };
 
 namespace
 {
+/** The haze's surface: where the opacity reaches this share of the solid's threshold. */
+constexpr double HazeLevel = 0.1;
+
 /** The volume's own setting under `key` of its property keys, or `fallback`. */
 double VolumeThreshold(vtkVolume* volume, double fallback)
 {
@@ -221,6 +240,107 @@ std::vector<std::array<int, 6>> WholeExtents(
 }
 
 //------------------------------------------------------------------------------
+/**
+ * Colours the haze of `p` as VTK's ray casting shows it (AccumulateHaze(), from `camera`,
+ * recomputed only when the view, the haze, the place or the transfer functions change), or
+ * leaves it at the `haze` opacity (fog false, or data that cannot be sampled so).
+ */
+void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkPiecewiseFunction* opacity,
+  vtkScalarsToColors* colors, double unit, double solid, double haze, bool fog, vtkCamera* camera)
+{
+  auto* image = vtkImageData::SafeDownCast(data);
+  vtkPolyData* shell = p.Haze.Surface->GetOutput();
+  if (!image && fog && data && data->GetNumberOfCells() > 0)
+  {
+    // Other data, sampled on an image of up to 64 points along its longest side (where the
+    // image lies outside the data, vtkValidPointMask is 0 and the fog nothing).
+    if (!p.Resampled || p.ResampledTime < data->GetMTime())
+    {
+      double b[6];
+      data->GetBounds(b);
+      const double longest = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4], 1e-30 });
+      int dims[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        dims[a] =
+          std::max(2, static_cast<int>(std::lround(64.0 * (b[2 * a + 1] - b[2 * a]) / longest)));
+      }
+      vtkNew<vtkResampleToImage> resample;
+      resample->SetInputDataObject(data);
+      resample->SetSamplingDimensions(dims);
+      resample->Update();
+      p.Resampled = resample->GetOutput();
+      p.ResampledTime = data->GetMTime();
+    }
+    image = p.Resampled;
+  }
+  // (the array the volume's mapper draws, as it chooses it; on a resampled image, the point
+  // array of its name)
+  int cells = 0;
+  vtkAbstractVolumeMapper* vm = p.Volume ? p.Volume->GetMapper() : nullptr;
+  vtkDataArray* scalars = data && vm
+    ? vtkAbstractMapper::GetScalars(data, vm->GetScalarMode(), vm->GetArrayAccessMode(),
+        vm->GetArrayId(), vm->GetArrayName(), cells)
+    : nullptr;
+  if (scalars && image && image != data)
+  {
+    scalars = scalars->GetName() ? image->GetPointData()->GetArray(scalars->GetName()) : nullptr;
+    cells = 0;
+  }
+  fog = fog && camera && image && scalars && cells == 0 && shell->GetPoints();
+  if (fog)
+  {
+    const vtkMTimeType time = std::max({ camera->GetMTime(), shell->GetPoints()->GetMTime(),
+      p.Matrix->GetMTime(), opacity->GetMTime(), colors->GetMTime(), data->GetMTime() });
+    if (!p.Fogged || time > p.FogTime || haze != p.FogScale || solid != p.FogSolid ||
+      !shell->GetPointData()->GetArray("StylizeHazeRGBA"))
+    {
+      // the eye (or the view direction) in the image's coordinates
+      vtkNew<vtkMatrix4x4> inverse;
+      vtkMatrix4x4::Invert(p.Matrix, inverse);
+      double eye[4] = { 0.0, 0.0, 0.0, 1.0 }, dop[4] = { 0.0, 0.0, 0.0, 0.0 };
+      camera->GetPosition(eye);
+      camera->GetDirectionOfProjection(dop);
+      inverse->MultiplyPoint(eye, eye);
+      inverse->MultiplyPoint(dop, dop);
+      if (eye[3] != 0.0)
+      {
+        for (int a = 0; a < 3; ++a)
+        {
+          eye[a] /= eye[3];
+        }
+      }
+      vtkNew<vtkUnsignedCharArray> rgba;
+      rgba->SetName("StylizeHazeRGBA");
+      fog = vtkStylizeAccumulateHaze(shell, image, scalars, opacity, colors, unit,
+        HazeLevel * solid, solid, haze, eye, dop, camera->GetParallelProjection() != 0,
+        image->GetPointData()->GetArray("vtkValidPointMask"), rgba);
+      if (fog)
+      {
+        shell->GetPointData()->AddArray(rgba);
+        p.FogTime = time;
+        p.FogScale = haze;
+        p.FogSolid = solid;
+      }
+    }
+  }
+  p.Fogged = fog;
+  vtkPolyDataMapper* m = p.Haze.Mapper;
+  if (fog)
+  {
+    m->SetScalarModeToUsePointFieldData();
+    m->SelectColorArray("StylizeHazeRGBA");
+    m->SetColorModeToDirectScalars();
+  }
+  else
+  {
+    m->SetScalarModeToUsePointData();
+    m->SetColorModeToDefault();
+  }
+  p.Haze.Actor->GetProperty()->SetOpacity(fog ? 1.0 : haze);
+}
+
+//------------------------------------------------------------------------------
 vtkStylizeVolumeSurfaces::vtkStylizeVolumeSurfaces() = default;
 
 //------------------------------------------------------------------------------
@@ -267,7 +387,7 @@ bool vtkStylizeVolumeSurfaces::HasHaze(vtkPiecewiseFunction* f, double threshold
   {
     return false;
   }
-  const double low = 0.1 * threshold;
+  const double low = HazeLevel * threshold;
   auto hazy = [&](double o) { return o >= low && o < threshold; };
   double range[2];
   f->GetRange(range);
@@ -401,7 +521,8 @@ std::vector<std::vector<vtkTypeUInt64>> vtkStylizeVolumeSurfaces::SharedPoints(
 
 //------------------------------------------------------------------------------
 vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* volume,
-  double threshold, double haze, const int whole[6], const std::vector<vtkTypeUInt64>& shared)
+  double threshold, double haze, bool fog, vtkCamera* camera, const int whole[6],
+  const std::vector<vtkTypeUInt64>& shared)
 {
   std::unique_ptr<Proxy>& slot = this->Proxies[volume];
   if (!slot || slot->Volume.GetPointer() != volume)
@@ -469,7 +590,7 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
   p.Hazy = haze > 0.0 && iso.empty() && HasHaze(opacity, solid);
   if (p.Hazy)
   {
-    Feed(p.Haze.Surface, p.Haze.Selected, mapper, data, whole, shared, opacity, 0.1 * solid);
+    Feed(p.Haze.Surface, p.Haze.Selected, mapper, data, whole, shared, opacity, HazeLevel * solid);
   }
   const bool shade = property->GetShade(0) != 0;
   for (Proxy::Part* part : { &p.Solid, &p.Haze })
@@ -492,13 +613,21 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
     }
     part->Surface->Update();
   }
+  if (p.Hazy)
+  {
+    ColourHaze(p, data, opacity, colors, property->GetScalarOpacityUnitDistance(0), solid, haze,
+      fog, camera);
+  }
   return &p;
 }
 
 //------------------------------------------------------------------------------
-const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(
-  const vtkRenderState* s, double threshold, double haze, vtkMultiProcessController* controller)
+const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, double threshold,
+  double haze, bool fog, vtkMultiProcessController* controller)
 {
+  // (the fog needs the whole image: on several processes each holds a piece)
+  fog = fog && (!controller || controller->GetNumberOfProcesses() < 2);
+  vtkCamera* camera = s->GetRenderer() ? s->GetRenderer()->GetActiveCamera() : nullptr;
   this->End();
   this->Count = 0;
   this->Hazes.clear();
@@ -513,7 +642,7 @@ const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(
     const std::vector<vtkTypeUInt64>* own = volume ? &shared[v++] : nullptr;
     if (Drawable(volume))
     {
-      Proxy* p = this->Update(volume, threshold, haze, whole, *own);
+      Proxy* p = this->Update(volume, threshold, haze, fog, camera, whole, *own);
       prop = p->Solid.Actor;
       this->Active.push_back(p->Solid.Actor);
       if (p->Hazy)

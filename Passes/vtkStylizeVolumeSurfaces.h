@@ -29,12 +29,14 @@
 #include <vector> // for std::vector
 
 class vtkActor;
+class vtkCamera;
 class vtkDataSet;
 class vtkMultiProcessController;
 class vtkPiecewiseFunction;
 class vtkProp;
 class vtkRenderState;
 class vtkRenderer;
+class vtkScalarsToColors;
 class vtkVolume;
 class vtkWindow;
 
@@ -55,7 +57,7 @@ public:
    * processes call Begin()).
    */
   const vtkRenderState* Begin(const vtkRenderState* s, double threshold, double haze = 0.0,
-    vtkMultiProcessController* controller = nullptr);
+    bool fog = false, vtkMultiProcessController* controller = nullptr);
 
   /**
    * Adds the surfaces of the volumes last drawn as surfaces to `ren`'s props, without updating
@@ -83,8 +85,17 @@ public:
 
 private:
   struct Proxy;
-  Proxy* Update(vtkVolume* volume, double threshold, double haze, const int whole[6],
-    const std::vector<vtkTypeUInt64>& shared);
+  /**
+   * Colours the haze of `p` as VTK's ray casting shows it (`fog`: its points' colour and opacity
+   * accumulated along the view rays from `camera` to the solid surface, recomputed only when the
+   * view, the haze, the place or the transfer functions change), or leaves it at the `haze`
+   * opacity (fog false, or data that is not an image with point scalars).
+   */
+  static void ColourHaze(Proxy& p, vtkDataSet* data, vtkPiecewiseFunction* opacity,
+    vtkScalarsToColors* colors, double unit, double solid, double haze, bool fog,
+    vtkCamera* camera);
+  Proxy* Update(vtkVolume* volume, double threshold, double haze, bool fog, vtkCamera* camera,
+    const int whole[6], const std::vector<vtkTypeUInt64>& shared);
   /**
    * Per vtkVolume among Props, in order: over several processes, the keys of the points on the
    * other processes' pieces' outer faces (vtkStylizeVolumeSurface::SetSharedPoints()) for data

@@ -63,6 +63,7 @@ from stylize_volume_measures import gradient_share, in_palette, measure  # noqa:
 
 STYLES = {"comic": vtkComicPass, "pixel": vtkPixelArtPass, "sketch": vtkSketchPass,
           "lines": vtkLineArtPass}
+HAZE_MODES = {"shell": vtkComicPass.HAZE_SHELL, "fog": vtkComicPass.HAZE_FOG}
 GOAL_PLAIN = 0.2
 GOAL_GRADIENT = 0.1
 GOAL_PALETTE = 1.0
@@ -364,7 +365,7 @@ SCENES = {"skull": skull, "liver": liver, "field": field, "vessel": vessel, "hea
 
 
 def render(builder, data, style, size, with_volume=True, times=0, only_volume=False,
-           background=1.0, only=None, haze=0.0, figure=None):
+           background=1.0, only=None, haze=0.0, figure=None, haze_mode="shell"):
     """The scene's picture (H x W x 3 uint8) drawn by VTK (style None) or a style; with `times`,
     also the median of that many more frames' seconds; `only`: the one tagged prop drawn (no
     volume)."""
@@ -407,6 +408,7 @@ def render(builder, data, style, size, with_volume=True, times=0, only_volume=Fa
     if style:
         style_pass = STYLES[style]()
         style_pass.SetVolumeHaze(haze)
+        style_pass.SetVolumeHazeMode(HAZE_MODES[haze_mode])
         if style == "pixel":
             style_pass.SetPalette(vtkPixelArtPass.PALETTE16)
         renderer.SetPass(style_pass)
@@ -461,6 +463,8 @@ def main():
                         help="also write each style's vector figure (OUTDIR/volume-SCENE-STYLE.svg)")
     parser.add_argument("--haze", type=float, default=0.0,
                         help="the styles' VolumeHaze (default 0: the solid surface alone)")
+    parser.add_argument("--haze-mode", default="shell", choices=sorted(HAZE_MODES),
+                        help="the styles' VolumeHazeMode (default shell)")
     parser.add_argument("--primitives", default="",
                         help="SCENE,...: also measure these scenes' (field, disk) streamlines "
                              "and glyphs alone")
@@ -489,7 +493,8 @@ def main():
             figure = os.path.join(args.outdir, "volume-%s-%s.svg" % (name, style)) \
                 if args.figures else None
             styled, styled_time, surfaces = render(builder, args.data, style, size, True, times,
-                                                   haze=args.haze, figure=figure)
+                                                   haze=args.haze, figure=figure,
+                                                   haze_mode=args.haze_mode)
             save(styled, os.path.join(args.outdir, "volume-%s-%s.png" % (name, style)))
             m = measure(style, styled, plain, region, solid)
             m["surfaces"] = surfaces

@@ -1,0 +1,135 @@
+"""A volume's haze as VTK's ray casting accumulates it (VolumeHazeMode HAZE_FOG, issue 55),
+against the analytic opacity.
+
+    test_volume_fog.py
+
+An image of 64^3 samples (spacing 1, opacity unit distance 1) holds a ball of fog (radius 24,
+scalar opacity 0.05 per unit, black) around a solid core (radius 10, opaque, white), in nothing
+(opacity 0). Seen along -z with a parallel projection through pixel art's PIXELATED layer at
+one screen pixel per art pixel (the layers blended by their opacity, the colour the lit colour),
+over white paper. The black fog lets 1 - A of what lies behind through, so A is read back as
+1 - (picture with the haze) / (picture without it), and must match the opacity VTK's ray casting
+accumulates, 1 - (1 - 0.05)^L over the fog's length L on the ray (the ball's boundary ramps
+over a sample, hence the tolerance):
+- through the core's centre, L = 24 - 10 = 14: A = 0.512;
+- beside the core, 17 units from the centre, L is the chord 2 sqrt(24^2 - 17^2) = 33.9 (the
+  front layer of the haze holds the whole chord, its back layer nothing): A = 0.824;
+- VolumeHaze 0.5 halves both; HAZE_SHELL gives the VolumeHaze opacity (0.4) at the core's
+  centre, whatever the fog's length (the shell's front layer: its back lies behind the core).
+"""
+import math
+import sys
+
+import numpy as np
+import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401 (the volume mappers' factory)
+import vtkstylize
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkVolume,
+                                         vtkVolumeProperty, vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingVolume import vtkFixedPointVolumeRayCastMapper
+
+from stylize_test_scene import check, failures, offscreen_window
+
+N, RADIUS, CORE, FOG = 64, 24.0, 10.0, 0.05
+
+
+def ball():
+    """Scalars: 200 in the core, 100 in the fog, 0 outside, each boundary a linear ramp over one
+    unit."""
+    c = (N - 1) / 2.0
+    z, y, x = np.mgrid[0:N, 0:N, 0:N].astype(float)
+    r = np.sqrt((x - c) ** 2 + (y - c) ** 2 + (z - c) ** 2)
+    values = 100.0 * np.clip(RADIUS + 0.5 - r, 0.0, 1.0) + 100.0 * np.clip(CORE + 0.5 - r, 0.0, 1.0)
+    image = vtkImageData()
+    image.SetDimensions(N, N, N)
+    array = numpy_to_vtk(values.ravel().astype(np.float32), deep=True)
+    array.SetName("value")
+    image.GetPointData().SetScalars(array)
+    return image
+
+
+def render(haze, mode):
+    """The centre row of the picture's red channel (0-255) and its centre column's."""
+    win = offscreen_window(N, N)
+    ren = vtkRenderer()
+    ren.SetBackground(1.0, 1.0, 1.0)
+    win.AddRenderer(ren)
+    opacity = vtkPiecewiseFunction()
+    for value, o in ((0.0, 0.0), (100.0, FOG), (150.0, FOG), (160.0, 1.0), (200.0, 1.0)):
+        opacity.AddPoint(value, o)
+    colour = vtkColorTransferFunction()
+    colour.AddRGBPoint(0.0, 0.0, 0.0, 0.0)
+    colour.AddRGBPoint(120.0, 0.0, 0.0, 0.0)
+    colour.AddRGBPoint(140.0, 1.0, 1.0, 1.0)
+    colour.AddRGBPoint(200.0, 1.0, 1.0, 1.0)
+    prop = vtkVolumeProperty()
+    prop.SetScalarOpacity(opacity)
+    prop.SetColor(colour)
+    prop.SetScalarOpacityUnitDistance(1.0)
+    prop.SetInterpolationTypeToLinear()
+    mapper = vtkFixedPointVolumeRayCastMapper()
+    mapper.SetInputData(ball())
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    ren.AddVolume(volume)
+    camera = ren.GetActiveCamera()
+    c = (N - 1) / 2.0
+    camera.SetFocalPoint(c, c, c)
+    camera.SetPosition(c, c, c + 200.0)
+    camera.SetViewUp(0.0, 1.0, 0.0)
+    camera.ParallelProjectionOn()
+    camera.SetParallelScale(N / 2.0)
+    ren.ResetCameraClippingRange()
+    style = vtkstylize.vtkPixelArtPass()
+    style.SetLayer(vtkstylize.vtkPixelArtPass.PIXELATED)
+    style.SetPixelSize(1)
+    style.SetEdgeDetector(vtkstylize.vtkPixelArtPass.NO_EDGES)
+    style.SetDepthEdges(False)
+    style.SetNormalEdges(False)
+    style.SetVolumeHaze(haze)
+    style.SetVolumeHazeMode(mode)
+    ren.SetPass(style)
+    w2i = vtkWindowToImageFilter()
+    w2i.SetInput(win)
+    w2i.ReadFrontBufferOff()
+    w2i.Update()
+    pixels = vtk_to_numpy(w2i.GetOutput().GetPointData().GetScalars()).reshape(N, N, -1)
+    return pixels[:, :, 0].astype(float)
+
+
+FOG_MODE, SHELL = vtkstylize.vtkPixelArtPass.HAZE_FOG, vtkstylize.vtkPixelArtPass.HAZE_SHELL
+plain = render(0.0, FOG_MODE)
+centre, beside = (N // 2, N // 2), (N // 2 + 17, N // 2)  # (row, column)
+
+
+def opacity_at(picture, pixel):
+    """A: the share of what lies behind that the black fog hides at `pixel` (3 x 3 mean)."""
+    r, c = pixel
+    behind = plain[r - 1:r + 2, c - 1:c + 2].mean()
+    return 1.0 - picture[r - 1:r + 2, c - 1:c + 2].mean() / max(behind, 1.0)
+
+
+expected_centre = 1.0 - (1.0 - FOG) ** (RADIUS - CORE)
+expected_beside = 1.0 - (1.0 - FOG) ** (2.0 * math.sqrt(RADIUS ** 2 - 17.0 ** 2))
+cases = [("fog, VolumeHaze 1, through the core", render(1.0, FOG_MODE), centre, expected_centre, 0.05),
+         ("fog, VolumeHaze 1, beside the core", None, beside, expected_beside, 0.05),
+         ("fog, VolumeHaze 0.5, through the core", render(0.5, FOG_MODE), centre,
+          0.5 * expected_centre, 0.05),
+         ("fog, VolumeHaze 0.5, beside the core", None, beside, 0.5 * expected_beside, 0.05),
+         ("shell, VolumeHaze 0.4, through the core", render(0.4, SHELL), centre, 0.4, 0.03)]
+last = None
+print("behind: %.0f at the core's centre, %.0f beside it" % (plain[centre], plain[beside]))
+check(plain[centre] > 100 and plain[beside] > 200, "the core and the paper must be bright")
+for name, picture, pixel, expected, tolerance in cases:
+    picture = last if picture is None else picture
+    last = picture
+    measured = opacity_at(picture, pixel)
+    print("%s: opacity %.3f, expected %.3f" % (name, measured, expected))
+    check(abs(measured - expected) <= tolerance,
+          "%s: opacity %.3f, expected %.3f +- %.2f" % (name, measured, expected, tolerance))
+if failures:
+    print("%d failure(s)" % len(failures))
+    sys.exit(1)
+print("OK")
