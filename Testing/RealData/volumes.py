@@ -42,7 +42,7 @@ Writes OUTDIR/volume-SCENE-STYLE.png and prints markdown tables; --check fails t
 goals.
 
 usage: volumes.py DATA OUTDIR [--check] [--bench] [--primitives SCENE,...] [--scenes skull,liver,field]
-                  [--size WxH] [--haze OPACITY] [--figures] [--unmet SCENE.STYLE.MEASURE,...]
+                  [--size WxH] [--haze OPACITY] [--haze-mode shell|fog] [--figures] [--unmet SCENE.STYLE.MEASURE,...]
 """
 import argparse
 import os
