@@ -241,7 +241,7 @@ std::vector<std::array<int, 6>> WholeExtents(
 
 //------------------------------------------------------------------------------
 /**
- * Colours the haze of `p` as VTK's ray casting shows it (AccumulateHaze(), from `camera`,
+ * Colours the haze of `p` as VTK's ray casting shows it (vtkStylizeAccumulateHaze(), from `camera`,
  * recomputed only when the view, the haze, the place or the transfer functions change), or
  * leaves it at the `haze` opacity (fog false, or data that cannot be sampled so).
  */
