@@ -163,6 +163,16 @@ double vtkLineArtPass::GetReach(const Frame& frame)
 }
 
 //------------------------------------------------------------------------------
+double vtkLineArtPass::GetVolumeOutlineWidth(vtkRenderer* ren)
+{
+  // a contour's width in pixels of one tile (the G-buffer widens lines by the tile scale)
+  const int* size = ren ? ren->GetSize() : nullptr;
+  const double scale =
+    this->ReferenceHeight > 0.0 && size && size[1] > 0 ? size[1] / this->ReferenceHeight : 1.0;
+  return this->TranslucentOutlines ? std::max(1.0, this->ContourWidth * scale) : 0.0;
+}
+
+//------------------------------------------------------------------------------
 void vtkLineArtPass::ConfigureLightingColors(vtkStylizeLightingPass* lighting)
 {
   // gray on white paper: the light's tone, darkened by a solid colour's lightness (as the

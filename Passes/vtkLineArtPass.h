@@ -250,6 +250,7 @@ protected:
   bool RenderStyle(const vtkRenderState* s, const Frame& frame) override;
   double GetPointReferenceHeight() override { return this->ReferenceHeight; }
   double GetReach(const Frame& frame) override;
+  double GetVolumeOutlineWidth(vtkRenderer* ren) override;
   void ReleaseStyleResources(vtkWindow* w) override;
   vtkIdType GetStyleTextureBytes() override;
 

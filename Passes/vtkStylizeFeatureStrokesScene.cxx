@@ -8,6 +8,8 @@
 #include "vtkDataArray.h"
 #include "vtkDiscretizableColorTransferFunction.h"
 #include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkLookupTable.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
@@ -15,6 +17,7 @@
 #include "vtkPointData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkStylizeVolumeSurfaces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,9 +97,12 @@ std::vector<vtkActor*> LineActors(vtkRenderer* ren, bool translucent)
   while (vtkProp* prop = props->GetNextProp(it))
   {
     auto* actor = vtkActor::SafeDownCast(prop);
+    // (a fog's shell whose outline is drawn as the fog's: not its own)
+    vtkInformation* keys = actor ? actor->GetPropertyKeys() : nullptr;
+    const bool fog = keys && keys->Get(vtkStylizeVolumeSurfaces::FOG_SHELL()) == 1;
     if (actor && actor->GetVisibility() && actor->GetMapper() &&
       (actor->HasTranslucentPolygonalGeometry() != 0) == translucent &&
-      actor->GetProperty()->GetRepresentation() != VTK_POINTS)
+      actor->GetProperty()->GetRepresentation() != VTK_POINTS && !(translucent && fog))
     {
       actors.push_back(actor);
     }

@@ -39,6 +39,7 @@ vtkInformationKeyMacro(vtkStylizeLightingPass, SUBJECT_FACTOR, Double);
 vtkInformationKeyMacro(vtkStylizeLightingPass, GRAY_LEVELS_NEAR, Double);
 vtkInformationKeyMacro(vtkStylizeLightingPass, GRAY_LEVELS_FAR, Double);
 vtkInformationKeyMacro(vtkStylizeLightingPass, SPECULAR_GAIN, Double);
+vtkInformationKeyMacro(vtkStylizeLightingPass, EMITTED_COLORS, Double);
 
 namespace
 {
@@ -535,6 +536,8 @@ bool vtkStylizeLightingPass::SetShaderParameters(
   program->SetUniformf("stylizeLevelsFar",
     static_cast<float>(ActorValue(prop, GRAY_LEVELS_FAR(), this->GrayLevelsFar, 0.0, 100.0)));
   program->SetUniformi("stylizeColorMode", this->ColorMode);
+  program->SetUniformi(
+    "stylizeEmitted", ActorValue(prop, EMITTED_COLORS(), 0.0, 0.0, 1.0) >= 0.5 ? 1 : 0);
   program->SetUniformi("stylizeSolidColorTones", this->SolidColorTones ? 1 : 0);
   program->SetUniformf("stylizeSolidColorWhite", static_cast<float>(this->SolidColorWhite));
   program->SetUniformf("stylizeSpecularGain",

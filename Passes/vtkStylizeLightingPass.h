@@ -204,6 +204,14 @@ public:
   static vtkInformationDoubleKey* SPECULAR_GAIN();
   ///@}
 
+  /**
+   * Per actor, in vtkProp::GetPropertyKeys(): 1 when the actor's colours are light already (a
+   * volume's fog as VTK's ray caster shades it, vtkStylizeStylePass::HAZE_FOG): drawn as they
+   * are, unlit by the style, their luminance the tone in colour modes 2 to 4. 0 or absent
+   * (default): lit by the style.
+   */
+  static vtkInformationDoubleKey* EMITTED_COLORS();
+
   ///@{
   /**
    * Set (with clamping) or remove the per-actor Comic settings of a prop. The prop's property

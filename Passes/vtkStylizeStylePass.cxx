@@ -335,7 +335,8 @@ void vtkStylizeStylePass::Render(const vtkRenderState* original)
   // draws the surfaces of its volumes' pieces)
   const vtkRenderState* s = this->StylizeVolumes && !original->GetRenderer()->GetSelector()
     ? volumes.Begin(original, threshold, std::isfinite(this->VolumeHaze) ? this->VolumeHaze : 0.0,
-        this->VolumeHazeMode == HAZE_FOG, this->Internals->GBuffer->GetController())
+        this->VolumeHazeMode == HAZE_FOG, this->Internals->GBuffer->GetController(),
+        this->GetVolumeOutlineWidth(original->GetRenderer()))
     : original;
   s = this->SeparateAnnotations(s);
   Frame frame;

@@ -214,10 +214,11 @@ public:
    * VolumeOpacityThreshold (soft tissue over a CT's bone, a faint shell of a field). 0 leaves
    * it out: the volume is its solid surface alone. Above 0, a volume whose opacity function
    * holds values between a tenth of the threshold and the threshold is also drawn as a
-   * translucent surface of this opacity where its opacity first reaches a tenth of the threshold,
-   * which the style draws in its translucent layers (TranslucentLayers: stylized, over the solid
-   * surface; the line art draws it as its paper, without lines). Not with the isosurface blend
-   * mode. Range [0, 1], default 0.
+   * translucent surface where its opacity first reaches a tenth of the threshold, coloured as
+   * VolumeHazeMode says (HAZE_FOG: VTK's fog times this, so that 1 draws the volume's
+   * translucent part as VTK does), which the style draws in its translucent layers
+   * (TranslucentLayers: stylized, over the solid surface; the line art draws it as its paper,
+   * with its outline). Not with the isosurface blend mode. Range [0, 1], default 0.
    */
   vtkSetClampMacro(VolumeHaze, double, 0.0, 1.0);
   vtkGetMacro(VolumeHaze, double);
@@ -227,21 +228,25 @@ public:
   enum VolumeHazeModes
   {
     HAZE_SHELL = 0, ///< the colour map's colour at the haze, at the VolumeHaze opacity
-    HAZE_FOG = 1    ///< the colour and opacity VTK's ray casting accumulates, times VolumeHaze
+    HAZE_FOG = 1    ///< VTK's accumulated colour and opacity, times VolumeHaze (default)
   };
 
   ///@{
   /**
-   * How a volume's haze (VolumeHaze above 0) is coloured: HAZE_SHELL (default), a shell of the
-   * VolumeHaze opacity in the colour the colour map gives there; HAZE_FOG, each point of the haze
-   * takes the colour and opacity VTK's ray casting accumulates from it along the view ray
+   * How a volume's haze (VolumeHaze above 0) is coloured: HAZE_FOG (default), each point of the
+   * haze takes the colour and opacity VTK's ray casting accumulates from it along the view ray
    * through the volume to its solid surface or out of it (opacity times VolumeHaze: 1 is VTK's
-   * own), recomputed when the view changes, so that a thick fog is as dark as VTK draws it and
-   * the shell's back and its grazing parts as faint or as strong: the layers of the shell,
-   * composited front to back, add up to the whole ray (the fog in front of the shell included).
-   * Data that is not an image is sampled on an image of 64 points along its longest side (again
-   * when it changes). HAZE_FOG needs the whole volume on one process and point scalars; on
-   * several processes (ParaView's ranks, each holding a piece) the haze is the shell.
+   * own; with the volume's Shade on, each sample lit as VTK's ray caster lights it: its lighting
+   * coefficients, the gradient as the normal, the headlight), recomputed when the view changes,
+   * so that a thick fog is as dark as VTK draws it and the shell's back and its grazing parts as
+   * faint or as strong: the layers of the shell, composited front to back, add up to the whole
+   * ray (the fog in front of the shell included). The style draws these colours as they are
+   * (vtkStylizeLightingPass::EMITTED_COLORS: their lightness is the tone). The line art draws
+   * the outline of where the volume looks solid (the whole ray's opacity one half) instead of
+   * the shell's. Data that is not an image, or cell scalars, is sampled on an image of 64 points
+   * along its longest side (again when it changes). HAZE_FOG needs the whole volume on one
+   * process; on several processes (ParaView's ranks, each holding a piece) the haze is the shell.
+   * HAZE_SHELL: a shell of the VolumeHaze opacity in the colour the colour map gives there.
    */
   vtkSetClampMacro(VolumeHazeMode, int, HAZE_SHELL, HAZE_FOG);
   vtkGetMacro(VolumeHazeMode, int);
@@ -539,6 +544,15 @@ protected:
     return 1;
   }
 
+  /**
+   * The width (pixels) of the line drawn where a volume's fog (HAZE_FOG) looks solid, its whole
+   * view ray's opacity one half, in place of the haze's own outline; 0 (the default): none.
+   */
+  virtual double GetVolumeOutlineWidth(vtkRenderer*)
+  {
+    return 0.0;
+  }
+
   /** Whether InteractiveImageReduction applies to the style (default true). */
   virtual bool AcceptsImageReduction()
   {
@@ -750,7 +764,7 @@ protected:
   bool HasPlainAnnotations();
   double VolumeOpacityThreshold = 0.1;
   double VolumeHaze = 0.0;
-  int VolumeHazeMode = HAZE_SHELL;
+  int VolumeHazeMode = HAZE_FOG;
 
   /**
    * For a figure built after the frame (vtkLineArtPass::ComputeFigureStrokes()): puts the

@@ -1,6 +1,7 @@
 #include "vtkStylizeVolumeFog.h"
 
 #include "vtkDataArray.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkPiecewiseFunction.h"
@@ -18,6 +19,9 @@ namespace
 {
 /** The fog's steps (half samples) from a haze point before the side of the haze is read. */
 constexpr int Settle = 3;
+
+/** A ray's opacity where it meets the solid surface (above any fog's). */
+constexpr double Solid = 2.0;
 
 /** Accumulated premultiplied `rgba` as the point's colour and opacity (times `scale`), bytes. */
 void WriteRGBA(vtkUnsignedCharArray* out, vtkIdType id, const double rgba[4], double scale)
@@ -54,54 +58,6 @@ void RayExtent(const double ijk[3], const double di[3], const int e[6], const in
   }
 }
 
-/** The fog's tables: opacity and colour over the scalars' range, the scalars as floats. */
-struct FogTables
-{
-  static constexpr int Bins = 1024;
-  std::vector<double> Alpha, Rgb;
-  std::vector<float> Values;
-  std::vector<char> Valid; // (a resampled image: where it lies in the data; empty: everywhere)
-  double Lo = 0.0, Width = 1.0;
-};
-
-/** Fills `t` for `image`'s `scalars`; false for an empty or non-finite range. */
-bool MakeFogTables(vtkImageData* image, vtkDataArray* scalars, vtkPiecewiseFunction* opacity,
-  vtkScalarsToColors* colors, vtkDataArray* mask, FogTables& t)
-{
-  double range[2];
-  scalars->GetRange(range, 0);
-  if (!(range[1] >= range[0]) || !std::isfinite(range[0]) || !std::isfinite(range[1]))
-  {
-    return false;
-  }
-  constexpr int bins = FogTables::Bins;
-  t.Alpha.resize(bins);
-  t.Rgb.resize(3 * bins);
-  t.Lo = range[0];
-  t.Width = std::max(range[1] - range[0], 1e-30);
-  opacity->GetTable(t.Lo, t.Lo + t.Width, bins, t.Alpha.data());
-  for (int i = 0; i < bins; ++i)
-  {
-    colors->GetColor(t.Lo + t.Width * i / (bins - 1), &t.Rgb[3 * i]);
-  }
-  const vtkIdType n = image->GetNumberOfPoints();
-  t.Values.resize(static_cast<size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    const double v = scalars->GetComponent(i, 0);
-    t.Values[i] = static_cast<float>(std::isfinite(v) ? v : t.Lo);
-  }
-  if (mask && mask->GetNumberOfTuples() == n)
-  {
-    t.Valid.resize(t.Values.size());
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      t.Valid[i] = mask->GetComponent(i, 0) != 0.0;
-    }
-  }
-  return true;
-}
-
 /** The affine map from `image`'s coordinates to its continuous index: t0 + x[a] tx[a]. */
 void IndexTransform(vtkImageData* image, double t0[3], double tx[3][3])
 {
@@ -119,32 +75,277 @@ void IndexTransform(vtkImageData* image, double t0[3], double tx[3][3])
   }
 }
 
-}
-
-//------------------------------------------------------------------------------
-bool vtkStylizeAccumulateHaze(vtkPolyData* haze, vtkImageData* image, vtkDataArray* scalars,
-  vtkPiecewiseFunction* opacity, vtkScalarsToColors* colors, double unit, double level,
-  double solid, double scale, const double eye[3], const double dop[3], bool parallel,
-  vtkDataArray* mask, vtkUnsignedCharArray* out)
+/** The fog's tables: opacity and colour over the scalars' range, the scalars as floats. */
+struct FogTables
 {
-  const int* e = image->GetExtent();
-  const vtkIdType n = haze->GetNumberOfPoints();
-  if (!scalars || scalars->GetNumberOfTuples() != image->GetNumberOfPoints() || n == 0 ||
-    e[1] < e[0] || e[3] < e[2] || e[5] < e[4] || !(unit > 0.0))
-  {
-    return false;
-  }
-  FogTables tables;
-  if (!MakeFogTables(image, scalars, opacity, colors, mask, tables))
+  static constexpr int Bins = 1024;
+  std::vector<double> Alpha, Rgb;
+  std::vector<float> Values;
+  std::vector<char> Valid; // (a resampled image: where it lies in the data; empty: everywhere)
+  double Lo = 0.0, Width = 1.0;
+};
+
+/** Fills `t` for the volume; false for an empty or non-finite range. */
+bool MakeFogTables(const vtkStylizeVolumeFog::Volume& v, FogTables& t)
+{
+  double range[2];
+  v.Scalars->GetRange(range, 0);
+  if (!(range[1] >= range[0]) || !std::isfinite(range[0]) || !std::isfinite(range[1]))
   {
     return false;
   }
   constexpr int bins = FogTables::Bins;
-  const std::vector<double>& alphaTable = tables.Alpha;
-  const std::vector<double>& rgbTable = tables.Rgb;
-  const std::vector<float>& values = tables.Values;
-  const std::vector<char>& valid = tables.Valid;
-  const double lo = tables.Lo, width = tables.Width;
+  t.Alpha.resize(bins);
+  t.Rgb.resize(3 * bins);
+  t.Lo = range[0];
+  t.Width = std::max(range[1] - range[0], 1e-30);
+  v.Opacity->GetTable(t.Lo, t.Lo + t.Width, bins, t.Alpha.data());
+  for (int i = 0; i < bins; ++i)
+  {
+    v.Colors->GetColor(t.Lo + t.Width * i / (bins - 1), &t.Rgb[3 * i]);
+  }
+  const vtkIdType n = v.Image->GetNumberOfPoints();
+  t.Values.resize(static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double value = v.Scalars->GetComponent(i, 0);
+    t.Values[i] = static_cast<float>(std::isfinite(value) ? value : t.Lo);
+  }
+  t.Valid.clear();
+  if (v.Mask && v.Mask->GetNumberOfTuples() == n)
+  {
+    t.Valid.resize(t.Values.size());
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      t.Valid[i] = v.Mask->GetComponent(i, 0) != 0.0;
+    }
+  }
+  return true;
+}
+
+/** One ray through the image's index space: its samples' opacity, colour and lighting. */
+struct FogRay
+{
+  const FogTables& T;
+  const vtkStylizeVolumeFog::Shading& Light;
+  const int* E;    // the image's extent
+  const int* Dims; // its dimensions
+  const double (*Tx)[3];
+  double Ijk[3], Di[3]; // the ray's start and step in index space
+  double ToLight[3];    // towards the headlight, in the image's coordinates (unit)
+  double Power;         // the opacity's exponent for a step (step / unit)
+  double Rgba[4] = { 0.0, 0.0, 0.0, 0.0 };
+
+  /** The image's value at index-space point `q` (clamped to the image); false outside the data. */
+  bool ValueAt(const double q[3], double& value) const
+  {
+    int i0[3];
+    double f[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double c = std::min(std::max(q[a], 0.0), static_cast<double>(this->Dims[a] - 1));
+      i0[a] = std::min(static_cast<int>(c), std::max(this->Dims[a] - 2, 0));
+      f[a] = this->Dims[a] > 1 ? c - i0[a] : 0.0;
+    }
+    value = 0.0;
+    bool inside = true;
+    for (int c = 0; c < 8; ++c)
+    {
+      const int o[3] = { c & 1, (c >> 1) & 1, (c >> 2) & 1 };
+      double w = 1.0;
+      vtkIdType index = 0;
+      for (int a = 2; a >= 0; --a)
+      {
+        w *= o[a] ? f[a] : 1.0 - f[a];
+        index = index * this->Dims[a] + std::min(i0[a] + o[a], this->Dims[a] - 1);
+      }
+      value += w * this->T.Values[static_cast<size_t>(index)];
+      inside = inside && (this->T.Valid.empty() || this->T.Valid[static_cast<size_t>(index)]);
+    }
+    return inside;
+  }
+
+  /** The sample at step t: its opacity (0 outside the data) and its table bin. */
+  double OpacityAt(double t, int& bin) const
+  {
+    double q[3], value;
+    for (int a = 0; a < 3; ++a)
+    {
+      q[a] = this->Ijk[a] + t * this->Di[a] - this->E[2 * a];
+    }
+    if (!this->ValueAt(q, value))
+    {
+      bin = 0;
+      return 0.0;
+    }
+    constexpr int bins = FogTables::Bins;
+    bin = std::min(
+      std::max(static_cast<int>((value - this->T.Lo) / this->T.Width * (bins - 1) + 0.5), 0),
+      bins - 1);
+    return this->T.Alpha[bin];
+  }
+
+  /**
+   * The colour of the sample at step t (`rgb`: the colour map's) lit as VTK's ray caster lights
+   * it (lighting complexity 1): ambient + diffuse |N.L| + specular |N.H|^power, N the gradient by
+   * central differences over a voxel, L = H towards the headlight.
+   */
+  void Lit(double t, double rgb[3]) const
+  {
+    double g[3], q[3];
+    for (int b = 0; b < 3; ++b)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        q[a] = this->Ijk[a] + t * this->Di[a] - this->E[2 * a] + (a == b ? 1.0 : 0.0);
+      }
+      double high, low;
+      this->ValueAt(q, high);
+      q[b] -= 2.0;
+      this->ValueAt(q, low);
+      g[b] = high - low;
+    }
+    // d/dx_a = sum_b d/di_b di_b/dx_a
+    double n[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      n[a] = g[0] * this->Tx[a][0] + g[1] * this->Tx[a][1] + g[2] * this->Tx[a][2];
+    }
+    const double length = vtkMath::Norm(n);
+    double nDotL = length > 0.0 ? vtkMath::Dot(n, this->ToLight) / length : 0.0;
+    nDotL = this->Light.TwoSided ? std::abs(nDotL) : nDotL;
+    const double diffuse = nDotL > 0.0 ? this->Light.Diffuse * nDotL : 0.0;
+    const double specular =
+      nDotL > 0.0 ? this->Light.Specular * std::pow(nDotL, this->Light.Power) : 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      rgb[a] = (this->Light.Ambient + diffuse) * rgb[a] + specular;
+    }
+  }
+
+  /** Composites the sample at step t (`sample`: its opacity) behind what is accumulated. */
+  void Add(double t, double sample, int bin)
+  {
+    const double alpha =
+      (1.0 - std::pow(1.0 - std::min(sample, 1.0), this->Power)) * (1.0 - this->Rgba[3]);
+    if (!(alpha > 0.0))
+    {
+      return;
+    }
+    double rgb[3] = { this->T.Rgb[3 * bin], this->T.Rgb[3 * bin + 1], this->T.Rgb[3 * bin + 2] };
+    if (this->Light.On)
+    {
+      this->Lit(t, rgb);
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Rgba[a] += alpha * rgb[a];
+    }
+    this->Rgba[3] += alpha;
+  }
+
+  /**
+   * The ray's part a haze point stands for (t from `first` to `last`; the point at 0), so that
+   * the shell's layers, composited front to back, add up to the whole ray: in front of it, the
+   * fog from where the ray enters the image unless the haze is crossed there (a nearer layer's
+   * part); behind it, the fog up to the next crossing of the haze, the solid surface or the
+   * image's end. Returns the whole ray's opacity (Solid where it meets the solid surface) for
+   * the ray's nearest layer, 0 for the others.
+   */
+  double March(double first, double last, double level, double solid)
+  {
+    int bin = 0;
+    bool nearest = last >= first;
+    for (double t = first + 0.5; t < -1.0 && last >= first; t += 1.0)
+    {
+      const double sample = this->OpacityAt(t, bin);
+      if (sample >= level)
+      {
+        this->Rgba[0] = this->Rgba[1] = this->Rgba[2] = this->Rgba[3] = 0.0;
+        nearest = false;
+        break;
+      }
+      this->Add(t, sample, bin);
+    }
+    // (which side of the haze the ray is on: a sample away from the point, where the point's own
+    // crossing is behind)
+    bool within = false;
+    int k = 0;
+    for (; 0.5 + k <= last && this->Rgba[3] < 0.995; ++k)
+    {
+      const double sample = this->OpacityAt(0.5 + k, bin);
+      if (sample >= solid)
+      {
+        return nearest ? Solid : 0.0; // the solid surface
+      }
+      if (k > Settle && (sample >= level) != within)
+      {
+        break; // the haze's next layer
+      }
+      within = k == Settle ? sample >= level : within;
+      this->Add(0.5 + k, sample, bin);
+    }
+    // The whole ray's opacity (the nearest layer's points; the solid surface opaque): on through
+    // the haze's other layers.
+    double whole = this->Rgba[3];
+    for (; nearest && 0.5 + k <= last && whole < 0.995; ++k)
+    {
+      const double sample = this->OpacityAt(0.5 + k, bin);
+      if (sample >= solid)
+      {
+        return Solid;
+      }
+      whole += (1.0 - std::pow(1.0 - std::min(sample, 1.0), this->Power)) * (1.0 - whole);
+    }
+    return nearest ? whole : 0.0;
+  }
+};
+}
+
+/** The tables and what they were made for (the scalars, mask and functions, their times). */
+struct vtkStylizeVolumeFog::Tables
+{
+  FogTables Fog;
+  const void* Keys[4] = { nullptr, nullptr, nullptr, nullptr };
+  vtkMTimeType Time = 0;
+};
+
+//------------------------------------------------------------------------------
+vtkStylizeVolumeFog::vtkStylizeVolumeFog() = default;
+
+//------------------------------------------------------------------------------
+vtkStylizeVolumeFog::~vtkStylizeVolumeFog() = default;
+
+//------------------------------------------------------------------------------
+bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double level, double solid,
+  double scale, const double eye[3], const double dop[3], bool parallel, vtkUnsignedCharArray* out,
+  vtkFloatArray* whole)
+{
+  vtkImageData* image = v.Image;
+  const int* e = image ? image->GetExtent() : nullptr;
+  const vtkIdType n = haze->GetNumberOfPoints();
+  if (!image || !v.Opacity || !v.Colors || !v.Scalars ||
+    v.Scalars->GetNumberOfTuples() != image->GetNumberOfPoints() || n == 0 || e[1] < e[0] ||
+    e[3] < e[2] || e[5] < e[4] || !(v.Unit > 0.0))
+  {
+    return false;
+  }
+  // (the tables again only when the scalars, the mask or the functions changed)
+  const void* keys[4] = { v.Scalars, v.Mask, v.Opacity, v.Colors };
+  const vtkMTimeType time = std::max({ v.Scalars->GetMTime(),
+    v.Mask ? v.Mask->GetMTime() : vtkMTimeType(0), v.Opacity->GetMTime(), v.Colors->GetMTime() });
+  if (!this->Kept || !std::equal(keys, keys + 4, this->Kept->Keys) || time > this->Kept->Time)
+  {
+    this->Kept.reset(new Tables);
+    if (!MakeFogTables(v, this->Kept->Fog))
+    {
+      this->Kept.reset();
+      return false;
+    }
+    std::copy(keys, keys + 4, this->Kept->Keys);
+    this->Kept->Time = time;
+  }
+  const FogTables& tables = this->Kept->Fog;
   const int dims[3] = { e[1] - e[0] + 1, e[3] - e[2] + 1, e[5] - e[4] + 1 };
   const double* spacing = image->GetSpacing();
   const double step =
@@ -153,7 +354,6 @@ bool vtkStylizeAccumulateHaze(vtkPolyData* haze, vtkImageData* image, vtkDataArr
   {
     return false;
   }
-  const double power = step / unit;
   // index = t0 + x[0] tx[0] + x[1] tx[1] + x[2] tx[2] (the image's origin, spacing, direction)
   double t0[3], tx[3][3];
   IndexTransform(image, t0, tx);
@@ -166,105 +366,45 @@ bool vtkStylizeAccumulateHaze(vtkPolyData* haze, vtkImageData* image, vtkDataArr
   };
   out->SetNumberOfComponents(4);
   out->SetNumberOfTuples(n);
+  if (whole)
+  {
+    whole->SetNumberOfComponents(1);
+    whole->SetNumberOfTuples(n);
+  }
   vtkPoints* points = haze->GetPoints();
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType id = begin; id < end; ++id)
       {
-        double x[3], d[3], ijk[3], di[3];
+        FogRay ray{ tables, v.Light, e, dims, tx, {}, {}, {}, step / v.Unit };
+        double x[3], d[3];
         points->GetPoint(id, x);
         for (int a = 0; a < 3; ++a)
         {
           d[a] = parallel ? dop[a] : x[a] - eye[a];
         }
         const double length = vtkMath::Norm(d);
-        double rgba[4] = { 0.0, 0.0, 0.0, 0.0 };
+        double opacity = 0.0;
         if (length > 0.0)
         {
-          toIndex(x, ijk, false);
+          toIndex(x, ray.Ijk, false);
           const double move[3] = { d[0] / length * step, d[1] / length * step,
             d[2] / length * step };
-          toIndex(move, di, true);
-          // the ray's steps inside the image: from the point, t in [first, last]
+          toIndex(move, ray.Di, true);
+          for (int a = 0; a < 3; ++a)
+          {
+            ray.ToLight[a] = -d[a] / length;
+          }
           double first, last;
-          RayExtent(ijk, di, e, dims, first, last);
-          // The opacity at t (and its table bin).
-          auto opacityAt = [&](double t, int& bin)
-          {
-            int i0[3];
-            double f[3];
-            for (int a = 0; a < 3; ++a)
-            {
-              const double q = std::min(
-                std::max(ijk[a] + t * di[a] - e[2 * a], 0.0), static_cast<double>(dims[a] - 1));
-              i0[a] = std::min(static_cast<int>(q), std::max(dims[a] - 2, 0));
-              f[a] = dims[a] > 1 ? q - i0[a] : 0.0;
-            }
-            double v = 0.0;
-            bool inside = true;
-            for (int c = 0; c < 8; ++c)
-            {
-              const int o[3] = { c & 1, (c >> 1) & 1, (c >> 2) & 1 };
-              double w = 1.0;
-              vtkIdType index = 0;
-              for (int a = 2; a >= 0; --a)
-              {
-                w *= o[a] ? f[a] : 1.0 - f[a];
-                index = index * dims[a] + std::min(i0[a] + o[a], dims[a] - 1);
-              }
-              v += w * values[static_cast<size_t>(index)];
-              inside = inside && (valid.empty() || valid[static_cast<size_t>(index)]);
-            }
-            if (!inside)
-            {
-              bin = 0;
-              return 0.0; // outside the data: nothing
-            }
-            bin = std::min(
-              std::max(static_cast<int>((v - lo) / width * (bins - 1) + 0.5), 0), bins - 1);
-            return alphaTable[bin];
-          };
-          auto add = [&](double sample, int bin)
-          {
-            const double alpha =
-              (1.0 - std::pow(1.0 - std::min(sample, 1.0), power)) * (1.0 - rgba[3]);
-            for (int a = 0; a < 3; ++a)
-            {
-              rgba[a] += alpha * rgbTable[3 * bin + a];
-            }
-            rgba[3] += alpha;
-          };
-          // The ray's part this point stands for, so that the shell's layers, composited front
-          // to back, add up to the whole ray: in front of it, the fog from where the ray enters
-          // the image unless the haze is crossed there (a nearer layer's part); behind it, the
-          // fog up to the next crossing of the haze, the solid surface or the image's end.
-          int bin = 0;
-          for (double t = first + 0.5; t < -1.0 && last >= first; t += 1.0)
-          {
-            const double sample = opacityAt(t, bin);
-            if (sample >= level)
-            {
-              rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0;
-              break;
-            }
-            add(sample, bin);
-          }
-          // (which side of the haze the ray is on: a sample away from the point, where the
-          // point's own crossing is behind)
-          bool within = false;
-          for (int k = 0; 0.5 + k <= last && rgba[3] < 0.995; ++k)
-          {
-            const double sample = opacityAt(0.5 + k, bin);
-            if (sample >= solid || (k > Settle && (sample >= level) != within))
-            {
-              break; // the solid surface, or the haze's next layer
-            }
-            within = k == Settle ? sample >= level : within;
-            add(sample, bin);
-          }
+          RayExtent(ray.Ijk, ray.Di, e, dims, first, last);
+          opacity = ray.March(first, last, level, solid);
         }
-        WriteRGBA(out, id, rgba, scale);
+        WriteRGBA(out, id, ray.Rgba, scale);
+        if (whole)
+        {
+          whole->SetValue(id, static_cast<float>(opacity >= Solid ? 1.0 : opacity * scale));
+        }
       }
     });
   return true;

@@ -6,27 +6,69 @@
 #ifndef vtkStylizeVolumeFog_h
 #define vtkStylizeVolumeFog_h
 
+#include "vtkType.h" // for vtkMTimeType
+
+#include <memory> // for std::unique_ptr
+
 class vtkDataArray;
+class vtkFloatArray;
 class vtkImageData;
 class vtkPiecewiseFunction;
 class vtkPolyData;
 class vtkScalarsToColors;
 class vtkUnsignedCharArray;
 
-/**
- * Per point of `haze` (a surface where the opacity reaches `level`, in the image's coordinates),
- * the colour and opacity VTK's ray casting accumulates along the ray from the eye (`eye`, or the
- * direction `dop` for a parallel projection, both in the image's coordinates) through `image`'s
- * point `scalars`: for the haze's nearest layer on the ray, from where the ray enters the image;
- * then up to the haze's next crossing, the solid surface (an opacity of `solid`) or the image's
- * end, so that the layers composited front to back add up to the whole ray. Each sample's opacity
- * is corrected for the step as VTK's (1 - (1 - a)^(step / unit)); the result's opacity is times
- * `scale`. `mask`: where a resampled image lies in its data (0: nothing there), or null. Written
- * as `out` (RGBA bytes). False when the image cannot be sampled so.
- */
-bool vtkStylizeAccumulateHaze(vtkPolyData* haze, vtkImageData* image, vtkDataArray* scalars,
-  vtkPiecewiseFunction* opacity, vtkScalarsToColors* colors, double unit, double level,
-  double solid, double scale, const double eye[3], const double dop[3], bool parallel,
-  vtkDataArray* mask, vtkUnsignedCharArray* out);
+class vtkStylizeVolumeFog
+{
+public:
+  /** VTK's volume shading (vtkVolumeProperty's Shade and its coefficients, a headlight). */
+  struct Shading
+  {
+    bool On = false;
+    double Ambient = 0.1, Diffuse = 0.7, Specular = 0.2, Power = 10.0;
+    bool TwoSided = true; // the renderer's TwoSidedLighting
+  };
+
+  /** What the fog is sampled from: `Image`'s point `Scalars` through the transfer functions. */
+  struct Volume
+  {
+    vtkImageData* Image = nullptr;
+    vtkDataArray* Scalars = nullptr;
+    vtkPiecewiseFunction* Opacity = nullptr;
+    vtkScalarsToColors* Colors = nullptr;
+    vtkDataArray* Mask = nullptr; // where a resampled image lies in its data (0: not), or null
+    double Unit = 1.0;            // the opacity's unit distance
+    Shading Light;
+  };
+
+  vtkStylizeVolumeFog();
+  ~vtkStylizeVolumeFog();
+
+  /**
+   * Per point of `haze` (a surface where the opacity reaches `level`, in the image's
+   * coordinates), the colour and opacity VTK's ray casting accumulates along the ray from the eye
+   * (`eye`, or the direction `dop` for a parallel projection, both in the image's coordinates):
+   * for the haze's nearest layer on the ray, from where the ray enters the image; then up to the
+   * haze's next crossing, the solid surface (an opacity of `solid`) or the image's end, so that
+   * the layers composited front to back add up to the whole ray. Each sample's opacity is
+   * corrected for the step as VTK's (1 - (1 - a)^(step / unit)) and, with shading, its colour lit
+   * as VTK's ray caster lights it (the gradient by central differences as the normal, the
+   * headlight); the result's opacity is times `scale`. Written as `out` (RGBA bytes); `whole`
+   * (or null): per point, the whole ray's opacity (1 where it meets the solid surface; times
+   * `scale`, at most 1) for the points of the ray's nearest layer, 0 for the others. The image's
+   * scalars as floats and the transfer functions' tables are kept until the data or the
+   * functions change. False when the image cannot be sampled so.
+   */
+  bool Accumulate(vtkPolyData* haze, const Volume& volume, double level, double solid, double scale,
+    const double eye[3], const double dop[3], bool parallel, vtkUnsignedCharArray* out,
+    vtkFloatArray* whole = nullptr);
+
+private:
+  struct Tables;
+  std::unique_ptr<Tables> Kept;
+
+  vtkStylizeVolumeFog(const vtkStylizeVolumeFog&) = delete;
+  void operator=(const vtkStylizeVolumeFog&) = delete;
+};
 
 #endif

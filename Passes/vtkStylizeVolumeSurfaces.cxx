@@ -6,10 +6,13 @@
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommunicator.h"
+#include "vtkContourFilter.h"
 #include "vtkContourValues.h"
 #include "vtkDataSet.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiProcessController.h"
@@ -26,6 +29,7 @@
 #include "vtkResampleToImage.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkStylizeLightingPass.h"
 #include "vtkStylizeStylePass.h"
 #include "vtkStylizeVolumeFog.h"
 #include "vtkStylizeVolumeSurface.h"
@@ -64,12 +68,76 @@ struct vtkStylizeVolumeSurfaces::Proxy
   // Data that is not an image, resampled on an image for the fog (when the data changes).
   vtkSmartPointer<vtkImageData> Resampled;
   vtkMTimeType ResampledTime = 0;
+  vtkStylizeVolumeFog Fog; // (its tables kept while the data and functions are unchanged)
+  // The fog's outline: where the whole ray's opacity reaches one half (Begin()'s `outline`).
+  vtkNew<vtkContourFilter> Contour;
+  vtkNew<vtkPolyData> OutlineLines; // (the contour moved towards the eye: TowardsEye())
+  vtkNew<vtkPolyDataMapper> OutlineMapper;
+  vtkNew<vtkActor> Outline;
+  bool Outlined = false; // drawn in this frame
 };
+
+vtkInformationKeyMacro(vtkStylizeVolumeSurfaces, FOG_SHELL, Integer);
 
 namespace
 {
 /** The haze's surface: where the opacity reaches this share of the solid's threshold. */
 constexpr double HazeLevel = 0.1;
+
+/**
+ * A surface's light as the volume's `property` shades it (unshaded: a surface's defaults, so
+ * that the style's light still shapes it), or none (`emitted`: its colours drawn as they are).
+ */
+void Light(vtkActor* actor, vtkVolumeProperty* property, bool emitted)
+{
+  vtkInformation* keys = actor->GetPropertyKeys();
+  if (!keys)
+  {
+    vtkNew<vtkInformation> info;
+    actor->SetPropertyKeys(info);
+    keys = info;
+  }
+  if (!keys->Has(vtkStylizeLightingPass::EMITTED_COLORS()) ||
+    keys->Get(vtkStylizeLightingPass::EMITTED_COLORS()) != (emitted ? 1.0 : 0.0))
+  {
+    keys->Set(vtkStylizeLightingPass::EMITTED_COLORS(), emitted ? 1.0 : 0.0);
+  }
+  vtkProperty* look = actor->GetProperty();
+  const bool shade = property->GetShade(0) != 0 && !emitted;
+  look->SetAmbient(emitted ? 1.0 : shade ? property->GetAmbient(0) : 0.0);
+  look->SetDiffuse(emitted ? 0.0 : shade ? property->GetDiffuse(0) : 1.0);
+  look->SetSpecular(shade ? property->GetSpecular(0) : 0.0);
+  look->SetSpecularPower(shade ? property->GetSpecularPower(0) : 1.0);
+}
+
+/**
+ * `lines` with each point moved by `distance` along its view ray towards the eye (`eye`, or
+ * against `dop` for a parallel projection), as `out`: drawn where they are in the picture, in
+ * front of the haze layer they lie on, which would otherwise cover them.
+ */
+void TowardsEye(vtkPolyData* lines, const double eye[3], const double dop[3], bool parallel,
+  double distance, vtkPolyData* out)
+{
+  vtkNew<vtkPoints> moved;
+  moved->SetDataTypeToDouble();
+  const vtkIdType n = lines->GetNumberOfPoints();
+  moved->SetNumberOfPoints(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3], d[3];
+    lines->GetPoint(i, x);
+    for (int a = 0; a < 3; ++a)
+    {
+      d[a] = parallel ? -dop[a] : eye[a] - x[a];
+    }
+    const double length = vtkMath::Norm(d);
+    const double k = length > 0.0 ? std::min(distance, 0.5 * length) / length : 0.0;
+    moved->SetPoint(i, x[0] + k * d[0], x[1] + k * d[1], x[2] + k * d[2]);
+  }
+  out->Initialize();
+  out->SetPoints(moved);
+  out->SetLines(lines->GetLines());
+}
 
 /** The volume's own setting under `key` of its property keys, or `fallback`. */
 double VolumeThreshold(vtkVolume* volume, double fallback)
@@ -240,20 +308,25 @@ std::vector<std::array<int, 6>> WholeExtents(
 }
 
 //------------------------------------------------------------------------------
-/**
- * Colours the haze of `p` as VTK's ray casting shows it (vtkStylizeAccumulateHaze(), from `camera`,
- * recomputed only when the view, the haze, the place or the transfer functions change), or
- * leaves it at the `haze` opacity (fog false, or data that cannot be sampled so).
- */
-void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkPiecewiseFunction* opacity,
-  vtkScalarsToColors* colors, double unit, double solid, double haze, bool fog, vtkCamera* camera)
+void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeProperty* property,
+  vtkScalarsToColors* colors, double solid, double haze, bool fog, vtkRenderer* ren, double outline)
 {
-  auto* image = vtkImageData::SafeDownCast(data);
+  vtkCamera* camera = ren ? ren->GetActiveCamera() : nullptr;
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
   vtkPolyData* shell = p.Haze.Surface->GetOutput();
-  if (!image && fog && data && data->GetNumberOfCells() > 0)
+  // (the array the volume's mapper draws, as it chooses it)
+  int cells = 0;
+  vtkAbstractVolumeMapper* vm = p.Volume ? p.Volume->GetMapper() : nullptr;
+  vtkDataArray* scalars = data && vm
+    ? vtkAbstractMapper::GetScalars(data, vm->GetScalarMode(), vm->GetArrayAccessMode(),
+        vm->GetArrayId(), vm->GetArrayName(), cells)
+    : nullptr;
+  auto* image = vtkImageData::SafeDownCast(data);
+  if ((!image || cells) && fog && scalars && data->GetNumberOfCells() > 0)
   {
-    // Other data, sampled on an image of up to 64 points along its longest side (where the
-    // image lies outside the data, vtkValidPointMask is 0 and the fog nothing).
+    // Other data, or cell scalars, sampled on an image of up to 64 points along its longest
+    // side (where the image lies outside the data, vtkValidPointMask is 0 and the fog nothing);
+    // there the array of the scalars' name.
     if (!p.Resampled || p.ResampledTime < data->GetMTime())
     {
       double b[6];
@@ -273,27 +346,31 @@ void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkPiecewi
       p.ResampledTime = data->GetMTime();
     }
     image = p.Resampled;
-  }
-  // (the array the volume's mapper draws, as it chooses it; on a resampled image, the point
-  // array of its name)
-  int cells = 0;
-  vtkAbstractVolumeMapper* vm = p.Volume ? p.Volume->GetMapper() : nullptr;
-  vtkDataArray* scalars = data && vm
-    ? vtkAbstractMapper::GetScalars(data, vm->GetScalarMode(), vm->GetArrayAccessMode(),
-        vm->GetArrayId(), vm->GetArrayName(), cells)
-    : nullptr;
-  if (scalars && image && image != data)
-  {
     scalars = scalars->GetName() ? image->GetPointData()->GetArray(scalars->GetName()) : nullptr;
     cells = 0;
   }
   fog = fog && camera && image && scalars && cells == 0 && shell->GetPoints();
   if (fog)
   {
+    vtkStylizeVolumeFog::Volume volume;
+    volume.Image = image;
+    volume.Scalars = scalars;
+    volume.Opacity = opacity;
+    volume.Colors = colors;
+    volume.Mask = image->GetPointData()->GetArray("vtkValidPointMask");
+    volume.Unit = property->GetScalarOpacityUnitDistance(0);
+    volume.Light.On = property->GetShade(0) != 0;
+    volume.Light.Ambient = property->GetAmbient(0);
+    volume.Light.Diffuse = property->GetDiffuse(0);
+    volume.Light.Specular = property->GetSpecular(0);
+    volume.Light.Power = property->GetSpecularPower(0);
+    volume.Light.TwoSided = ren->GetTwoSidedLighting() != 0;
     const vtkMTimeType time = std::max({ camera->GetMTime(), shell->GetPoints()->GetMTime(),
-      p.Matrix->GetMTime(), opacity->GetMTime(), colors->GetMTime(), data->GetMTime() });
+      p.Matrix->GetMTime(), opacity->GetMTime(), colors->GetMTime(), data->GetMTime(),
+      property->GetMTime(), ren->GetMTime() });
     if (!p.Fogged || time > p.FogTime || haze != p.FogScale || solid != p.FogSolid ||
-      !shell->GetPointData()->GetArray("StylizeHazeRGBA"))
+      !shell->GetPointData()->GetArray("StylizeHazeRGBA") ||
+      (outline > 0.0 && !shell->GetPointData()->GetArray("StylizeHazeWhole")))
     {
       // the eye (or the view direction) in the image's coordinates
       vtkNew<vtkMatrix4x4> inverse;
@@ -312,12 +389,23 @@ void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkPiecewi
       }
       vtkNew<vtkUnsignedCharArray> rgba;
       rgba->SetName("StylizeHazeRGBA");
-      fog = vtkStylizeAccumulateHaze(shell, image, scalars, opacity, colors, unit,
-        HazeLevel * solid, solid, haze, eye, dop, camera->GetParallelProjection() != 0,
-        image->GetPointData()->GetArray("vtkValidPointMask"), rgba);
+      vtkNew<vtkFloatArray> whole;
+      whole->SetName("StylizeHazeWhole");
+      fog = p.Fog.Accumulate(shell, volume, HazeLevel * solid, solid, haze, eye, dop,
+        camera->GetParallelProjection() != 0, rgba, outline > 0.0 ? whole.GetPointer() : nullptr);
       if (fog)
       {
         shell->GetPointData()->AddArray(rgba);
+        if (outline > 0.0)
+        {
+          shell->GetPointData()->AddArray(whole);
+          p.Contour->SetInputData(shell);
+          p.Contour->Update();
+          const double* spacing = image->GetSpacing();
+          TowardsEye(p.Contour->GetOutput(), eye, dop, camera->GetParallelProjection() != 0,
+            std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) }),
+            p.OutlineLines);
+        }
         p.FogTime = time;
         p.FogScale = haze;
         p.FogSolid = solid;
@@ -336,6 +424,18 @@ void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkPiecewi
   {
     m->SetScalarModeToUsePointData();
     m->SetColorModeToDefault();
+  }
+  // (the fog's colours are VTK's, lit as it lights them: drawn as they are)
+  Light(p.Haze.Actor, property, fog);
+  p.Outlined = fog && outline > 0.0;
+  if (p.Outlined)
+  {
+    p.Outline->GetProperty()->SetLineWidth(static_cast<float>(outline));
+  }
+  vtkInformation* keys = p.Haze.Actor->GetPropertyKeys(); // (Light() made them)
+  if (keys->Get(FOG_SHELL()) != (p.Outlined ? 1 : 0))
+  {
+    keys->Set(FOG_SHELL(), p.Outlined ? 1 : 0);
   }
   p.Haze.Actor->GetProperty()->SetOpacity(fog ? 1.0 : haze);
 }
@@ -521,7 +621,7 @@ std::vector<std::vector<vtkTypeUInt64>> vtkStylizeVolumeSurfaces::SharedPoints(
 
 //------------------------------------------------------------------------------
 vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* volume,
-  double threshold, double haze, bool fog, vtkCamera* camera, const int whole[6],
+  double threshold, double haze, bool fog, double outline, vtkRenderer* ren, const int whole[6],
   const std::vector<vtkTypeUInt64>& shared)
 {
   std::unique_ptr<Proxy>& slot = this->Proxies[volume];
@@ -540,6 +640,19 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
       part->Actor->SetUserMatrix(slot->Matrix);
       part->Actor->PickableOff();
     }
+    // (the fog's outline: black lines, unlit, not coloured by the array)
+    slot->Contour->SetInputArrayToProcess(
+      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "StylizeHazeWhole");
+    slot->Contour->SetValue(0, 0.5);
+    slot->Contour->ComputeScalarsOff();
+    slot->Contour->ComputeNormalsOff();
+    slot->OutlineMapper->SetInputData(slot->OutlineLines);
+    slot->OutlineMapper->ScalarVisibilityOff();
+    slot->Outline->SetMapper(slot->OutlineMapper);
+    slot->Outline->SetUserMatrix(slot->Matrix);
+    slot->Outline->PickableOff();
+    slot->Outline->GetProperty()->SetColor(0.0, 0.0, 0.0);
+    slot->Outline->GetProperty()->LightingOff();
   }
   Proxy& p = *slot;
   vtkAbstractVolumeMapper* mapper = volume->GetMapper();
@@ -588,11 +701,11 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
   }
   // The haze (not with the volume's own isovalues: those are its surfaces).
   p.Hazy = haze > 0.0 && iso.empty() && HasHaze(opacity, solid);
+  p.Outlined = false;
   if (p.Hazy)
   {
     Feed(p.Haze.Surface, p.Haze.Selected, mapper, data, whole, shared, opacity, HazeLevel * solid);
   }
-  const bool shade = property->GetShade(0) != 0;
   for (Proxy::Part* part : { &p.Solid, &p.Haze })
   {
     if (part == &p.Haze && !p.Hazy)
@@ -600,13 +713,10 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
       break;
     }
     part->Mapper->SetLookupTable(colors);
-    // (unshaded: a surface's defaults, so that the style's light still shapes it)
-    vtkProperty* look = part->Actor->GetProperty();
-    look->SetAmbient(shade ? property->GetAmbient(0) : 0.0);
-    look->SetDiffuse(shade ? property->GetDiffuse(0) : 1.0);
-    look->SetSpecular(shade ? property->GetSpecular(0) : 0.0);
-    look->SetSpecularPower(shade ? property->GetSpecularPower(0) : 1.0);
-    look->SetOpacity(part == &p.Haze ? haze : 1.0);
+    if (part == &p.Solid)
+    {
+      Light(part->Actor, property, false);
+    }
     if (part->Mapper->GetClippingPlanes() != mapper->GetClippingPlanes())
     {
       part->Mapper->SetClippingPlanes(mapper->GetClippingPlanes());
@@ -615,19 +725,17 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
   }
   if (p.Hazy)
   {
-    ColourHaze(p, data, opacity, colors, property->GetScalarOpacityUnitDistance(0), solid, haze,
-      fog, camera);
+    ColourHaze(p, data, property, colors, solid, haze, fog, ren, outline);
   }
   return &p;
 }
 
 //------------------------------------------------------------------------------
 const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, double threshold,
-  double haze, bool fog, vtkMultiProcessController* controller)
+  double haze, bool fog, vtkMultiProcessController* controller, double outline)
 {
   // (the fog needs the whole image: on several processes each holds a piece)
   fog = fog && (!controller || controller->GetNumberOfProcesses() < 2);
-  vtkCamera* camera = s->GetRenderer() ? s->GetRenderer()->GetActiveCamera() : nullptr;
   this->End();
   this->Count = 0;
   this->Hazes.clear();
@@ -635,6 +743,7 @@ const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, d
   const std::vector<std::array<int, 6>> wholes = WholeExtents(this->Props, controller);
   const std::vector<std::vector<vtkTypeUInt64>> shared = this->SharedPoints(controller);
   size_t v = 0; // the volumes' index in `wholes` and `shared`
+  std::vector<vtkActor*> outlines;
   for (vtkProp*& prop : this->Props)
   {
     auto* volume = vtkVolume::SafeDownCast(prop);
@@ -642,16 +751,22 @@ const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, d
     const std::vector<vtkTypeUInt64>* own = volume ? &shared[v++] : nullptr;
     if (Drawable(volume))
     {
-      Proxy* p = this->Update(volume, threshold, haze, fog, camera, whole, *own);
+      Proxy* p = this->Update(volume, threshold, haze, fog, outline, s->GetRenderer(), whole, *own);
       prop = p->Solid.Actor;
       this->Active.push_back(p->Solid.Actor);
       if (p->Hazy)
       {
         this->Hazes.push_back(p->Haze.Actor);
       }
+      if (p->Outlined)
+      {
+        outlines.push_back(p->Outline);
+      }
     }
   }
-  // (the haze surfaces after the props: translucent actors, drawn in the translucent layers)
+  // (the fogs' outlines, opaque lines, then the haze surfaces after the props: translucent
+  // actors, drawn in the translucent layers)
+  this->Props.insert(this->Props.end(), outlines.begin(), outlines.end());
   this->Props.insert(this->Props.end(), this->Hazes.begin(), this->Hazes.end());
   // Volumes gone from the scene free their surfaces.
   for (auto it = this->Proxies.begin(); it != this->Proxies.end();)
@@ -671,6 +786,7 @@ const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, d
   this->State->SetFrameBuffer(s->GetFrameBuffer());
   this->State->SetRequiredKeys(s->GetRequiredKeys());
   this->Active.insert(this->Active.end(), this->Hazes.begin(), this->Hazes.end());
+  this->Active.insert(this->Active.end(), outlines.begin(), outlines.end());
   this->Hazes.clear();
   for (vtkActor* actor : this->Active)
   {
@@ -700,6 +816,11 @@ void vtkStylizeVolumeSurfaces::AddToRenderer(vtkRenderer* ren)
       {
         props->AddItem(entry.second->Haze.Actor);
         this->Active.push_back(entry.second->Haze.Actor);
+      }
+      if (entry.second->Outlined)
+      {
+        props->AddItem(entry.second->Outline);
+        this->Active.push_back(entry.second->Outline);
       }
     }
   }
@@ -734,5 +855,6 @@ void vtkStylizeVolumeSurfaces::ReleaseGraphicsResources(vtkWindow* w)
   {
     entry.second->Solid.Actor->ReleaseGraphicsResources(w);
     entry.second->Haze.Actor->ReleaseGraphicsResources(w);
+    entry.second->Outline->ReleaseGraphicsResources(w);
   }
 }

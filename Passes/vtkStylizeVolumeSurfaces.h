@@ -31,6 +31,7 @@
 class vtkActor;
 class vtkCamera;
 class vtkDataSet;
+class vtkInformationIntegerKey;
 class vtkMultiProcessController;
 class vtkPiecewiseFunction;
 class vtkProp;
@@ -38,6 +39,7 @@ class vtkRenderState;
 class vtkRenderer;
 class vtkScalarsToColors;
 class vtkVolume;
+class vtkVolumeProperty;
 class vtkWindow;
 
 class vtkStylizeVolumeSurfaces
@@ -54,10 +56,13 @@ public:
    * same volumes (a compositor's ranks): the processes' image extents are combined so that each
    * piece's surface is closed at the whole image's faces only, and the points of other meshes'
    * outer faces are exchanged so that a piece is not closed where another piece goes on (all
-   * processes call Begin()).
+   * processes call Begin()). `outline` (a line width in pixels, 0: none): with the fog, the
+   * outline of where the volume looks solid (the whole view ray's opacity, the solid surface
+   * opaque, reaches one half) drawn as black lines on the haze's nearest layer, the haze's own
+   * outline then left out (FOG_SHELL).
    */
   const vtkRenderState* Begin(const vtkRenderState* s, double threshold, double haze = 0.0,
-    bool fog = false, vtkMultiProcessController* controller = nullptr);
+    bool fog = false, vtkMultiProcessController* controller = nullptr, double outline = 0.0);
 
   /**
    * Adds the surfaces of the volumes last drawn as surfaces to `ren`'s props, without updating
@@ -74,6 +79,12 @@ public:
   /** Frees the surfaces' graphics resources. */
   void ReleaseGraphicsResources(vtkWindow* w);
 
+  /**
+   * Set (1) on a haze actor whose outline is drawn as the fog's (Begin()'s `outline`): the line
+   * art leaves out its translucent outline.
+   */
+  static vtkInformationIntegerKey* FOG_SHELL();
+
   /** Whether `volume` is drawn as a surface (its data, components and key allow it). */
   static bool Drawable(vtkVolume* volume);
 
@@ -87,15 +98,16 @@ private:
   struct Proxy;
   /**
    * Colours the haze of `p` as VTK's ray casting shows it (`fog`: its points' colour and opacity
-   * accumulated along the view rays from `camera` to the solid surface, recomputed only when the
-   * view, the haze, the place or the transfer functions change), or leaves it at the `haze`
-   * opacity (fog false, or data that is not an image with point scalars).
+   * accumulated along the view rays from `ren`'s camera to the solid surface, lit as the volume's
+   * `property` shades it, recomputed only when the view, the haze, the place, the light or the
+   * transfer functions change), or leaves it at the `haze` opacity (fog false, or data that is
+   * not an image with point scalars).
    */
-  static void ColourHaze(Proxy& p, vtkDataSet* data, vtkPiecewiseFunction* opacity,
-    vtkScalarsToColors* colors, double unit, double solid, double haze, bool fog,
-    vtkCamera* camera);
-  Proxy* Update(vtkVolume* volume, double threshold, double haze, bool fog, vtkCamera* camera,
-    const int whole[6], const std::vector<vtkTypeUInt64>& shared);
+  static void ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeProperty* property,
+    vtkScalarsToColors* colors, double solid, double haze, bool fog, vtkRenderer* ren,
+    double outline);
+  Proxy* Update(vtkVolume* volume, double threshold, double haze, bool fog, double outline,
+    vtkRenderer* ren, const int whole[6], const std::vector<vtkTypeUInt64>& shared);
   /**
    * Per vtkVolume among Props, in order: over several processes, the keys of the points on the
    * other processes' pieces' outer faces (vtkStylizeVolumeSurface::SetSharedPoints()) for data

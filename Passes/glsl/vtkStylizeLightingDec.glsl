@@ -22,6 +22,7 @@ uniform vec2 stylizeDepthRange;     // view depth mapped to 0 and 1 for the leve
 // hue of colours from an array times the tone (STYLIZE_DATA_COLORS: this program's colours come
 // from one), 4 every colour's hue times the tone. 1 to 4 light with neutral lights.
 uniform int stylizeColorMode;
+uniform int stylizeEmitted; // 1: the actor's colours are light already (EMITTED_COLORS)
 uniform int stylizeSolidColorTones; // 1: in modes 2 to 4 a solid colour's lightness darkens the tone
 uniform float stylizeSolidColorWhite; // the luminance from which a solid colour counts as white
 // Pixel art (docs/algorithms.md section 1)

@@ -24,9 +24,13 @@
   vec3 stylizeRGB = stylizeStandard(stylizeN, stylizeP, stylizeAmbient, stylizeDiffuse,
     specularColor, specularPower);
 #endif
+  if (stylizeEmitted == 1)
+  {
+    stylizeRGB = ambientColor + diffuseColor; // colours that are light already: as they are
+  }
   if (stylizeTone)
   {
     stylizeRGB = stylizeToned(stylizeRGB, ambientColor, diffuseColor, ambientIntensity,
-      diffuseIntensity, !stylizeWhite);
+      diffuseIntensity, !stylizeWhite && stylizeEmitted == 0);
   }
   gl_FragData[0] = vec4(stylizeSaturateFinite(stylizeRGB), opacity);

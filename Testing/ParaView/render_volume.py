@@ -11,7 +11,7 @@ realdata.volumes' skull (Testing/RealData/volumes.py), 400x300. Writes OUTPUT_PR
   white, black   the volume alone as ParaView draws it over white and over black (its opacity)
   comic, pixel, sketch, lines   each style at its defaults (pixel art: Palette 16)
   haze    the comic with VolumeHaze 0.5 (the tissue below the opacity threshold as a translucent
-          surface)
+          surface: the shell, HAZE_SHELL, which 2 ranks draw as 1)
   grid-<style>   the data axes grid on: vtk (Style None) and each style
   disk-<style>   ParaView's disk_out_ref simulation, an unstructured volume redistributed over
                  the ranks, seen across the cut between their pieces: vtk and each style
@@ -66,6 +66,7 @@ for style, label in enumerate(["vtk", "comic", "pixel", "sketch", "lines"]):
     shot(label)
 view.Style = 1
 view.ComicVolumeHaze = 0.5
+view.ComicVolumeHazeMode = 0  # (the shell: the fog needs the whole volume on one rank)
 shot("haze")
 view.ComicVolumeHaze = 0.0
 view.Style = 0
