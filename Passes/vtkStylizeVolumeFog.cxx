@@ -83,7 +83,60 @@ struct FogTables
   std::vector<float> Values;
   std::vector<char> Valid; // (a resampled image: where it lies in the data; empty: everywhere)
   double Lo = 0.0, Width = 1.0;
+  // Blocks of Block^3 cells where every sample's opacity is 0 (the rays step over them).
+  static constexpr int Block = 8;
+  std::vector<char> Empty;
+  int Blocks[3] = { 0, 0, 0 };
 };
+
+/** Marks `t`'s blocks whose voxels' values all have opacity 0 (`dims`: the image's). */
+void MarkEmptyBlocks(FogTables& t, const int dims[3])
+{
+  constexpr int B = FogTables::Block;
+  constexpr int bins = FogTables::Bins;
+  for (int a = 0; a < 3; ++a)
+  {
+    t.Blocks[a] = std::max(1, (dims[a] - 1 + B - 1) / B);
+  }
+  // per bin range [lo, hi]: empty when no bin in it is above 0 (prefix counts of non-zero bins)
+  std::vector<int> count(bins + 1, 0);
+  for (int i = 0; i < bins; ++i)
+  {
+    count[i + 1] = count[i] + (t.Alpha[i] > 0.0 ? 1 : 0);
+  }
+  const size_t n = static_cast<size_t>(t.Blocks[0]) * t.Blocks[1] * t.Blocks[2];
+  t.Empty.assign(n, 0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType b = begin; b < end; ++b)
+      {
+        const int bi[3] = { static_cast<int>(b % t.Blocks[0]),
+          static_cast<int>((b / t.Blocks[0]) % t.Blocks[1]),
+          static_cast<int>(b / (static_cast<vtkIdType>(t.Blocks[0]) * t.Blocks[1])) };
+        // (the cells of the block use the voxels up to the next block's first)
+        float lo = VTK_FLOAT_MAX, hi = -VTK_FLOAT_MAX;
+        for (int k = bi[2] * B; k <= std::min((bi[2] + 1) * B, dims[2] - 1); ++k)
+        {
+          for (int j = bi[1] * B; j <= std::min((bi[1] + 1) * B, dims[1] - 1); ++j)
+          {
+            const size_t row = (static_cast<size_t>(k) * dims[1] + j) * dims[0];
+            for (int i = bi[0] * B; i <= std::min((bi[0] + 1) * B, dims[0] - 1); ++i)
+            {
+              lo = std::min(lo, t.Values[row + i]);
+              hi = std::max(hi, t.Values[row + i]);
+            }
+          }
+        }
+        auto binOf = [&](double value)
+        {
+          return std::min(
+            std::max(static_cast<int>((value - t.Lo) / t.Width * (bins - 1) + 0.5), 0), bins - 1);
+        };
+        t.Empty[b] = count[binOf(hi) + 1] - count[binOf(lo)] == 0;
+      }
+    });
+}
 
 /** Fills `t` for the volume; false for an empty or non-finite range. */
 bool MakeFogTables(const vtkStylizeVolumeFog::Volume& v, FogTables& t)
@@ -120,6 +173,9 @@ bool MakeFogTables(const vtkStylizeVolumeFog::Volume& v, FogTables& t)
       t.Valid[i] = v.Mask->GetComponent(i, 0) != 0.0;
     }
   }
+  const int* e = v.Image->GetExtent();
+  const int dims[3] = { e[1] - e[0] + 1, e[3] - e[2] + 1, e[5] - e[4] + 1 };
+  MarkEmptyBlocks(t, dims);
   return true;
 }
 
@@ -133,7 +189,7 @@ struct FogRay
   const double (*Tx)[3];
   double Ijk[3], Di[3]; // the ray's start and step in index space
   double ToLight[3];    // towards the headlight, in the image's coordinates (unit)
-  double Power;         // the opacity's exponent for a step (step / unit)
+  const double* Step;   // per table bin, the opacity of a step (1 - (1 - a)^(step / unit))
   double Rgba[4] = { 0.0, 0.0, 0.0, 0.0 };
 
   /** The image's value at index-space point `q` (clamped to the image); false outside the data. */
@@ -165,7 +221,7 @@ struct FogRay
     return inside;
   }
 
-  /** The sample at step t: its opacity (0 outside the data) and its table bin. */
+  /** The sample at step t: its opacity and its table bin (outside the data: 0 and -1). */
   double OpacityAt(double t, int& bin) const
   {
     double q[3], value;
@@ -175,7 +231,7 @@ struct FogRay
     }
     if (!this->ValueAt(q, value))
     {
-      bin = 0;
+      bin = -1; // (nothing: Add() skips it)
       return 0.0;
     }
     constexpr int bins = FogTables::Bins;
@@ -183,6 +239,38 @@ struct FogRay
       std::max(static_cast<int>((value - this->T.Lo) / this->T.Width * (bins - 1) + 0.5), 0),
       bins - 1);
     return this->T.Alpha[bin];
+  }
+
+  /**
+   * The steps from the sample at step t to the next one that can hold fog: past the end of its
+   * block when every sample there has opacity 0 (the samples in between add nothing), else 1.
+   */
+  int Ahead(double t) const
+  {
+    constexpr int B = FogTables::Block;
+    double exit = 1e30;
+    int block[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double q = this->Ijk[a] - this->E[2 * a];
+      const double c = std::min(std::max(q + t * this->Di[a], 0.0), this->Dims[a] - 1.0);
+      block[a] = std::min(static_cast<int>(c) / B, this->T.Blocks[a] - 1);
+      if (this->Di[a] > 1e-12)
+      {
+        exit = std::min(exit, ((block[a] + 1) * B - q) / this->Di[a]);
+      }
+      else if (this->Di[a] < -1e-12)
+      {
+        exit = std::min(exit, (block[a] * B - q) / this->Di[a]);
+      }
+    }
+    const size_t b =
+      (static_cast<size_t>(block[2]) * this->T.Blocks[1] + block[1]) * this->T.Blocks[0] + block[0];
+    if (!this->T.Empty[b] || !(exit < 1e29))
+    {
+      return 1;
+    }
+    return std::max(1, static_cast<int>(std::min(std::ceil(exit - t), 1e6)));
   }
 
   /**
@@ -223,11 +311,10 @@ struct FogRay
     }
   }
 
-  /** Composites the sample at step t (`sample`: its opacity) behind what is accumulated. */
-  void Add(double t, double sample, int bin)
+  /** Composites the sample at step t (its table bin) behind what is accumulated. */
+  void Add(double t, int bin)
   {
-    const double alpha =
-      (1.0 - std::pow(1.0 - std::min(sample, 1.0), this->Power)) * (1.0 - this->Rgba[3]);
+    const double alpha = bin < 0 ? 0.0 : this->Step[bin] * (1.0 - this->Rgba[3]);
     if (!(alpha > 0.0))
     {
       return;
@@ -256,7 +343,7 @@ struct FogRay
   {
     int bin = 0;
     bool nearest = last >= first;
-    for (double t = first + 0.5; t < -1.0 && last >= first; t += 1.0)
+    for (double t = first + 0.5; t < -1.0 && last >= first; t += this->Ahead(t))
     {
       const double sample = this->OpacityAt(t, bin);
       if (sample >= level)
@@ -265,13 +352,13 @@ struct FogRay
         nearest = false;
         break;
       }
-      this->Add(t, sample, bin);
+      this->Add(t, bin);
     }
     // (which side of the haze the ray is on: a sample away from the point, where the point's own
     // crossing is behind)
     bool within = false;
     int k = 0;
-    for (; 0.5 + k <= last && this->Rgba[3] < 0.995; ++k)
+    for (; 0.5 + k <= last && this->Rgba[3]<0.995; k += k> Settle ? this->Ahead(0.5 + k) : 1)
     {
       const double sample = this->OpacityAt(0.5 + k, bin);
       if (sample >= solid)
@@ -283,19 +370,19 @@ struct FogRay
         break; // the haze's next layer
       }
       within = k == Settle ? sample >= level : within;
-      this->Add(0.5 + k, sample, bin);
+      this->Add(0.5 + k, bin);
     }
     // The whole ray's opacity (the nearest layer's points; the solid surface opaque): on through
     // the haze's other layers.
     double whole = this->Rgba[3];
-    for (; nearest && 0.5 + k <= last && whole < 0.995; ++k)
+    for (; nearest && 0.5 + k <= last && whole < 0.995; k += this->Ahead(0.5 + k))
     {
       const double sample = this->OpacityAt(0.5 + k, bin);
       if (sample >= solid)
       {
         return Solid;
       }
-      whole += (1.0 - std::pow(1.0 - std::min(sample, 1.0), this->Power)) * (1.0 - whole);
+      whole += bin < 0 ? 0.0 : this->Step[bin] * (1.0 - whole);
     }
     return nearest ? whole : 0.0;
   }
@@ -354,6 +441,12 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
   {
     return false;
   }
+  // (each bin's opacity over a step, as VTK corrects it for the sample distance)
+  std::vector<double> corrected(tables.Alpha.size());
+  for (size_t i = 0; i < corrected.size(); ++i)
+  {
+    corrected[i] = 1.0 - std::pow(1.0 - std::min(tables.Alpha[i], 1.0), step / v.Unit);
+  }
   // index = t0 + x[0] tx[0] + x[1] tx[1] + x[2] tx[2] (the image's origin, spacing, direction)
   double t0[3], tx[3][3];
   IndexTransform(image, t0, tx);
@@ -377,7 +470,7 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
     {
       for (vtkIdType id = begin; id < end; ++id)
       {
-        FogRay ray{ tables, v.Light, e, dims, tx, {}, {}, {}, step / v.Unit };
+        FogRay ray{ tables, v.Light, e, dims, tx, {}, {}, {}, corrected.data() };
         double x[3], d[3];
         points->GetPoint(id, x);
         for (int a = 0; a < 3; ++a)
