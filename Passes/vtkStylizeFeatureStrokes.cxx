@@ -113,6 +113,7 @@ struct vtkStylizeFeatureStrokes::Internals
   vtkNew<vtkPolyData> Strokes;
   vtkNew<vtkImageData> Depth;
   vtkNew<vtkFloatArray> LinearDepth;
+  vtkNew<vtkFloatArray> LayerDepth; // (a translucent layer's scene depth, kept between frames)
   int Size[2] = { 0, 0 };
   vtkTextureObject* Texture = nullptr;
   std::vector<float> Coverage;
@@ -590,7 +591,7 @@ vtkTextureObject* vtkStylizeFeatureStrokes::RenderFrame(
   {
     // A translucent layer's lines are hidden by the layer's surface and by the opaque scene
     // where the layer has none (a depth of 0).
-    vtkNew<vtkFloatArray> layer;
+    vtkFloatArray* layer = in.LayerDepth;
     if (style->GetSceneGBufferPass()->DownloadChannel(
           vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER, layer) &&
       layer->GetNumberOfTuples() == depth->GetNumberOfTuples())

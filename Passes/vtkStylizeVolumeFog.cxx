@@ -20,9 +20,6 @@ namespace
 /** The fog's steps (half samples) from a haze point before the side of the haze is read. */
 constexpr int Settle = 3;
 
-/** A ray's opacity where it meets the solid surface (above any fog's). */
-constexpr double Solid = 2.0;
-
 /** Accumulated premultiplied `rgba` as the point's colour and opacity (times `scale`), bytes. */
 void WriteRGBA(vtkUnsignedCharArray* out, vtkIdType id, const double rgba[4], double scale)
 {
@@ -336,8 +333,8 @@ struct FogRay
    * the shell's layers, composited front to back, add up to the whole ray: in front of it, the
    * fog from where the ray enters the image unless the haze is crossed there (a nearer layer's
    * part); behind it, the fog up to the next crossing of the haze, the solid surface or the
-   * image's end. Returns the whole ray's opacity (Solid where it meets the solid surface) for
-   * the ray's nearest layer, 0 for the others.
+   * image's end. Returns the whole ray's opacity (through the solid material too, as VTK
+   * accumulates it) for the ray's nearest layer, 0 for the others.
    */
   double March(double first, double last, double level, double solid)
   {
@@ -363,7 +360,7 @@ struct FogRay
       const double sample = this->OpacityAt(0.5 + k, bin);
       if (sample >= solid)
       {
-        return nearest ? Solid : 0.0; // the solid surface
+        break; // the solid surface
       }
       if (k > Settle && (sample >= level) != within)
       {
@@ -372,16 +369,12 @@ struct FogRay
       within = k == Settle ? sample >= level : within;
       this->Add(0.5 + k, bin);
     }
-    // The whole ray's opacity (the nearest layer's points; the solid surface opaque): on through
-    // the haze's other layers.
+    // The whole ray's opacity (the nearest layer's points): on through the haze's other layers
+    // and the solid material, as VTK accumulates it.
     double whole = this->Rgba[3];
     for (; nearest && 0.5 + k <= last && whole < 0.995; k += this->Ahead(0.5 + k))
     {
-      const double sample = this->OpacityAt(0.5 + k, bin);
-      if (sample >= solid)
-      {
-        return Solid;
-      }
+      this->OpacityAt(0.5 + k, bin);
       whole += bin < 0 ? 0.0 : this->Step[bin] * (1.0 - whole);
     }
     return nearest ? whole : 0.0;
@@ -496,7 +489,7 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
         WriteRGBA(out, id, ray.Rgba, scale);
         if (whole)
         {
-          whole->SetValue(id, static_cast<float>(opacity >= Solid ? 1.0 : opacity * scale));
+          whole->SetValue(id, static_cast<float>(opacity * scale));
         }
       }
     });

@@ -54,9 +54,9 @@ public:
    * corrected for the step as VTK's (1 - (1 - a)^(step / unit)) and, with shading, its colour lit
    * as VTK's ray caster lights it (the gradient by central differences as the normal, the
    * headlight); the result's opacity is times `scale`. Written as `out` (RGBA bytes); `whole`
-   * (or null): per point, the whole ray's opacity (1 where it meets the solid surface; times
-   * `scale`, at most 1) for the points of the ray's nearest layer, 0 for the others. The image's
-   * scalars as floats and the transfer functions' tables are kept until the data or the
+   * (or null): per point, the whole ray's opacity (through the solid material too, as VTK
+   * accumulates it; times `scale`) for the points of the ray's nearest layer, 0 for the others. The
+   * image's scalars as floats and the transfer functions' tables are kept until the data or the
    * functions change. False when the image cannot be sampled so.
    */
   bool Accumulate(vtkPolyData* haze, const Volume& volume, double level, double solid, double scale,

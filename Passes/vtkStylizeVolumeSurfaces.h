@@ -57,8 +57,8 @@ public:
    * piece's surface is closed at the whole image's faces only, and the points of other meshes'
    * outer faces are exchanged so that a piece is not closed where another piece goes on (all
    * processes call Begin()). `outline` (a line width in pixels, 0: none): with the fog, the
-   * outline of where the volume looks solid (the whole view ray's opacity, the solid surface
-   * opaque, reaches one half) drawn as black lines on the haze's nearest layer, the haze's own
+   * outline of where the volume looks solid (the whole view ray's opacity, as VTK accumulates
+   * it, reaches one half) drawn as black lines on the haze's nearest layer, the haze's own
    * outline then left out (FOG_SHELL).
    */
   const vtkRenderState* Begin(const vtkRenderState* s, double threshold, double haze = 0.0,
