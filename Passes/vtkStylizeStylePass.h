@@ -244,8 +244,9 @@ public:
    * (vtkStylizeLightingPass::EMITTED_COLORS: their lightness is the tone). The line art draws
    * the outline of where the volume looks solid (the whole ray's opacity one half) instead of
    * the shell's. Data that is not an image, or cell scalars, is sampled on an image of 64 points
-   * along its longest side (again when it changes). HAZE_FOG needs the whole volume on one
-   * process; on several processes (ParaView's ranks, each holding a piece) the haze is the shell.
+   * along its longest side (again when it changes). On several processes (ParaView's ranks,
+   * each holding a piece) each samples the whole volume, the pieces gathered onto an image of
+   * 128 points along its longest side (again when a piece changes).
    * HAZE_SHELL: a shell of the VolumeHaze opacity in the colour the colour map gives there.
    */
   vtkSetClampMacro(VolumeHazeMode, int, HAZE_SHELL, HAZE_FOG);

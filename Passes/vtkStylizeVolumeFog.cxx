@@ -1,12 +1,18 @@
 #include "vtkStylizeVolumeFog.h"
 
+#include "vtkCommunicator.h"
 #include "vtkDataArray.h"
+#include "vtkDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkProbeFilter.h"
 #include "vtkSMPTools.h"
 #include "vtkScalarsToColors.h"
 #include "vtkUnsignedCharArray.h"
@@ -494,4 +500,89 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
       }
     });
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkStylizeVolumeFog::GatherImage(
+  vtkDataSet* piece, const char* name, vtkMultiProcessController* c, int points)
+{
+  // The union of the pieces' bounds: lows and negated highs, one reduction.
+  const bool held = piece && piece->GetNumberOfPoints() > 0 && name;
+  double local[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  if (held)
+  {
+    double b[6];
+    piece->GetBounds(b);
+    for (int a = 0; a < 3; ++a)
+    {
+      local[a] = b[2 * a];
+      local[3 + a] = -b[2 * a + 1];
+    }
+  }
+  double all[6];
+  c->AllReduce(local, all, 6, vtkCommunicator::MIN_OP);
+  if (!(all[0] < VTK_DOUBLE_MAX))
+  {
+    return nullptr; // (no piece holds data)
+  }
+  double bounds[6];
+  for (int a = 0; a < 3; ++a)
+  {
+    bounds[2 * a] = all[a];
+    bounds[2 * a + 1] = std::max(-all[3 + a], all[a]);
+  }
+  const double longest =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-30 });
+  int dims[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    dims[a] = std::max(
+      2, static_cast<int>(std::lround(points * (bounds[2 * a + 1] - bounds[2 * a]) / longest)));
+  }
+  const vtkIdType n = static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2];
+  // Each piece's values where it holds data, and 1 there: summed over the processes. (Probed:
+  // ParaView's factory makes vtkResampleToImage a parallel filter, which would split the image.)
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(dims);
+  image->SetOrigin(bounds[0], bounds[2], bounds[4]);
+  image->SetSpacing((bounds[1] - bounds[0]) / (dims[0] - 1),
+    (bounds[3] - bounds[2]) / (dims[1] - 1), (bounds[5] - bounds[4]) / (dims[2] - 1));
+  std::vector<float> sums(2 * static_cast<size_t>(n), 0.0f), totals(sums.size());
+  if (held)
+  {
+    vtkNew<vtkProbeFilter> probe;
+    probe->SetInputData(image);
+    probe->SetSourceData(piece);
+    probe->Update();
+    vtkDataSet* sampled = probe->GetOutput();
+    vtkDataArray* values = sampled->GetPointData()->GetArray(name);
+    vtkDataArray* mask = sampled->GetPointData()->GetArray(probe->GetValidPointMaskArrayName());
+    for (vtkIdType i = 0; values && mask && i < n; ++i)
+    {
+      const double v = values->GetComponent(i, 0);
+      if (mask->GetComponent(i, 0) != 0.0 && std::isfinite(v))
+      {
+        sums[i] = static_cast<float>(v);
+        sums[n + i] = 1.0f;
+      }
+    }
+  }
+  c->AllReduce(
+    sums.data(), totals.data(), static_cast<vtkIdType>(sums.size()), vtkCommunicator::SUM_OP);
+  vtkNew<vtkFloatArray> values;
+  values->SetName(name ? name : "");
+  values->SetNumberOfTuples(n);
+  vtkNew<vtkUnsignedCharArray> valid;
+  valid->SetName("vtkValidPointMask");
+  valid->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const float count = totals[n + i];
+    values->SetValue(i, count > 0.0f ? totals[i] / count : 0.0f);
+    valid->SetValue(i, count > 0.0f ? 1 : 0);
+  }
+  image->GetPointData()->AddArray(values);
+  image->GetPointData()->AddArray(valid);
+  return image;
 }

@@ -6,11 +6,14 @@
 #ifndef vtkStylizeVolumeFog_h
 #define vtkStylizeVolumeFog_h
 
-#include "vtkType.h" // for vtkMTimeType
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+#include "vtkType.h"         // for vtkMTimeType
 
 #include <memory> // for std::unique_ptr
 
 class vtkDataArray;
+class vtkDataSet;
+class vtkMultiProcessController;
 class vtkFloatArray;
 class vtkImageData;
 class vtkPiecewiseFunction;
@@ -62,6 +65,16 @@ public:
   bool Accumulate(vtkPolyData* haze, const Volume& volume, double level, double solid, double scale,
     const double eye[3], const double dop[3], bool parallel, vtkUnsignedCharArray* out,
     vtkFloatArray* whole = nullptr);
+
+  /**
+   * Over several processes that each hold a piece of the same volume (collective: every process
+   * calls it for the same volumes in the same order): every piece's array `name` resampled onto
+   * one image over the union of the pieces' bounds (`points` along its longest side) and combined
+   * over the processes, so that each samples the whole volume; its vtkValidPointMask is 1 where
+   * some piece holds data. `piece` may be null or empty. Null when no piece has data.
+   */
+  static vtkSmartPointer<vtkImageData> GatherImage(
+    vtkDataSet* piece, const char* name, vtkMultiProcessController* c, int points);
 
 private:
   struct Tables;

@@ -84,6 +84,9 @@ namespace
 /** The haze's surface: where the opacity reaches this share of the solid's threshold. */
 constexpr double HazeLevel = 0.1;
 
+/** The points along the longest side of the image the fog samples on several processes. */
+constexpr int FogImagePoints = 128;
+
 /**
  * A surface's light as the volume's `property` shades it (unshaded: a surface's defaults, so
  * that the style's light still shapes it), or none (`emitted`: its colours drawn as they are).
@@ -309,7 +312,8 @@ std::vector<std::array<int, 6>> WholeExtents(
 
 //------------------------------------------------------------------------------
 void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeProperty* property,
-  vtkScalarsToColors* colors, double solid, double haze, bool fog, vtkRenderer* ren, double outline)
+  vtkScalarsToColors* colors, double solid, double haze, bool fog, vtkRenderer* ren, double outline,
+  vtkImageData* gathered)
 {
   vtkCamera* camera = ren ? ren->GetActiveCamera() : nullptr;
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
@@ -322,7 +326,14 @@ void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeP
         vm->GetArrayId(), vm->GetArrayName(), cells)
     : nullptr;
   auto* image = vtkImageData::SafeDownCast(data);
-  if ((!image || cells) && fog && scalars && data->GetNumberOfCells() > 0)
+  if (gathered && fog && scalars)
+  {
+    // (several processes: the whole volume, gathered from their pieces)
+    image = gathered;
+    scalars = scalars->GetName() ? image->GetPointData()->GetArray(scalars->GetName()) : nullptr;
+    cells = 0;
+  }
+  else if ((!image || cells) && fog && scalars && data->GetNumberOfCells() > 0)
   {
     // Other data, or cell scalars, sampled on an image of up to 64 points along its longest
     // side (where the image lies outside the data, vtkValidPointMask is 0 and the fog nothing);
@@ -620,9 +631,68 @@ std::vector<std::vector<vtkTypeUInt64>> vtkStylizeVolumeSurfaces::SharedPoints(
 }
 
 //------------------------------------------------------------------------------
+std::vector<vtkImageData*> vtkStylizeVolumeSurfaces::FogImages(vtkMultiProcessController* c)
+{
+  std::vector<vtkVolume*> volumes;
+  for (vtkProp* prop : this->Props)
+  {
+    if (auto* volume = vtkVolume::SafeDownCast(prop))
+    {
+      volumes.push_back(volume);
+    }
+  }
+  std::vector<vtkImageData*> images(volumes.size(), nullptr);
+  const int count = static_cast<int>(volumes.size());
+  int least = count, most = count;
+  if (!c || c->GetNumberOfProcesses() < 2)
+  {
+    this->GatheredImages.clear();
+    return images;
+  }
+  c->AllReduce(&count, &least, 1, vtkCommunicator::MIN_OP);
+  c->AllReduce(&count, &most, 1, vtkCommunicator::MAX_OP);
+  if (least != most || count == 0)
+  {
+    this->GatheredImages.clear(); // (the processes disagree: no fog, the shell)
+    return images;
+  }
+  std::map<vtkVolume*, Gathered> kept;
+  for (size_t v = 0; v < volumes.size(); ++v)
+  {
+    vtkVolume* volume = volumes[v];
+    vtkAbstractVolumeMapper* mapper = volume->GetMapper();
+    vtkDataSet* data = mapper ? UpdatedInput(mapper) : nullptr;
+    int cells = 0;
+    vtkDataArray* scalars = data
+      ? vtkAbstractMapper::GetScalars(data, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
+          mapper->GetArrayId(), mapper->GetArrayName(), cells)
+      : nullptr;
+    // (gathered again when any piece changed: every process decides alike)
+    auto found = this->GatheredImages.find(volume);
+    const vtkMTimeType time = data ? data->GetMTime() : 0;
+    int changed = found == this->GatheredImages.end() || found->second.Time != time, any = 0;
+    c->AllReduce(&changed, &any, 1, vtkCommunicator::MAX_OP);
+    Gathered& entry = kept[volume];
+    if (any)
+    {
+      entry.Image = vtkStylizeVolumeFog::GatherImage(
+        data, scalars ? scalars->GetName() : nullptr, c, FogImagePoints);
+      entry.Time = time;
+    }
+    else
+    {
+      entry = found->second;
+    }
+    images[v] = entry.Image;
+  }
+  this->GatheredImages.swap(kept);
+  return images;
+}
+
+//------------------------------------------------------------------------------
 vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* volume,
-  double threshold, double haze, bool fog, double outline, vtkRenderer* ren, const int whole[6],
-  const std::vector<vtkTypeUInt64>& shared)
+  double threshold, double haze, bool fog, double outline, vtkImageData* gathered, vtkRenderer* ren,
+  const int whole[6], const std::vector<vtkTypeUInt64>& shared)
 {
   std::unique_ptr<Proxy>& slot = this->Proxies[volume];
   if (!slot || slot->Volume.GetPointer() != volume)
@@ -725,7 +795,7 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
   }
   if (p.Hazy)
   {
-    ColourHaze(p, data, property, colors, solid, haze, fog, ren, outline);
+    ColourHaze(p, data, property, colors, solid, haze, fog, ren, outline, gathered);
   }
   return &p;
 }
@@ -734,14 +804,17 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
 const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, double threshold,
   double haze, bool fog, vtkMultiProcessController* controller, double outline)
 {
-  // (the fog needs the whole image: on several processes each holds a piece)
-  fog = fog && (!controller || controller->GetNumberOfProcesses() < 2);
+
   this->End();
   this->Count = 0;
   this->Hazes.clear();
   this->Props.assign(s->GetPropArray(), s->GetPropArray() + s->GetPropArrayCount());
   const std::vector<std::array<int, 6>> wholes = WholeExtents(this->Props, controller);
   const std::vector<std::vector<vtkTypeUInt64>> shared = this->SharedPoints(controller);
+  // (on several processes, each holding a piece, the fog samples the whole volume gathered)
+  const std::vector<vtkImageData*> gathered = fog && haze > 0.0
+    ? this->FogImages(controller)
+    : std::vector<vtkImageData*>(wholes.size(), nullptr);
   size_t v = 0; // the volumes' index in `wholes` and `shared`
   std::vector<vtkActor*> outlines;
   for (vtkProp*& prop : this->Props)
@@ -751,7 +824,8 @@ const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, d
     const std::vector<vtkTypeUInt64>* own = volume ? &shared[v++] : nullptr;
     if (Drawable(volume))
     {
-      Proxy* p = this->Update(volume, threshold, haze, fog, outline, s->GetRenderer(), whole, *own);
+      Proxy* p = this->Update(
+        volume, threshold, haze, fog, outline, gathered[v - 1], s->GetRenderer(), whole, *own);
       prop = p->Solid.Actor;
       this->Active.push_back(p->Solid.Actor);
       if (p->Hazy)

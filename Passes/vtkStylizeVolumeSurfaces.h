@@ -24,6 +24,8 @@
 
 #include "vtkType.h" // for vtkMTimeType
 
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+
 #include <map>    // for std::map
 #include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
@@ -31,6 +33,7 @@
 class vtkActor;
 class vtkCamera;
 class vtkDataSet;
+class vtkImageData;
 class vtkInformationIntegerKey;
 class vtkMultiProcessController;
 class vtkPiecewiseFunction;
@@ -105,9 +108,10 @@ private:
    */
   static void ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeProperty* property,
     vtkScalarsToColors* colors, double solid, double haze, bool fog, vtkRenderer* ren,
-    double outline);
+    double outline, vtkImageData* gathered);
   Proxy* Update(vtkVolume* volume, double threshold, double haze, bool fog, double outline,
-    vtkRenderer* ren, const int whole[6], const std::vector<vtkTypeUInt64>& shared);
+    vtkImageData* gathered, vtkRenderer* ren, const int whole[6],
+    const std::vector<vtkTypeUInt64>& shared);
   /**
    * Per vtkVolume among Props, in order: over several processes, the keys of the points on the
    * other processes' pieces' outer faces (vtkStylizeVolumeSurface::SetSharedPoints()) for data
@@ -123,6 +127,19 @@ private:
   };
   std::map<vtkDataSet*, OuterKeys> OuterKeyCache;
   std::vector<std::vector<vtkTypeUInt64>> LastShared; // the last exchange's result
+
+  /**
+   * Per vtkVolume among Props, in order, over several processes: the whole volume the fog
+   * samples (vtkStylizeVolumeFog::GatherImage(), again only when some piece changed), or null.
+   * Collective.
+   */
+  std::vector<vtkImageData*> FogImages(vtkMultiProcessController* c);
+  struct Gathered
+  {
+    vtkSmartPointer<vtkImageData> Image;
+    vtkMTimeType Time = 0;
+  };
+  std::map<vtkVolume*, Gathered> GatheredImages;
 
   std::map<vtkVolume*, std::unique_ptr<Proxy>> Proxies;
   std::vector<vtkProp*> Props;

@@ -11,7 +11,9 @@ realdata.volumes' skull (Testing/RealData/volumes.py), 400x300. Writes OUTPUT_PR
   white, black   the volume alone as ParaView draws it over white and over black (its opacity)
   comic, pixel, sketch, lines   each style at its defaults (pixel art: Palette 16)
   haze    the comic with VolumeHaze 0.5 (the tissue below the opacity threshold as a translucent
-          surface: the shell, HAZE_SHELL, which 2 ranks draw as 1)
+          surface: the shell, HAZE_SHELL)
+  fog, fog-lines   the comic and the line art with VolumeHaze 1, HAZE_FOG (VTK's fog, on 2
+          ranks sampled on the pieces gathered)
   grid-<style>   the data axes grid on: vtk (Style None) and each style
   disk-<style>   ParaView's disk_out_ref simulation, an unstructured volume redistributed over
                  the ranks, seen across the cut between their pieces: vtk and each style
@@ -66,8 +68,16 @@ for style, label in enumerate(["vtk", "comic", "pixel", "sketch", "lines"]):
     shot(label)
 view.Style = 1
 view.ComicVolumeHaze = 0.5
-view.ComicVolumeHazeMode = 0  # (the shell: the fog needs the whole volume on one rank)
+view.ComicVolumeHazeMode = 0  # (the shell)
 shot("haze")
+view.ComicVolumeHaze = 1.0
+view.ComicVolumeHazeMode = 1  # (the fog: on 2 ranks sampled on the pieces gathered)
+shot("fog")
+view.Style = 4
+view.LineArtVolumeHaze = 1.0
+shot("fog-lines")
+view.LineArtVolumeHaze = 0.0
+view.Style = 1
 view.ComicVolumeHaze = 0.0
 view.Style = 0
 background = list(view.Background)
