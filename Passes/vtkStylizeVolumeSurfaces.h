@@ -26,10 +26,12 @@
 
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 
+#include <array>  // for std::array
 #include <map>    // for std::map
 #include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
 
+class vtkAbstractVolumeMapper;
 class vtkActor;
 class vtkCamera;
 class vtkDataSet;
@@ -106,6 +108,17 @@ private:
    * transfer functions change), or leaves it at the `haze` opacity (fog false, or data that is
    * not an image with point scalars).
    */
+  /** The mapper's input, brought up to date. */
+  static vtkDataSet* UpdatedInput(vtkAbstractVolumeMapper* mapper);
+  /**
+   * Per vtkVolume among `props`, in order, the extent of the whole image it draws a piece of:
+   * over several processes, the union of the processes' image extents (each process holds the
+   * same volumes, each drawing its piece: ParaView's ranks); otherwise, or for data that is not
+   * an image, or when the processes do not hold the same number of volumes, an empty extent (the
+   * surface filter then takes the pipeline's or the image's own). Collective.
+   */
+  static std::vector<std::array<int, 6>> WholeExtents(
+    const std::vector<vtkProp*>& props, vtkMultiProcessController* c);
   static void ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeProperty* property,
     vtkScalarsToColors* colors, double solid, double haze, bool fog, vtkRenderer* ren,
     double outline, vtkImageData* gathered);
