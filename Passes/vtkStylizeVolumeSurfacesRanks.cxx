@@ -245,4 +245,3 @@ std::vector<vtkImageData*> vtkStylizeVolumeSurfaces::FogImages(vtkMultiProcessCo
   this->GatheredImages.swap(kept);
   return images;
 }
-
