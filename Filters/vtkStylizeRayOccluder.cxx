@@ -1,6 +1,7 @@
 #include "vtkStylizeRayOccluder.h"
 
 #include "vtkCellArray.h"
+#include "vtkDataArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
@@ -39,10 +40,16 @@ struct vtkStylizeRayOccluder::Internals
   std::vector<Node> Nodes;          // Nodes[0]: the root
   double MeanEdge = 0.0;
   double Bounds[6] = { 1, -1, 1, -1, 1, -1 };
+  std::vector<float> Alpha; // per triangle, its opacity (SetOpacity(); empty: opaque)
+  vtkIdType SurfacePoints = 0;
 
   void Build();
   std::uint32_t Split(std::uint32_t first, std::uint32_t count, std::vector<float>& centroids);
   bool Hit(std::uint32_t t, const double o[3], const double d[3]) const;
+  /** Calls visit(t) for every triangle the segment o + s d, s in [0, 1], crosses, until it
+   * returns false. */
+  template <typename Visit>
+  void Cross(const double o[3], const double d[3], Visit visit) const;
 };
 
 //------------------------------------------------------------------------------
@@ -61,6 +68,7 @@ void vtkStylizeRayOccluder::SetSurface(vtkPolyData* surface, vtkMatrix4x4* matri
   in = Internals();
   vtkPoints* points = surface ? surface->GetPoints() : nullptr;
   const vtkIdType np = points ? points->GetNumberOfPoints() : 0;
+  in.SurfacePoints = np;
   if (np == 0 || np >= static_cast<vtkIdType>(std::numeric_limits<std::uint32_t>::max()))
   {
     this->Modified();
@@ -295,15 +303,14 @@ bool vtkStylizeRayOccluder::Internals::Hit(
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizeRayOccluder::Blocks(const double a[3], const double b[3]) const
+template <typename Visit>
+void vtkStylizeRayOccluder::Internals::Cross(
+  const double o[3], const double d[3], Visit visit) const
 {
-  const Internals& in = *this->Internal;
-  if (in.Nodes.empty())
+  if (this->Nodes.empty())
   {
-    return false;
+    return;
   }
-  const double o[3] = { a[0] - in.Centre[0], a[1] - in.Centre[1], a[2] - in.Centre[2] };
-  const double d[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
   double inv[3];
   for (int r = 0; r < 3; ++r)
   {
@@ -342,7 +349,7 @@ bool vtkStylizeRayOccluder::Blocks(const double a[3], const double b[3]) const
   stack[top++] = 0;
   while (top > 0)
   {
-    const Node& node = in.Nodes[stack[--top]];
+    const Node& node = this->Nodes[stack[--top]];
     if (!crosses(node))
     {
       continue;
@@ -351,9 +358,9 @@ bool vtkStylizeRayOccluder::Blocks(const double a[3], const double b[3]) const
     {
       for (std::uint32_t i = node.First; i < node.First + node.Count; ++i)
       {
-        if (in.Hit(in.Order[i], o, d))
+        if (this->Hit(this->Order[i], o, d) && !visit(this->Order[i]))
         {
-          return true;
+          return;
         }
       }
     }
@@ -363,7 +370,60 @@ bool vtkStylizeRayOccluder::Blocks(const double a[3], const double b[3]) const
       stack[top++] = node.First;
     }
   }
-  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeRayOccluder::Blocks(const double a[3], const double b[3]) const
+{
+  const Internals& in = *this->Internal;
+  const double o[3] = { a[0] - in.Centre[0], a[1] - in.Centre[1], a[2] - in.Centre[2] };
+  const double d[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  bool blocked = false;
+  in.Cross(o, d,
+    [&](std::uint32_t)
+    {
+      blocked = true;
+      return false;
+    });
+  return blocked;
+}
+
+//------------------------------------------------------------------------------
+double vtkStylizeRayOccluder::Transmittance(const double a[3], const double b[3]) const
+{
+  const Internals& in = *this->Internal;
+  const double o[3] = { a[0] - in.Centre[0], a[1] - in.Centre[1], a[2] - in.Centre[2] };
+  const double d[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  double through = 1.0;
+  in.Cross(o, d,
+    [&](std::uint32_t t)
+    {
+      through *= 1.0 - (in.Alpha.empty() ? 1.0 : in.Alpha[t]);
+      return through > 1e-4;
+    });
+  return through > 1e-4 ? through : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizeRayOccluder::SetOpacity(double opacity, vtkDataArray* rgba)
+{
+  Internals& in = *this->Internal;
+  const double k = std::isfinite(opacity) ? std::min(1.0, std::max(0.0, opacity)) : 1.0;
+  const bool perPoint =
+    rgba && rgba->GetNumberOfComponents() == 4 && rgba->GetNumberOfTuples() == in.SurfacePoints;
+  const size_t count = in.Tris.size() / 3;
+  in.Alpha.assign(count, static_cast<float>(k));
+  for (size_t t = 0; perPoint && t < count; ++t)
+  {
+    double sum = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double value = rgba->GetComponent(in.Tris[3 * t + c], 3) / 255.0;
+      sum += std::isfinite(value) ? std::min(1.0, std::max(0.0, value)) : 1.0;
+    }
+    in.Alpha[t] = static_cast<float>(k * sum / 3.0);
+  }
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------

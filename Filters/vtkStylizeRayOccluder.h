@@ -22,6 +22,7 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkDataArray;
 class vtkMatrix4x4;
 class vtkPolyData;
 
@@ -44,6 +45,20 @@ public:
    * Thread-safe (reads only).
    */
   bool Blocks(const double a[3], const double b[3]) const;
+
+  /**
+   * A translucent surface's opacity (after SetSurface()): `opacity` in [0, 1], times, per point,
+   * the fourth component of `rgba` over 255 (RGBA bytes, as direct colours; null: none). Default
+   * 1 (opaque).
+   */
+  void SetOpacity(double opacity, vtkDataArray* rgba);
+
+  /**
+   * The share of light the triangles let through along the segment from a to b (world
+   * coordinates): the product of 1 - the opacity of each triangle it crosses (a triangle's
+   * opacity: the mean of its points'). 1 when it crosses none. Thread-safe (reads only).
+   */
+  double Transmittance(const double a[3], const double b[3]) const;
 
   /** The triangles' bounds in world coordinates (invalid, min > max, when there are none). */
   void GetBounds(double bounds[6]) const;

@@ -22,6 +22,8 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPropCollection.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkStylizeFeatureLines.h"
@@ -170,6 +172,53 @@ vtkPolyData* vtkStylizeFeatureStrokes::GetStrokes()
 namespace
 {
 /** The strokes of one frame: the visible runs projected into the drawn pixels, with widths. */
+/**
+ * A figure's translucent surfaces (visible actors with translucent polygons, a volume's fog
+ * included), each as a ray occluder of its opacity (its actor's, times its direct RGBA colours'
+ * alpha); `reach`: the scene's diameter (how far a parallel projection's rays go).
+ */
+std::vector<vtkSmartPointer<vtkStylizeRayOccluder>> Veils(vtkRenderer* ren, double& reach)
+{
+  std::vector<vtkSmartPointer<vtkStylizeRayOccluder>> veils;
+  double b[6];
+  ren->ComputeVisiblePropBounds(b);
+  reach = vtkMath::AreBoundsInitialized(b) ? 2.0 *
+        std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+          (b[5] - b[4]) * (b[5] - b[4])) +
+      1.0
+                                           : 1.0;
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    auto* actor = vtkActor::SafeDownCast(prop);
+    vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+    auto* data = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+    if (!data || !actor->GetVisibility() || !actor->HasTranslucentPolygonalGeometry() ||
+      actor->GetProperty()->GetRepresentation() != VTK_SURFACE)
+    {
+      continue; // (composite and other data left out)
+    }
+    // the colours' alpha, where the mapper draws RGBA bytes as they are
+    vtkDataArray* rgba = nullptr;
+    if (mapper->GetScalarVisibility() && mapper->GetColorMode() == VTK_COLOR_MODE_DIRECT_SCALARS)
+    {
+      rgba = mapper->GetScalarMode() == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA
+        ? data->GetPointData()->GetArray(mapper->GetArrayName())
+        : data->GetPointData()->GetScalars();
+      rgba = rgba && rgba->GetNumberOfComponents() == 4 && rgba->GetDataType() == VTK_UNSIGNED_CHAR
+        ? rgba
+        : nullptr;
+    }
+    auto veil = vtkSmartPointer<vtkStylizeRayOccluder>::New();
+    veil->SetSurface(data, actor->GetMatrix());
+    veil->SetOpacity(actor->GetProperty()->GetOpacity(), rgba);
+    veils.push_back(veil);
+  }
+  return veils;
+}
+
 class StrokeSink
 {
 public:
@@ -183,10 +232,14 @@ public:
     this->Points->SetDataTypeToFloat();
     this->Widths->SetName("StrokeWidth");
     this->Kinds->SetName("FeatureKind");
+    this->Inks->SetName("StrokeInk");
     if (!camera)
     {
       return;
     }
+    camera->GetPosition(this->Eye);
+    camera->GetDirectionOfProjection(this->Dop);
+    this->Parallel = camera->GetParallelProjection() != 0;
     // The projection of the whole image, and the scene's depth range for the taper.
     this->Projection->DeepCopy(camera->GetCompositeProjectionTransformMatrix(
       view.ViewportSize[0] / std::max(1.0, view.ViewportSize[1]), -1.0, 1.0));
@@ -212,6 +265,16 @@ public:
       this->Nearest = -eye[2] - radius;
       this->Range = 2.0 * radius;
     }
+  }
+
+  /**
+   * Translucent surfaces between the lines and the eye: each stroke point's ink is then the
+   * share of light they let through (StrokeInk), as a frame's translucent layers cover the lines.
+   */
+  void SetVeils(const std::vector<vtkSmartPointer<vtkStylizeRayOccluder>>& veils, double reach)
+  {
+    this->Veils = veils;
+    this->Reach = reach;
   }
 
   /** Appends the runs (vtkStylizeLineVisibility's output) of a surface seen through `matrix`. */
@@ -251,6 +314,10 @@ public:
         const double f = strength ? strength->GetTuple1(ids[i]) : 1.0;
         this->Lines->InsertCellPoint(this->Points->InsertNextPoint(x, y, 0.0));
         this->Widths->InsertNextValue(static_cast<float>(this->Width(kind, -e[2], f)));
+        if (!this->Veils.empty())
+        {
+          this->Inks->InsertNextValue(static_cast<float>(this->Through(p, matrix)));
+        }
       }
     }
   }
@@ -262,11 +329,35 @@ public:
     out->SetPoints(this->Points);
     out->SetLines(this->Lines);
     out->GetPointData()->AddArray(this->Widths);
+    if (!this->Veils.empty())
+    {
+      out->GetPointData()->AddArray(this->Inks);
+    }
     out->GetCellData()->AddArray(this->Kinds);
     return this->Lines->GetNumberOfCells();
   }
 
 private:
+  /** The share of light the veils let through from model point `p` to the eye. */
+  double Through(const double p[4], vtkMatrix4x4* matrix) const
+  {
+    double w[4];
+    matrix->MultiplyPoint(p, w);
+    const double h = w[3] != 0.0 ? w[3] : 1.0;
+    const double a[3] = { w[0] / h, w[1] / h, w[2] / h };
+    double b[3];
+    for (int r = 0; r < 3; ++r)
+    {
+      b[r] = this->Parallel ? a[r] - this->Reach * this->Dop[r] : this->Eye[r];
+    }
+    double through = 1.0;
+    for (const auto& veil : this->Veils)
+    {
+      through *= veil->Transmittance(a, b);
+    }
+    return through;
+  }
+
   /** A stroke's width in pixels at eye depth z and strength f. */
   double Width(int kind, double z, double f) const
   {
@@ -289,6 +380,11 @@ private:
   vtkNew<vtkCellArray> Lines;
   vtkNew<vtkFloatArray> Widths;
   vtkNew<vtkUnsignedCharArray> Kinds;
+  vtkNew<vtkFloatArray> Inks;
+  std::vector<vtkSmartPointer<vtkStylizeRayOccluder>> Veils;
+  double Eye[3] = { 0.0, 0.0, 0.0 }, Dop[3] = { 0.0, 0.0, -1.0 };
+  bool Parallel = false;
+  double Reach = 1.0; // (a parallel projection's rays: this far towards the viewer)
 };
 
 /**
@@ -395,6 +491,11 @@ vtkIdType vtkStylizeFeatureStrokes::Build(
       occluders.push_back(vtkSmartPointer<vtkStylizeRayOccluder>::New());
       occluders.back()->SetSurface(s->SurfaceOf(), other.Matrix);
     }
+  }
+  if (!linearDepth && !settings.Translucent && !items.empty())
+  {
+    double reach = 1.0;
+    sink.SetVeils(Veils(view.Renderer, reach), reach);
   }
   // Each surface's lines report their progress as this object's (ProgressEvent, over all the
   // surfaces): the line art's first frame of a large mesh takes seconds.

@@ -4,7 +4,8 @@
 // relative to the centre in single precision). Every segment must get the brute force's answer
 // but those that pass within 1e-6 of the scene's size of a triangle's edge; one occluder is then
 // queried from vtkSMPTools' threads and must give the same answers. An empty surface and a
-// surface with a NaN point block what their finite triangles block.
+// surface with a NaN point block what their finite triangles block. A translucent sphere
+// (SetOpacity(), per-point RGBA alpha) lets through the product of 1 - opacity per crossing.
 #include "vtkStylizeRayOccluder.h"
 #include "vtkStylizeTestChecks.h"
 
@@ -18,6 +19,7 @@
 #include "vtkSMPTools.h"
 #include "vtkSphereSource.h"
 #include "vtkTransform.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <array>
 #include <atomic>
@@ -189,5 +191,36 @@ int TestRayOccluder(int, char*[])
   STYLIZE_CHECK(partial->GetNumberOfTriangles() < sphere->GetOutput()->GetNumberOfPolys() &&
       partial->Blocks(a, b),
     "a NaN point: %lld triangles", static_cast<long long>(partial->GetNumberOfTriangles()));
+
+  // Transmittance: a unit sphere (two crossings on a segment through it) of opacity 0.5, its
+  // points' RGBA alpha 128 (about a half): 1 - 0.25 per crossing, 0.5625 through both; 1 beside
+  // it; an opaque surface lets nothing through.
+  vtkNew<vtkUnsignedCharArray> rgba;
+  rgba->SetNumberOfComponents(4);
+  rgba->SetNumberOfTuples(sphere->GetOutput()->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < rgba->GetNumberOfTuples(); ++i)
+  {
+    const unsigned char c[4] = { 200, 100, 50, 128 };
+    rgba->SetTypedTuple(i, c);
+  }
+  vtkNew<vtkStylizeRayOccluder> veil;
+  veil->SetSurface(sphere->GetOutput(), nullptr);
+  veil->SetOpacity(0.5, rgba);
+  const double k = 1.0 - 0.5 * 128.0 / 255.0;
+  // (off the sphere's vertices and edges: the x axis meets a vertex)
+  const double from[3] = { -5, 0.1, 0.13 }, to[3] = { 5, 0.1, 0.13 }, centre[3] = { 0, 0.1, 0.13 };
+  const double through = veil->Transmittance(from, to), half = veil->Transmittance(from, centre);
+  const double beside[3] = { -5, 3, 0 }, besideEnd[3] = { 5, 3, 0 };
+  std::printf("transmittance through a sphere of opacity 0.5 x 128/255: %.4f (expected %.4f), "
+              "into its centre %.4f (%.4f), beside it %.4f\n",
+    through, k * k, half, k, veil->Transmittance(beside, besideEnd));
+  STYLIZE_CHECK(std::abs(through - k * k) < 1e-6 && std::abs(half - k) < 1e-6 &&
+      veil->Transmittance(beside, besideEnd) == 1.0,
+    "transmittance %.4f, %.4f", through, half);
+  vtkNew<vtkStylizeRayOccluder> opaque;
+  opaque->SetSurface(sphere->GetOutput(), nullptr);
+  STYLIZE_CHECK(opaque->Transmittance(from, to) == 0.0, "an opaque sphere lets light through");
+  veil->SetOpacity(std::nan(""), nullptr); // (not finite: opaque)
+  STYLIZE_CHECK(veil->Transmittance(from, to) == 0.0, "a NaN opacity lets light through");
   return Failures == 0 ? 0 : 1;
 }
