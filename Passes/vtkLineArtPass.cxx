@@ -5,6 +5,7 @@
 #include "vtkFloatArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
 #include "vtkStylizeFeatureLines.h"
@@ -147,6 +148,17 @@ vtkPolyData* vtkLineArtPass::ComputeFigureStrokes(int width, int height, int til
     this, in.LastRenderer, OutlineSettings(this), width, height, tiles);
   if (outlines->GetNumberOfCells() > 0)
   {
+    // (the opaque lines' ink behind translucent surfaces, StrokeInk: the outlines at full ink,
+    // so that the append keeps the array)
+    if (strokes->GetPointData()->GetArray("StrokeInk") &&
+      !outlines->GetPointData()->GetArray("StrokeInk"))
+    {
+      vtkNew<vtkFloatArray> full;
+      full->SetName("StrokeInk");
+      full->SetNumberOfTuples(outlines->GetNumberOfPoints());
+      full->Fill(1.0);
+      outlines->GetPointData()->AddArray(full);
+    }
     vtkNew<vtkAppendPolyData> append;
     append->AddInputData(strokes);
     append->AddInputData(outlines);
