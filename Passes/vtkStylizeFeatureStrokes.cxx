@@ -171,7 +171,6 @@ vtkPolyData* vtkStylizeFeatureStrokes::GetStrokes()
 //------------------------------------------------------------------------------
 namespace
 {
-/** The strokes of one frame: the visible runs projected into the drawn pixels, with widths. */
 /**
  * A figure's translucent surfaces (visible actors with translucent polygons, a volume's fog
  * included), each as a ray occluder of its opacity (its actor's, times its direct RGBA colours'
@@ -219,6 +218,7 @@ std::vector<vtkSmartPointer<vtkStylizeRayOccluder>> Veils(vtkRenderer* ren, doub
   return veils;
 }
 
+/** The strokes of one frame: the visible runs projected into the drawn pixels, with widths. */
 class StrokeSink
 {
 public:

@@ -444,7 +444,8 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
   std::vector<double> corrected(tables.Alpha.size());
   for (size_t i = 0; i < corrected.size(); ++i)
   {
-    corrected[i] = 1.0 - std::pow(1.0 - std::min(tables.Alpha[i], 1.0), step / v.Unit);
+    corrected[i] =
+      1.0 - std::pow(1.0 - std::min(std::max(tables.Alpha[i], 0.0), 1.0), step / v.Unit);
   }
   // index = t0 + x[0] tx[0] + x[1] tx[1] + x[2] tx[2] (the image's origin, spacing, direction)
   double t0[3], tx[3][3];
