@@ -29,6 +29,7 @@
 #include <array>  // for std::array
 #include <map>    // for std::map
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 #include <vector> // for std::vector
 
 class vtkAbstractVolumeMapper;
@@ -151,6 +152,7 @@ private:
   {
     vtkSmartPointer<vtkImageData> Image;
     vtkMTimeType Time = 0;
+    std::string Name; // the array drawn
   };
   std::map<vtkVolume*, Gathered> GatheredImages;
 

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
 
 namespace
 {
@@ -224,10 +225,13 @@ std::vector<vtkImageData*> vtkStylizeVolumeSurfaces::FogImages(vtkMultiProcessCo
       ? vtkAbstractMapper::GetScalars(data, mapper->GetScalarMode(), mapper->GetArrayAccessMode(),
           mapper->GetArrayId(), mapper->GetArrayName(), cells)
       : nullptr;
-    // (gathered again when any piece changed: every process decides alike)
+    // (gathered again when any piece or the array drawn changed: every process decides alike)
     auto found = this->GatheredImages.find(volume);
     const vtkMTimeType time = data ? data->GetMTime() : 0;
-    int changed = found == this->GatheredImages.end() || found->second.Time != time, any = 0;
+    const std::string name = scalars && scalars->GetName() ? scalars->GetName() : "";
+    int changed = found == this->GatheredImages.end() || found->second.Time != time ||
+      found->second.Name != name;
+    int any = 0;
     c->AllReduce(&changed, &any, 1, vtkCommunicator::MAX_OP);
     Gathered& entry = kept[volume];
     if (any)
@@ -235,6 +239,7 @@ std::vector<vtkImageData*> vtkStylizeVolumeSurfaces::FogImages(vtkMultiProcessCo
       entry.Image = vtkStylizeVolumeFog::GatherImage(
         data, scalars ? scalars->GetName() : nullptr, c, FogImagePoints);
       entry.Time = time;
+      entry.Name = name;
     }
     else
     {
