@@ -237,10 +237,14 @@ public:
    * haze takes the colour and opacity VTK's ray casting accumulates from it along the view ray
    * through the volume to its solid surface or out of it (opacity times VolumeHaze: 1 is VTK's
    * own; with the volume's Shade on, each sample lit as VTK's ray caster lights it: its lighting
-   * coefficients, the gradient as the normal, the headlight), recomputed when the view changes,
-   * so that a thick fog is as dark as VTK draws it and the shell's back and its grazing parts as
-   * faint or as strong: the layers of the shell, composited front to back, add up to the whole
-   * ray (the fog in front of the shell included). The style draws these colours as they are
+   * coefficients, the gradient as the normal, the headlight; for an unstructured grid's mapper
+   * (vtkUnstructuredGridVolumeMapper) unlit, the opacity taken as an attenuation coefficient,
+   * as those mappers draw), recomputed when the view changes (while the camera moves, frames
+   * of a window whose desired update rate is at least 1, as VTK's interactor styles and
+   * ParaView's interactive renders set it, keep the last still frame's fog), so that a thick fog is
+   * as dark as VTK draws it and the shell's back and its grazing parts as faint or as strong: the
+   * layers of the shell, composited front to back, add up to the whole ray (the fog in front of the
+   * shell included). The style draws these colours as they are
    * (vtkStylizeLightingPass::EMITTED_COLORS: their lightness is the tone). The line art draws
    * the outline of where the volume looks solid (the whole ray's opacity one half) instead of
    * the shell's. Data that is not an image, or cell scalars, is sampled on an image of 64 points

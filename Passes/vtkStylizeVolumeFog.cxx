@@ -195,7 +195,13 @@ struct FogRay
   const double* Step;   // per table bin, the opacity of a step (1 - (1 - a)^(step / unit))
   double Rgba[4] = { 0.0, 0.0, 0.0, 0.0 };
 
-  /** The image's value at index-space point `q` (clamped to the image); false outside the data. */
+  /**
+   * The image's value at index-space point `q` (clamped to the image); false outside the data.
+   * A resampled image's points outside the data are left out of the interpolation, and `q` is in
+   * the data where its points in the data weigh at least one half: the data's boundary half way
+   * between its last point and the first outside, not a whole voxel inside (which grazing rays
+   * at a silhouette would miss).
+   */
   bool ValueAt(const double q[3], double& value) const
   {
     int i0[3];
@@ -207,7 +213,7 @@ struct FogRay
       f[a] = this->Dims[a] > 1 ? c - i0[a] : 0.0;
     }
     value = 0.0;
-    bool inside = true;
+    double weight = 0.0;
     for (int c = 0; c < 8; ++c)
     {
       const int o[3] = { c & 1, (c >> 1) & 1, (c >> 2) & 1 };
@@ -218,10 +224,18 @@ struct FogRay
         w *= o[a] ? f[a] : 1.0 - f[a];
         index = index * this->Dims[a] + std::min(i0[a] + o[a], this->Dims[a] - 1);
       }
-      value += w * this->T.Values[static_cast<size_t>(index)];
-      inside = inside && (this->T.Valid.empty() || this->T.Valid[static_cast<size_t>(index)]);
+      if (this->T.Valid.empty() || this->T.Valid[static_cast<size_t>(index)])
+      {
+        value += w * this->T.Values[static_cast<size_t>(index)];
+        weight += w;
+      }
     }
-    return inside;
+    if (!(weight >= 0.5))
+    {
+      return false;
+    }
+    value /= weight;
+    return true;
   }
 
   /** The sample at step t: its opacity and its table bin (outside the data: 0 and -1). */
@@ -440,12 +454,13 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
   {
     return false;
   }
-  // (each bin's opacity over a step, as VTK corrects it for the sample distance)
+  // (each bin's opacity over a step, as VTK's mapper corrects it for the sample distance)
   std::vector<double> corrected(tables.Alpha.size());
   for (size_t i = 0; i < corrected.size(); ++i)
   {
+    const double a = std::min(std::max(tables.Alpha[i], 0.0), 1.0);
     corrected[i] =
-      1.0 - std::pow(1.0 - std::min(std::max(tables.Alpha[i], 0.0), 1.0), step / v.Unit);
+      v.Attenuation ? 1.0 - std::exp(-a * step / v.Unit) : 1.0 - std::pow(1.0 - a, step / v.Unit);
   }
   // index = t0 + x[0] tx[0] + x[1] tx[1] + x[2] tx[2] (the image's origin, spacing, direction)
   double t0[3], tx[3][3];

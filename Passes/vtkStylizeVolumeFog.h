@@ -41,6 +41,10 @@ public:
     vtkScalarsToColors* Colors = nullptr;
     vtkDataArray* Mask = nullptr; // where a resampled image lies in its data (0: not), or null
     double Unit = 1.0;            // the opacity's unit distance
+    // VTK's unstructured-grid mappers' model: the opacity over a unit distance is the material's
+    // attenuation coefficient (a step's opacity 1 - exp(-a step / unit)), not an opacity to
+    // correct for the step (1 - (1 - a)^(step / unit), the image ray casters').
+    bool Attenuation = false;
     Shading Light;
   };
 
@@ -54,7 +58,8 @@ public:
    * for the haze's nearest layer on the ray, from where the ray enters the image; then up to the
    * haze's next crossing, the solid surface (an opacity of `solid`) or the image's end, so that
    * the layers composited front to back add up to the whole ray. Each sample's opacity is
-   * corrected for the step as VTK's (1 - (1 - a)^(step / unit)) and, with shading, its colour lit
+   * corrected for the step as VTK's (1 - (1 - a)^(step / unit), or 1 - exp(-a step / unit) with
+   * Volume::Attenuation) and, with shading, its colour lit
    * as VTK's ray caster lights it (the gradient by central differences as the normal, the
    * headlight); the result's opacity is times `scale`. Written as `out` (RGBA bytes); `whole`
    * (or null): per point, the whole ray's opacity (through the solid material too, as VTK

@@ -25,6 +25,7 @@
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderState.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkResampleToImage.h"
 #include "vtkSMPTools.h"
@@ -34,6 +35,7 @@
 #include "vtkStylizeVolumeFog.h"
 #include "vtkStylizeVolumeSurface.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGridVolumeMapper.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
@@ -305,16 +307,26 @@ void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeP
     volume.Colors = colors;
     volume.Mask = image->GetPointData()->GetArray("vtkValidPointMask");
     volume.Unit = property->GetScalarOpacityUnitDistance(0);
-    volume.Light.On = property->GetShade(0) != 0;
+    // (VTK's unstructured-grid mappers take the opacity as an attenuation and do not shade)
+    const bool unstructured = vtkUnstructuredGridVolumeMapper::SafeDownCast(vm) != nullptr;
+    volume.Attenuation = unstructured;
+    volume.Light.On = property->GetShade(0) != 0 && !unstructured;
     volume.Light.Ambient = property->GetAmbient(0);
     volume.Light.Diffuse = property->GetDiffuse(0);
     volume.Light.Specular = property->GetSpecular(0);
     volume.Light.Power = property->GetSpecularPower(0);
     volume.Light.TwoSided = ren->GetTwoSidedLighting() != 0;
-    const vtkMTimeType time = std::max({ camera->GetMTime(), shell->GetPoints()->GetMTime(),
-      p.Matrix->GetMTime(), opacity->GetMTime(), colors->GetMTime(), data->GetMTime(),
-      property->GetMTime(), ren->GetMTime() });
-    if (!p.Fogged || time > p.FogTime || haze != p.FogScale || solid != p.FogSolid ||
+    // (the renderer's time follows its camera's: in `time`, with the view)
+    const vtkMTimeType dataTime = std::max({ shell->GetPoints()->GetMTime(), p.Matrix->GetMTime(),
+      opacity->GetMTime(), colors->GetMTime(), data->GetMTime(), property->GetMTime() });
+    const vtkMTimeType time = std::max({ dataTime, camera->GetMTime(), ren->GetMTime() });
+    // While the camera moves (the window's desired update rate at least one frame a second, as
+    // VTK's interactor styles and ParaView's interactive renders set it) the last view's fog is
+    // kept: it is made again at the still frame that ends the interaction.
+    vtkRenderWindow* window = ren->GetRenderWindow();
+    const bool moving = p.Fogged && window && window->GetDesiredUpdateRate() >= 1.0 &&
+      dataTime <= p.FogTime && time > p.FogTime;
+    if (!p.Fogged || (time > p.FogTime && !moving) || haze != p.FogScale || solid != p.FogSolid ||
       !shell->GetPointData()->GetArray("StylizeHazeRGBA") ||
       (outline > 0.0 && !shell->GetPointData()->GetArray("StylizeHazeWhole")))
     {

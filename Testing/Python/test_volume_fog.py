@@ -16,6 +16,10 @@ over a sample, hence the tolerance):
   front layer of the haze holds the whole chord, its back layer nothing): A = 0.824;
 - VolumeHaze 0.5 halves both; HAZE_SHELL gives the VolumeHaze opacity (0.4) at the core's
   centre, whatever the fog's length (the shell's front layer: its back lies behind the core).
+While the camera moves (the window's desired update rate 15) the last still frame's fog is kept
+(turned 90 degrees, the core's centre is seen through the kept fog of the ball's side: below half
+the expected opacity), and the next still frame makes it again (as a new window's, within 2
+levels).
 """
 import math
 import sys
@@ -49,8 +53,9 @@ def ball():
     return image
 
 
-def render(haze, mode):
-    """The centre row of the picture's red channel (0-255) and its centre column's."""
+def scene(haze, mode, azimuth=0.0):
+    """The window of the ball in pixel art's PIXELATED layer, seen along -z (turned by `azimuth`
+    degrees about the ball's centre)."""
     win = offscreen_window(N, N)
     ren = vtkRenderer()
     ren.SetBackground(1.0, 1.0, 1.0)
@@ -91,12 +96,22 @@ def render(haze, mode):
     style.SetVolumeHaze(haze)
     style.SetVolumeHazeMode(mode)
     ren.SetPass(style)
+    camera.Azimuth(azimuth)
+    return win
+
+
+def grab(win):
+    """The picture's red channel (0-255)."""
     w2i = vtkWindowToImageFilter()
     w2i.SetInput(win)
     w2i.ReadFrontBufferOff()
     w2i.Update()
     pixels = vtk_to_numpy(w2i.GetOutput().GetPointData().GetScalars()).reshape(N, N, -1)
     return pixels[:, :, 0].astype(float)
+
+
+def render(haze, mode):
+    return grab(scene(haze, mode))
 
 
 FOG_MODE, SHELL = vtkstylize.vtkPixelArtPass.HAZE_FOG, vtkstylize.vtkPixelArtPass.HAZE_SHELL
@@ -129,6 +144,25 @@ for name, picture, pixel, expected, tolerance in cases:
     print("%s: opacity %.3f, expected %.3f" % (name, measured, expected))
     check(abs(measured - expected) <= tolerance,
           "%s: opacity %.3f, expected %.3f +- %.2f" % (name, measured, expected, tolerance))
+
+# While the camera moves (the window's desired update rate 15, as VTK's interactor styles set it)
+# the last still frame's fog is kept, and made again at the next still frame: turned by 90
+# degrees, the core's centre is seen through what was the ball's side, whose kept fog is the
+# grazing ray's (nearly nothing) where the fresh one is 0.512.
+win = scene(1.0, FOG_MODE)
+win.Render()  # (a still frame: the fog made for the view along -z)
+win.GetRenderers().GetFirstRenderer().GetActiveCamera().Azimuth(90.0)
+win.SetDesiredUpdateRate(15.0)
+moving = grab(win)
+win.SetDesiredUpdateRate(0.0001)
+still = grab(win)
+fresh = grab(scene(1.0, FOG_MODE, 90.0))
+print("turned 90 degrees: opacity %.3f while moving, %.3f at the still frame, %.3f when new"
+      % (opacity_at(moving, centre), opacity_at(still, centre), opacity_at(fresh, centre)))
+check(opacity_at(moving, centre) < 0.5 * expected_centre,
+      "while the camera moves the last still frame's fog must be kept")
+check(np.abs(still - fresh).max() <= 2.0, "the still frame must make the fog again")
+
 if failures:
     print("%d failure(s)" % len(failures))
     sys.exit(1)
