@@ -354,7 +354,10 @@ struct FogRay
    * fog from where the ray enters the image unless the haze is crossed there (a nearer layer's
    * part); behind it, the fog up to the next crossing of the haze, the solid surface or the
    * image's end. Returns the whole ray's opacity (through the solid material too, as VTK
-   * accumulates it) for the ray's nearest layer, 0 for the others.
+   * accumulates it) for the ray's nearest layer; for the others, where the ray leaves the haze
+   * (the back of a fold, at its silhouette what the eye sees just past it), the opacity from
+   * the point on, and -1 where it enters it (a layer hidden behind a nearer one: no outline
+   * across the border between the two).
    */
   double March(double first, double last, double level, double solid)
   {
@@ -389,15 +392,17 @@ struct FogRay
       within = k == Settle ? sample >= level : within;
       this->Add(0.5 + k, bin);
     }
-    // The whole ray's opacity (the nearest layer's points): on through the haze's other layers
-    // and the solid material, as VTK accumulates it.
+    // The whole ray's opacity (the nearest layer's points, and from the point on where the ray
+    // leaves the haze): on through the haze's other layers and the solid material, as VTK
+    // accumulates it.
+    const bool leaving = !nearest && !within;
     double whole = this->Rgba[3];
-    for (; nearest && 0.5 + k <= last && whole < 0.995; k += this->Ahead(0.5 + k))
+    for (; (nearest || leaving) && 0.5 + k <= last && whole < 0.995; k += this->Ahead(0.5 + k))
     {
       this->OpacityAt(0.5 + k, bin);
       whole += bin < 0 ? 0.0 : this->Step[bin] * (1.0 - whole);
     }
-    return nearest ? whole : 0.0;
+    return nearest || leaving ? whole : -1.0;
   }
 };
 }
@@ -511,7 +516,7 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
         WriteRGBA(out, id, ray.Rgba, scale);
         if (whole)
         {
-          whole->SetValue(id, static_cast<float>(opacity * scale));
+          whole->SetValue(id, static_cast<float>(opacity >= 0.0 ? opacity * scale : -1.0));
         }
       }
     });

@@ -63,7 +63,10 @@ public:
    * as VTK's ray caster lights it (the gradient by central differences as the normal, the
    * headlight); the result's opacity is times `scale`. Written as `out` (RGBA bytes); `whole`
    * (or null): per point, the whole ray's opacity (through the solid material too, as VTK
-   * accumulates it; times `scale`) for the points of the ray's nearest layer, 0 for the others. The
+   * accumulates it; times `scale`) for the points of the ray's nearest layer; for the others, the
+   * opacity from the point on where the ray leaves the haze (the back of a fold: at its
+   * silhouette, what lies just past it) and -1 where it enters it (a layer hidden behind a
+   * nearer one, left out of the outline's contour). The
    * image's scalars as floats and the transfer functions' tables are kept until the data or the
    * functions change. False when the image cannot be sampled so.
    */

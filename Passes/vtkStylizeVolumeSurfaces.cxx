@@ -34,6 +34,7 @@
 #include "vtkStylizeStylePass.h"
 #include "vtkStylizeVolumeFog.h"
 #include "vtkStylizeVolumeSurface.h"
+#include "vtkThreshold.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGridVolumeMapper.h"
 #include "vtkVolume.h"
@@ -71,7 +72,10 @@ struct vtkStylizeVolumeSurfaces::Proxy
   vtkSmartPointer<vtkImageData> Resampled;
   vtkMTimeType ResampledTime = 0;
   vtkStylizeVolumeFog Fog; // (its tables kept while the data and functions are unchanged)
-  // The fog's outline: where the whole ray's opacity reaches one half (Begin()'s `outline`).
+  // The fog's outline: where the whole ray's opacity reaches one half (Begin()'s `outline`), on
+  // the cells of the rays' nearest layer alone (the other layers' points hold -1: a contour
+  // across the border between the layers would draw a false outline there).
+  vtkNew<vtkThreshold> Nearest;
   vtkNew<vtkContourFilter> Contour;
   vtkNew<vtkPolyData> OutlineLines; // (the contour moved towards the eye: TowardsEye())
   vtkNew<vtkPolyDataMapper> OutlineMapper;
@@ -357,7 +361,7 @@ void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeP
         if (outline > 0.0)
         {
           shell->GetPointData()->AddArray(whole);
-          p.Contour->SetInputData(shell);
+          p.Nearest->SetInputData(shell);
           p.Contour->Update();
           const double* spacing = image->GetSpacing();
           TowardsEye(p.Contour->GetOutput(), eye, dop, camera->GetParallelProjection() != 0,
@@ -490,6 +494,13 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
       part->Actor->PickableOff();
     }
     // (the fog's outline: black lines, unlit, not coloured by the array)
+    slot->Nearest->SetInputArrayToProcess(
+      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "StylizeHazeWhole");
+    slot->Nearest->SetLowerThreshold(-0.5);
+    slot->Nearest->SetUpperThreshold(VTK_FLOAT_MAX);
+    slot->Nearest->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
+    slot->Nearest->AllScalarsOn();
+    slot->Contour->SetInputConnection(slot->Nearest->GetOutputPort());
     slot->Contour->SetInputArrayToProcess(
       0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "StylizeHazeWhole");
     slot->Contour->SetValue(0, 0.5);
