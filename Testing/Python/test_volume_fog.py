@@ -19,7 +19,10 @@ over a sample, hence the tolerance):
 While the camera moves (the window's desired update rate 15) the last still frame's fog is kept
 (turned 90 degrees, the core's centre is seen through the kept fog of the ball's side: below half
 the expected opacity), and the next still frame makes it again (as a new window's, within 2
-levels).
+levels). The ball as an unstructured grid (an unstructured mapper's volume): the fog's opacity
+is VTK's unstructured mappers' 1 - exp(-0.05 L) (0.503 through the core, 0.816 beside it), and a
+white fog with the volume's Shade on is unlit there (white over the white core), lit for the
+image's mapper (darker).
 """
 import math
 import sys
@@ -31,7 +34,9 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
 from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkVolume,
                                          vtkVolumeProperty, vtkWindowToImageFilter)
-from vtkmodules.vtkRenderingVolume import vtkFixedPointVolumeRayCastMapper
+from vtkmodules.vtkFiltersCore import vtkAppendFilter
+from vtkmodules.vtkRenderingVolume import (vtkFixedPointVolumeRayCastMapper,
+                                           vtkProjectedTetrahedraMapper)
 
 from stylize_test_scene import check, failures, offscreen_window
 
@@ -53,9 +58,11 @@ def ball():
     return image
 
 
-def scene(haze, mode, azimuth=0.0):
+def scene(haze, mode, azimuth=0.0, unstructured=False, white=False):
     """The window of the ball in pixel art's PIXELATED layer, seen along -z (turned by `azimuth`
-    degrees about the ball's centre)."""
+    degrees about the ball's centre); `unstructured`: the ball as an unstructured grid of
+    hexahedra (an unstructured mapper's volume); `white`: the fog white too, shaded (the
+    volume's Shade on)."""
     win = offscreen_window(N, N)
     ren = vtkRenderer()
     ren.SetBackground(1.0, 1.0, 1.0)
@@ -64,8 +71,9 @@ def scene(haze, mode, azimuth=0.0):
     for value, o in ((0.0, 0.0), (100.0, FOG), (150.0, FOG), (160.0, 1.0), (200.0, 1.0)):
         opacity.AddPoint(value, o)
     colour = vtkColorTransferFunction()
-    colour.AddRGBPoint(0.0, 0.0, 0.0, 0.0)
-    colour.AddRGBPoint(120.0, 0.0, 0.0, 0.0)
+    fog = 1.0 if white else 0.0
+    colour.AddRGBPoint(0.0, fog, fog, fog)
+    colour.AddRGBPoint(120.0, fog, fog, fog)
     colour.AddRGBPoint(140.0, 1.0, 1.0, 1.0)
     colour.AddRGBPoint(200.0, 1.0, 1.0, 1.0)
     prop = vtkVolumeProperty()
@@ -73,8 +81,16 @@ def scene(haze, mode, azimuth=0.0):
     prop.SetColor(colour)
     prop.SetScalarOpacityUnitDistance(1.0)
     prop.SetInterpolationTypeToLinear()
-    mapper = vtkFixedPointVolumeRayCastMapper()
-    mapper.SetInputData(ball())
+    prop.SetShade(white)
+    if unstructured:
+        grid = vtkAppendFilter()
+        grid.SetInputData(ball())
+        grid.Update()
+        mapper = vtkProjectedTetrahedraMapper()
+        mapper.SetInputData(grid.GetOutput())
+    else:
+        mapper = vtkFixedPointVolumeRayCastMapper()
+        mapper.SetInputData(ball())
     volume = vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop)
@@ -162,6 +178,24 @@ print("turned 90 degrees: opacity %.3f while moving, %.3f at the still frame, %.
 check(opacity_at(moving, centre) < 0.5 * expected_centre,
       "while the camera moves the last still frame's fog must be kept")
 check(np.abs(still - fresh).max() <= 2.0, "the still frame must make the fog again")
+
+# An unstructured mapper's volume (VTK's unstructured mappers take the opacity as an attenuation,
+# 1 - exp(-0.05 L), and do not shade): the ball as hexahedra, sampled on an image for the fog;
+# shaded and white, the fog is lit for the image's mapper (darker than the white core behind it)
+# and not for the unstructured one (white over white).
+grid = grab(scene(1.0, FOG_MODE, unstructured=True))
+for name, pixel, length in (("through the core", centre, RADIUS - CORE),
+                            ("beside the core", beside, 2.0 * math.sqrt(RADIUS ** 2 - 17.0 ** 2))):
+    expected = 1.0 - math.exp(-FOG * length)
+    measured = opacity_at(grid, pixel)
+    print("unstructured, fog %s: opacity %.3f, expected %.3f" % (name, measured, expected))
+    check(abs(measured - expected) <= 0.05, "unstructured fog %s: opacity %.3f, expected %.3f"
+          % (name, measured, expected))
+lit = grab(scene(1.0, FOG_MODE, white=True))[centre]
+unlit = grab(scene(1.0, FOG_MODE, unstructured=True, white=True))[centre]
+print("white shaded fog over the white core: %.0f (image's mapper, lit), %.0f (unstructured, "
+      "unlit)" % (lit, unlit))
+check(lit < 200 and unlit > 240, "the fog lit for the image's mapper only")
 
 if failures:
     print("%d failure(s)" % len(failures))
