@@ -192,7 +192,7 @@ struct FogRay
   const double (*Tx)[3];
   double Ijk[3], Di[3]; // the ray's start and step in index space
   double ToLight[3];    // towards the headlight, in the image's coordinates (unit)
-  const double* Step;   // per table bin, the opacity of a step (1 - (1 - a)^(step / unit))
+  const double* Step;   // per table bin, the opacity of a step (as the volume's mapper takes it)
   double Rgba[4] = { 0.0, 0.0, 0.0, 0.0 };
 
   /**
