@@ -5,6 +5,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellDataToPointData.h"
+#include "vtkCleanPolyData.h"
 #include "vtkClipPolyData.h"
 #include "vtkContourFilter.h"
 #include "vtkDataSetSurfaceFilter.h"
@@ -367,6 +368,61 @@ vtkSmartPointer<vtkPolyData> BoundaryCaps(vtkDataSet* data, const std::vector<do
   normals->Update();
   return normals->GetOutput();
 }
+
+/**
+ * `surface` without its cells that use a non-finite point, nor such points (a contour of
+ * non-image data interpolates its edges' values: an edge with a NaN end gives a NaN point), its
+ * normals made again from the geometry where any of them is not finite; `surface` itself when
+ * all is finite.
+ */
+vtkSmartPointer<vtkPolyData> FiniteOnly(vtkPolyData* surface)
+{
+  const vtkIdType n = surface->GetNumberOfPoints();
+  std::vector<char> bad(static_cast<size_t>(n), 0);
+  bool any = false;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    surface->GetPoint(i, x);
+    bad[i] = !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]));
+    any = any || bad[i];
+  }
+  vtkDataArray* given = surface->GetPointData()->GetNormals();
+  bool badNormals = false;
+  for (vtkIdType i = 0; given && !badNormals && i < given->GetNumberOfTuples(); ++i)
+  {
+    const double* v = given->GetTuple3(i);
+    badNormals = !bad[i] && !(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]));
+  }
+  if (!any && !badNormals)
+  {
+    return surface;
+  }
+  auto kept = vtkSmartPointer<vtkPolyData>::New();
+  kept->DeepCopy(surface);
+  kept->BuildCells();
+  for (vtkIdType c = 0; c < kept->GetNumberOfCells(); ++c)
+  {
+    vtkIdType count;
+    const vtkIdType* ids;
+    kept->GetCellPoints(c, count, ids);
+    if (std::any_of(ids, ids + count, [&](vtkIdType id) { return bad[id] != 0; }))
+    {
+      kept->DeleteCell(c);
+    }
+  }
+  kept->RemoveDeletedCells();
+  vtkNew<vtkCleanPolyData> unused; // (drops the points no cell uses, merges none)
+  unused->SetInputData(kept);
+  unused->PointMergingOff();
+  unused->Update();
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(unused->GetOutputPort());
+  normals->SplittingOff();
+  normals->ConsistencyOff();
+  normals->Update();
+  return normals->GetOutput();
+}
 }
 
 //------------------------------------------------------------------------------
@@ -616,7 +672,7 @@ int vtkStylizeVolumeSurface::RequestData(
     both->Update();
     result->ShallowCopy(both->GetOutput());
   }
-  output->ShallowCopy(result);
+  output->ShallowCopy(FiniteOnly(result));
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -6,7 +6,8 @@
 // opacity that is solid everywhere gives the outer faces and one solid nowhere nothing; the same
 // field as an unstructured grid (vtkContourFilter's path) gives the sphere; cell scalars are
 // moved to the points; a crossing is found to 1e-9 and a threshold of NaN or an empty input give
-// nothing; a piece of the image is closed at its cut unless the whole image's extent is given; an
+// nothing; NaN values in an unstructured grid leave out the cells they touch (no NaN point or
+// normal); a piece of the image is closed at its cut unless the whole image's extent is given; an
 // unstructured grid's opaque shell is closed by the grid's outer faces, but a piece of it not
 // where the other piece's outer points are shared (SetSharedPoints).
 #include "vtkStylizeTestChecks.h"
@@ -378,6 +379,39 @@ int TestVolumeSurface(int, char*[])
     s = Measure(Surface(cells, up, 0.5), 0.5);
     STYLIZE_CHECK(
       s.Points > 1000 && s.MaxRadiusError < 0.5 * h, "cell scalars: error %g", s.MaxRadiusError);
+    // NaN values in a block of the grid: the contour's edges with a NaN end (NaN points) are
+    // left out with their cells; the rest of the sphere stays, every point and normal finite.
+    vtkNew<vtkUnstructuredGrid> holed;
+    holed->DeepCopy(grid->GetOutput());
+    vtkDataArray* values = holed->GetPointData()->GetScalars();
+    vtkIdType nans = 0;
+    for (vtkIdType i = 0; i < holed->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      holed->GetPoint(i, p);
+      if (p[0] > 0.2 && p[1] > 0.2)
+      {
+        values->SetTuple1(i, std::numeric_limits<double>::quiet_NaN());
+        ++nans;
+      }
+    }
+    auto holedSurface = Surface(holed, up, 0.5);
+    vtkIdType bad = 0;
+    vtkDataArray* normals = holedSurface->GetPointData()->GetNormals();
+    for (vtkIdType i = 0; i < holedSurface->GetNumberOfPoints(); ++i)
+    {
+      double p[3], m[3] = { 0.0, 0.0, 1.0 };
+      holedSurface->GetPoint(i, p);
+      if (normals)
+      {
+        normals->GetTuple(i, m);
+      }
+      bad += std::isfinite(p[0] + p[1] + p[2] + m[0] + m[1] + m[2]) ? 0 : 1;
+    }
+    s = Measure(holedSurface, 0.5);
+    STYLIZE_CHECK(nans > 0 && bad == 0 && normals && s.Points > 500 && s.MaxRadiusError < 0.25 * h,
+      "NaN values: %lld non-finite points or normals of %lld, error %g",
+      static_cast<long long>(bad), static_cast<long long>(s.Points), s.MaxRadiusError);
   }
   return Failures == 0 ? 0 : 1;
 }
