@@ -237,6 +237,47 @@ void CheckCapValues(vtkImageData* field, vtkPiecewiseFunction* down)
   STYLIZE_CHECK(capped > 6 * (N - 2) * (N - 2) / 2 && worst < 0.5 * h,
     "box faces' values: %lld points, error %g", static_cast<long long>(capped), worst);
 }
+
+/**
+ * NaN values in a block of `grid` (x > 0.2, y > 0.2): the contour's edges with a NaN end (NaN
+ * points) are left out with their cells; the rest of the sphere stays, every point and normal
+ * finite.
+ */
+void CheckNaNValues(vtkUnstructuredGrid* grid, vtkPiecewiseFunction* up)
+{
+  const double h = 2.0 / (N - 1);
+  vtkNew<vtkUnstructuredGrid> holed;
+  holed->DeepCopy(grid);
+  vtkDataArray* values = holed->GetPointData()->GetScalars();
+  vtkIdType nans = 0;
+  for (vtkIdType i = 0; i < holed->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    holed->GetPoint(i, p);
+    if (p[0] > 0.2 && p[1] > 0.2)
+    {
+      values->SetTuple1(i, std::numeric_limits<double>::quiet_NaN());
+      ++nans;
+    }
+  }
+  auto holedSurface = Surface(holed, up, 0.5);
+  vtkIdType bad = 0;
+  vtkDataArray* normals = holedSurface->GetPointData()->GetNormals();
+  for (vtkIdType i = 0; i < holedSurface->GetNumberOfPoints(); ++i)
+  {
+    double p[3], m[3] = { 0.0, 0.0, 1.0 };
+    holedSurface->GetPoint(i, p);
+    if (normals)
+    {
+      normals->GetTuple(i, m);
+    }
+    bad += std::isfinite(p[0] + p[1] + p[2] + m[0] + m[1] + m[2]) ? 0 : 1;
+  }
+  Shape s = Measure(holedSurface, 0.5);
+  STYLIZE_CHECK(nans > 0 && bad == 0 && normals && s.Points > 500 && s.MaxRadiusError < 0.25 * h,
+    "NaN values: %lld non-finite points or normals of %lld, error %g", static_cast<long long>(bad),
+    static_cast<long long>(s.Points), s.MaxRadiusError);
+}
 }
 
 int TestVolumeSurface(int, char*[])
@@ -379,39 +420,7 @@ int TestVolumeSurface(int, char*[])
     s = Measure(Surface(cells, up, 0.5), 0.5);
     STYLIZE_CHECK(
       s.Points > 1000 && s.MaxRadiusError < 0.5 * h, "cell scalars: error %g", s.MaxRadiusError);
-    // NaN values in a block of the grid: the contour's edges with a NaN end (NaN points) are
-    // left out with their cells; the rest of the sphere stays, every point and normal finite.
-    vtkNew<vtkUnstructuredGrid> holed;
-    holed->DeepCopy(grid->GetOutput());
-    vtkDataArray* values = holed->GetPointData()->GetScalars();
-    vtkIdType nans = 0;
-    for (vtkIdType i = 0; i < holed->GetNumberOfPoints(); ++i)
-    {
-      double p[3];
-      holed->GetPoint(i, p);
-      if (p[0] > 0.2 && p[1] > 0.2)
-      {
-        values->SetTuple1(i, std::numeric_limits<double>::quiet_NaN());
-        ++nans;
-      }
-    }
-    auto holedSurface = Surface(holed, up, 0.5);
-    vtkIdType bad = 0;
-    vtkDataArray* normals = holedSurface->GetPointData()->GetNormals();
-    for (vtkIdType i = 0; i < holedSurface->GetNumberOfPoints(); ++i)
-    {
-      double p[3], m[3] = { 0.0, 0.0, 1.0 };
-      holedSurface->GetPoint(i, p);
-      if (normals)
-      {
-        normals->GetTuple(i, m);
-      }
-      bad += std::isfinite(p[0] + p[1] + p[2] + m[0] + m[1] + m[2]) ? 0 : 1;
-    }
-    s = Measure(holedSurface, 0.5);
-    STYLIZE_CHECK(nans > 0 && bad == 0 && normals && s.Points > 500 && s.MaxRadiusError < 0.25 * h,
-      "NaN values: %lld non-finite points or normals of %lld, error %g",
-      static_cast<long long>(bad), static_cast<long long>(s.Points), s.MaxRadiusError);
+    CheckNaNValues(grid->GetOutput(), up);
   }
   return Failures == 0 ? 0 : 1;
 }
