@@ -371,28 +371,27 @@ vtkSmartPointer<vtkPolyData> BoundaryCaps(vtkDataSet* data, const std::vector<do
 
 /**
  * `surface` without its cells that use a non-finite point, nor such points (a contour of
- * non-image data interpolates its edges' values: an edge with a NaN end gives a NaN point), its
- * normals made again from the geometry where any of them is not finite; `surface` itself when
- * all is finite.
+ * non-image data interpolates its edges' values: an edge with a NaN end gives a NaN point), and
+ * each normal that is not finite replaced by the one the geometry gives there (the others kept:
+ * the data's gradient); `surface` itself when all is finite.
  */
 vtkSmartPointer<vtkPolyData> FiniteOnly(vtkPolyData* surface)
 {
+  auto finite = [](const double* v)
+  { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); };
   const vtkIdType n = surface->GetNumberOfPoints();
   std::vector<char> bad(static_cast<size_t>(n), 0);
   bool any = false;
   for (vtkIdType i = 0; i < n; ++i)
   {
-    double x[3];
-    surface->GetPoint(i, x);
-    bad[i] = !(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]));
+    bad[i] = !finite(surface->GetPoint(i));
     any = any || bad[i];
   }
   vtkDataArray* given = surface->GetPointData()->GetNormals();
   bool badNormals = false;
   for (vtkIdType i = 0; given && !badNormals && i < given->GetNumberOfTuples(); ++i)
   {
-    const double* v = given->GetTuple3(i);
-    badNormals = !bad[i] && !(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]));
+    badNormals = !bad[i] && !finite(given->GetTuple3(i));
   }
   if (!any && !badNormals)
   {
@@ -400,28 +399,44 @@ vtkSmartPointer<vtkPolyData> FiniteOnly(vtkPolyData* surface)
   }
   auto kept = vtkSmartPointer<vtkPolyData>::New();
   kept->DeepCopy(surface);
-  kept->BuildCells();
-  for (vtkIdType c = 0; c < kept->GetNumberOfCells(); ++c)
+  if (any)
   {
-    vtkIdType count;
-    const vtkIdType* ids;
-    kept->GetCellPoints(c, count, ids);
-    if (std::any_of(ids, ids + count, [&](vtkIdType id) { return bad[id] != 0; }))
+    kept->BuildCells();
+    for (vtkIdType c = 0; c < kept->GetNumberOfCells(); ++c)
     {
-      kept->DeleteCell(c);
+      vtkIdType count;
+      const vtkIdType* ids;
+      kept->GetCellPoints(c, count, ids);
+      if (std::any_of(ids, ids + count, [&](vtkIdType id) { return bad[id] != 0; }))
+      {
+        kept->DeleteCell(c);
+      }
+    }
+    kept->RemoveDeletedCells();
+    vtkNew<vtkCleanPolyData> unused; // (drops the points no cell uses, merges none)
+    unused->SetInputData(kept);
+    unused->PointMergingOff();
+    unused->Update();
+    kept->ShallowCopy(unused->GetOutput());
+  }
+  vtkDataArray* normals = kept->GetPointData()->GetNormals();
+  if (normals)
+  {
+    vtkNew<vtkPolyDataNormals> geometric; // (same points: no splitting)
+    geometric->SetInputData(kept);
+    geometric->SplittingOff();
+    geometric->ConsistencyOff();
+    geometric->Update();
+    vtkDataArray* made = geometric->GetOutput()->GetPointData()->GetNormals();
+    for (vtkIdType i = 0; made && i < normals->GetNumberOfTuples(); ++i)
+    {
+      if (!finite(normals->GetTuple3(i)))
+      {
+        normals->SetTuple(i, made->GetTuple3(i));
+      }
     }
   }
-  kept->RemoveDeletedCells();
-  vtkNew<vtkCleanPolyData> unused; // (drops the points no cell uses, merges none)
-  unused->SetInputData(kept);
-  unused->PointMergingOff();
-  unused->Update();
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(unused->GetOutputPort());
-  normals->SplittingOff();
-  normals->ConsistencyOff();
-  normals->Update();
-  return normals->GetOutput();
+  return kept;
 }
 }
 

@@ -29,11 +29,10 @@ tone (luminance blurred over 4 px) with VTK's (goal >= 0.8); line art: the recal
 by ink, of the outline of where the volume looks solid (its own opacity, from its picture alone
 over white and over black, at least 0.5) (goal >= 0.9); with --bench, the median frame time of each style against VTK's frame with the volume
 (with a haze, also while the camera moves: the window's desired update rate 15, the fog kept).
-The styles draw at their defaults (VolumeHaze 1, HAZE_FOG: the volume's translucent part as VTK's
-fog); the comic with VolumeHaze 0.4 (HAZE_SHELL) must change the comic's picture of the solid
-part alone (VolumeHaze 0) (the haze drawn: at least 0.5% of the pixels); --haze OPACITY measures
-every style with that haze instead (0: the solid part alone; --haze-mode: the styles'
-VolumeHazeMode, default fog).
+The styles draw at their defaults (VolumeHaze 0: the solid part alone); the comic with VolumeHaze
+0.4 (HAZE_SHELL) must change the comic's picture (the haze drawn: at least 0.5% of the pixels);
+--haze OPACITY measures every style with that haze instead (1 with --haze-mode fog, the default:
+the volume's translucent part as VTK's fog).
 With --primitives field,disk, the scenes' streamlines (dark line primitives), their boxes' outlines (light
 ones), points of the field (4 px, coloured by it; not in the scene's pictures) and arrow glyphs
 (about 10 px) are drawn alone: per style, the share of VTK's pixels of them with a styled pixel within 1 px
@@ -256,7 +255,7 @@ def unstructured_volume(grid, name, low_color, high_color, opacities):
     function's points only where the colour function has points too, so a ramp with a knee is
     drawn as the straight ramp between the colour points: on a slab 2 units thick, ramp (0, 0),
     (0.5, 0.05), (1, 0.8) per unit, 0.558 opaque where the integral along the ray and the
-    projected tetrahedra give 0.362. See docs/volumes.md.)"""
+    projected tetrahedra give 0.362. See docs/gbuffer.md, "Volumes".)"""
     tets = vtk.vtkDataSetTriangleFilter()
     tets.SetInputData(grid)
     tets.Update()
@@ -472,8 +471,8 @@ def main():
     parser.add_argument("--figures", action="store_true",
                         help="also write each style's vector figure (OUTDIR/volume-SCENE-STYLE.svg)")
     parser.add_argument("--haze", type=float, default=None,
-                        help="the styles' VolumeHaze (default: the styles' own, 1: VTK's fog; "
-                             "0: the solid surface alone)")
+                        help="the styles' VolumeHaze (default: the styles' own, 0: the solid "
+                             "surface alone; 1: VTK's fog)")
     parser.add_argument("--haze-mode", default="fog", choices=sorted(HAZE_MODES),
                         help="the styles' VolumeHazeMode (default fog, the styles' own)")
     parser.add_argument("--primitives", default="",
@@ -535,12 +534,11 @@ def main():
             if style == "comic" and args.haze is None:
                 # the haze (VolumeHaze 0.4): a translucent layer where the opacity reaches a
                 # tenth of the threshold, so the picture changes around and over the solid part
-                # (against the solid part alone, VolumeHaze 0)
+                # (the defaults draw the solid part alone)
                 hazy, _, _ = render(builder, args.data, style, size, True, haze=0.4,
                                     haze_mode="shell")
-                solid_only, _, _ = render(builder, args.data, style, size, True, haze=0.0)
-                changed = float(np.mean(np.abs(hazy.astype(int) - solid_only.astype(int))
-                                        .sum(axis=2) > 24))
+                changed = float(np.mean(np.abs(hazy.astype(int) - styled.astype(int)).sum(axis=2)
+                                        > 24))
                 print("%s: VolumeHaze 0.4 (shell) changes %.3f of the comic's picture"
                       % (name, changed))
                 if changed < 0.005:
