@@ -622,7 +622,7 @@ int vtkStylizeVolumeSurface::RequestData(
 
   // The isovalues: given, or where the opacity crosses the threshold.
   double range[2];
-  values->GetRange(range, 0);
+  values->GetFiniteRange(range, 0); // (an infinite value makes no range)
   std::vector<double> isovalues = this->IsoValues;
   std::vector<bool> rising(isovalues.size(), true);
   const bool crossings = isovalues.empty();

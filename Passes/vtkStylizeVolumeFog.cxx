@@ -145,7 +145,7 @@ void MarkEmptyBlocks(FogTables& t, const int dims[3])
 bool MakeFogTables(const vtkStylizeVolumeFog::Volume& v, FogTables& t)
 {
   double range[2];
-  v.Scalars->GetRange(range, 0);
+  v.Scalars->GetFiniteRange(range, 0); // (non-finite values are read as the lowest)
   if (!(range[1] >= range[0]) || !std::isfinite(range[0]) || !std::isfinite(range[1]))
   {
     return false;

@@ -7,9 +7,10 @@
 // field as an unstructured grid (vtkContourFilter's path) gives the sphere; cell scalars are
 // moved to the points; a crossing is found to 1e-9 and a threshold of NaN or an empty input give
 // nothing; NaN values in an unstructured grid leave out the cells they touch (no NaN point or
-// normal); a piece of the image is closed at its cut unless the whole image's extent is given; an
-// unstructured grid's opaque shell is closed by the grid's outer faces, but a piece of it not
-// where the other piece's outer points are shared (SetSharedPoints).
+// normal), infinite ones leave the surface of the finite range; a piece of the image is closed at
+// its cut unless the whole image's extent is given; an unstructured grid's opaque shell is closed
+// by the grid's outer faces, but a piece of it not where the other piece's outer points are shared
+// (SetSharedPoints).
 #include "vtkStylizeTestChecks.h"
 #include "vtkStylizeVolumeSurface.h"
 
@@ -276,6 +277,23 @@ void CheckNaNValues(vtkUnstructuredGrid* grid, vtkPiecewiseFunction* up)
   Shape s = Measure(holedSurface, 0.5);
   STYLIZE_CHECK(nans > 0 && bad == 0 && normals && s.Points > 500 && s.MaxRadiusError < 0.25 * h,
     "NaN values: %lld non-finite points or normals of %lld, error %g", static_cast<long long>(bad),
+    static_cast<long long>(s.Points), s.MaxRadiusError);
+  // An infinite value at each end of the range (the range of the finite values is used).
+  vtkNew<vtkUnstructuredGrid> infinite;
+  infinite->DeepCopy(grid);
+  infinite->GetPointData()->GetScalars()->SetTuple1(0, std::numeric_limits<double>::infinity());
+  infinite->GetPointData()->GetScalars()->SetTuple1(1, -std::numeric_limits<double>::infinity());
+  auto infiniteSurface = Surface(infinite, up, 0.5);
+  bad = 0;
+  for (vtkIdType i = 0; i < infiniteSurface->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    infiniteSurface->GetPoint(i, p);
+    bad += std::isfinite(p[0] + p[1] + p[2]) ? 0 : 1;
+  }
+  s = Measure(infiniteSurface, 0.5);
+  STYLIZE_CHECK(bad == 0 && s.Points > 1000 && s.MaxRadiusError < 0.25 * h,
+    "infinite values: %lld non-finite points of %lld, error %g", static_cast<long long>(bad),
     static_cast<long long>(s.Points), s.MaxRadiusError);
 }
 }
