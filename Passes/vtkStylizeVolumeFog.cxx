@@ -357,9 +357,10 @@ struct FogRay
    * accumulates it) for the ray's nearest layer; for the others, where the ray leaves the haze
    * (the back of a fold, at its silhouette what the eye sees just past it), the opacity from
    * the point on, and -1 where it enters it (a layer hidden behind a nearer one: no outline
-   * across the border between the two).
+   * across the border between the two). Without `wholeRay` (no outline asked for) the ray is
+   * not followed past the point's part, and the result is only the part's opacity.
    */
-  double March(double first, double last, double level, double solid)
+  double March(double first, double last, double level, double solid, bool wholeRay)
   {
     int bin = 0;
     bool nearest = last >= first;
@@ -397,7 +398,8 @@ struct FogRay
     // accumulates it.
     const bool leaving = !nearest && !within;
     double whole = this->Rgba[3];
-    for (; (nearest || leaving) && 0.5 + k <= last && whole < 0.995; k += this->Ahead(0.5 + k))
+    for (; wholeRay && (nearest || leaving) && 0.5 + k <= last && whole < 0.995;
+         k += this->Ahead(0.5 + k))
     {
       this->OpacityAt(0.5 + k, bin);
       whole += bin < 0 ? 0.0 : this->Step[bin] * (1.0 - whole);
@@ -511,7 +513,7 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
           }
           double first, last;
           RayExtent(ray.Ijk, ray.Di, e, dims, first, last);
-          opacity = ray.March(first, last, level, solid);
+          opacity = ray.March(first, last, level, solid, whole != nullptr);
         }
         WriteRGBA(out, id, ray.Rgba, scale);
         if (whole)
