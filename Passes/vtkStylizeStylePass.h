@@ -244,7 +244,10 @@ public:
    * ParaView's interactive renders set it, keep the last still frame's fog), so that a thick fog is
    * as dark as VTK draws it and the shell's back and its grazing parts as faint or as strong: the
    * layers of the shell, composited front to back, add up to the whole ray (the fog in front of the
-   * shell included). The style draws these colours as they are
+   * shell included). The solid surface is drawn only where the volume looks solid from the eye
+   * (the view ray's opacity, through the fog in front and the solid material, at least one
+   * half); thinner solid material (a soft ball's rim, a wall that thins out) is part of the
+   * fog, as VTK shows it. The style draws these colours as they are
    * (vtkStylizeLightingPass::EMITTED_COLORS: their lightness is the tone). The line art draws
    * the outline of where the volume looks solid (the whole ray's opacity one half) instead of
    * the shell's. Data that is not an image, or cell scalars, is sampled on an image of 64 points

@@ -1,9 +1,11 @@
 #include "vtkStylizeVolumeFog.h"
 
+#include "vtkAbstractCellLocator.h"
 #include "vtkCommunicator.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkFloatArray.h"
+#include "vtkGenericCell.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkMultiProcessController.h"
@@ -19,12 +21,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <vector>
 
 namespace
 {
 /** The fog's steps (half samples) from a haze point before the side of the haze is read. */
 constexpr int Settle = 3;
+
+/** The steps either side of a solid sample within which the solid surface drawn is sought. */
+constexpr double Near = 4.0;
 
 /** Accumulated premultiplied `rgba` as the point's colour and opacity (times `scale`), bytes. */
 void WriteRGBA(vtkUnsignedCharArray* out, vtkIdType id, const double rgba[4], double scale)
@@ -194,6 +200,11 @@ struct FogRay
   double ToLight[3];    // towards the headlight, in the image's coordinates (unit)
   const double* Step;   // per table bin, the opacity of a step (as the volume's mapper takes it)
   double Rgba[4] = { 0.0, 0.0, 0.0, 0.0 };
+  // The solid surface as drawn (vtkStylizeVolumeFog::Accumulate()'s `drawn`), or null; the ray's
+  // start and step in the image's coordinates.
+  vtkAbstractCellLocator* Drawn = nullptr;
+  std::mutex* DrawnLock = nullptr;
+  double X0[3] = { 0.0, 0.0, 0.0 }, Dx[3] = { 0.0, 0.0, 0.0 };
 
   /**
    * The image's value at index-space point `q` (clamped to the image); false outside the data.
@@ -328,6 +339,73 @@ struct FogRay
     }
   }
 
+  /**
+   * The opacity of the solid material the ray crosses from step t (up to step `last`): from its
+   * first sample at least `solid` within 2 Settle steps (t may lie on the material's boundary,
+   * which a resampled image places up to a sample away), the samples on while at least `solid`,
+   * composited as VTK does, up to vtkStylizeVolumeFog::Thick.
+   */
+  double Chord(double t, double last, double solid) const
+  {
+    int bin = 0, k = 0;
+    while (k < 2 * Settle && t + k <= last && this->OpacityAt(t + k, bin) < solid)
+    {
+      ++k;
+    }
+    double a = 0.0;
+    for (; t + k <= last && a < vtkStylizeVolumeFog::Thick; ++k)
+    {
+      if (!(this->OpacityAt(t + k, bin) >= solid) || bin < 0)
+      {
+        break;
+      }
+      a += this->Step[bin] * (1.0 - a);
+    }
+    return a;
+  }
+
+  /**
+   * The opacity accumulated from where the ray enters the image (step `first`) up to the point
+   * (step 0), up to vtkStylizeVolumeFog::Thick.
+   */
+  double Front(double first) const
+  {
+    double a = 0.0;
+    int bin = 0;
+    for (double t = first + 0.5; t < -1.0 && a < vtkStylizeVolumeFog::Thick; t += this->Ahead(t))
+    {
+      this->OpacityAt(t, bin);
+      a += bin < 0 ? 0.0 : this->Step[bin] * (1.0 - a);
+    }
+    return a;
+  }
+
+  /**
+   * Where the ray meets the solid surface drawn within Near steps of step t (the surface and the
+   * samples may disagree by a sample where the image was resampled), or 1e30.
+   */
+  double DrawnNear(double t) const
+  {
+    const double from = t - Near, to = t + Near;
+    double a[3], b[3], x[3], pcoords[3], u = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      a[c] = this->X0[c] + from * this->Dx[c];
+      b[c] = this->X0[c] + to * this->Dx[c];
+    }
+    int subId = 0;
+    vtkIdType cellId = -1;
+    if (this->Drawn->GetDataSet()->GetNumberOfCells() == 0)
+    {
+      return 1e30; // (nothing solid drawn)
+    }
+    vtkNew<vtkGenericCell> cell;
+    std::lock_guard<std::mutex> guard(*this->DrawnLock); // (VTK 9.1's locators are not reentrant)
+    return this->Drawn->IntersectWithLine(a, b, 0.0, u, x, pcoords, subId, cellId, cell)
+      ? from + u * (to - from)
+      : 1e30;
+  }
+
   /** Composites the sample at step t (its table bin) behind what is accumulated. */
   void Add(double t, int bin)
   {
@@ -378,13 +456,29 @@ struct FogRay
     // (which side of the haze the ray is on: a sample away from the point, where the point's own
     // crossing is behind)
     bool within = false;
+    bool through = false; // in solid material not drawn (too thin to look solid): fog
+    double stop = 1e30;   // where the ray meets the solid surface drawn
     int k = 0;
     for (; 0.5 + k <= last && this->Rgba[3]<0.995; k += k> Settle ? this->Ahead(0.5 + k) : 1)
     {
       const double sample = this->OpacityAt(0.5 + k, bin);
-      if (sample >= solid)
+      if (sample < solid)
       {
-        break; // the solid surface
+        through = false;
+      }
+      else if (!through)
+      {
+        if (!this->Drawn || this->Chord(0.5 + k, last, solid) >= vtkStylizeVolumeFog::Thick)
+        {
+          break; // the solid surface
+        }
+        // (thin or nearly so: the solid surface as drawn says whether it is there)
+        stop = this->DrawnNear(0.5 + k);
+        through = true;
+      }
+      if (0.5 + k >= stop)
+      {
+        break; // the solid surface drawn
       }
       if (k > Settle && (sample >= level) != within)
       {
@@ -424,16 +518,13 @@ vtkStylizeVolumeFog::vtkStylizeVolumeFog() = default;
 vtkStylizeVolumeFog::~vtkStylizeVolumeFog() = default;
 
 //------------------------------------------------------------------------------
-bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double level, double solid,
-  double scale, const double eye[3], const double dop[3], bool parallel, vtkUnsignedCharArray* out,
-  vtkFloatArray* whole)
+bool vtkStylizeVolumeFog::Prepare(const Volume& v, Rays& r)
 {
   vtkImageData* image = v.Image;
   const int* e = image ? image->GetExtent() : nullptr;
-  const vtkIdType n = haze->GetNumberOfPoints();
   if (!image || !v.Opacity || !v.Colors || !v.Scalars ||
-    v.Scalars->GetNumberOfTuples() != image->GetNumberOfPoints() || n == 0 || e[1] < e[0] ||
-    e[3] < e[2] || e[5] < e[4] || !(v.Unit > 0.0))
+    v.Scalars->GetNumberOfTuples() != image->GetNumberOfPoints() || e[1] < e[0] || e[3] < e[2] ||
+    e[5] < e[4] || !(v.Unit > 0.0))
   {
     return false;
   }
@@ -453,46 +544,52 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
     this->Kept->Time = time;
   }
   const FogTables& tables = this->Kept->Fog;
-  const int dims[3] = { e[1] - e[0] + 1, e[3] - e[2] + 1, e[5] - e[4] + 1 };
+  std::copy(e, e + 6, r.Extent);
+  for (int a = 0; a < 3; ++a)
+  {
+    r.Dims[a] = e[2 * a + 1] - e[2 * a] + 1;
+  }
   const double* spacing = image->GetSpacing();
-  const double step =
-    0.5 * std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) });
-  if (!(step > 0.0))
+  r.Step = 0.5 * std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) });
+  if (!(r.Step > 0.0))
   {
     return false;
   }
   // (each bin's opacity over a step, as VTK's mapper corrects it for the sample distance)
-  std::vector<double> corrected(tables.Alpha.size());
-  for (size_t i = 0; i < corrected.size(); ++i)
+  r.Corrected.resize(tables.Alpha.size());
+  for (size_t i = 0; i < r.Corrected.size(); ++i)
   {
     const double a = std::min(std::max(tables.Alpha[i], 0.0), 1.0);
-    corrected[i] =
-      v.Attenuation ? 1.0 - std::exp(-a * step / v.Unit) : 1.0 - std::pow(1.0 - a, step / v.Unit);
+    r.Corrected[i] = v.Attenuation ? 1.0 - std::exp(-a * r.Step / v.Unit)
+                                   : 1.0 - std::pow(1.0 - a, r.Step / v.Unit);
   }
   // index = t0 + x[0] tx[0] + x[1] tx[1] + x[2] tx[2] (the image's origin, spacing, direction)
-  double t0[3], tx[3][3];
-  IndexTransform(image, t0, tx);
+  IndexTransform(image, r.T0, r.Tx);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+template <typename Work>
+void vtkStylizeVolumeFog::ForRays(vtkPolyData* surface, const Volume& v, const Rays& r,
+  const double eye[3], const double dop[3], bool parallel, Work work)
+{
   auto toIndex = [&](const double p[3], double ijk[3], bool vector)
   {
     for (int b = 0; b < 3; ++b)
     {
-      ijk[b] = (vector ? 0.0 : t0[b]) + p[0] * tx[0][b] + p[1] * tx[1][b] + p[2] * tx[2][b];
+      ijk[b] = (vector ? 0.0 : r.T0[b]) + p[0] * r.Tx[0][b] + p[1] * r.Tx[1][b] + p[2] * r.Tx[2][b];
     }
   };
-  out->SetNumberOfComponents(4);
-  out->SetNumberOfTuples(n);
-  if (whole)
-  {
-    whole->SetNumberOfComponents(1);
-    whole->SetNumberOfTuples(n);
-  }
-  vtkPoints* points = haze->GetPoints();
-  vtkSMPTools::For(0, n,
+  const FogTables& tables = this->Kept->Fog;
+  vtkPoints* points = surface->GetPoints();
+  vtkSMPTools::For(0, surface->GetNumberOfPoints(),
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType id = begin; id < end; ++id)
       {
-        FogRay ray{ tables, v.Light, e, dims, tx, {}, {}, {}, corrected.data() };
+        FogRay ray{ tables, v.Light, r.Extent, r.Dims, r.Tx, {}, {}, {}, r.Corrected.data() };
+        ray.Drawn = r.Drawn;
+        ray.DrawnLock = r.Lock;
         double x[3], d[3];
         points->GetPoint(id, x);
         for (int a = 0; a < 3; ++a)
@@ -500,27 +597,78 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
           d[a] = parallel ? dop[a] : x[a] - eye[a];
         }
         const double length = vtkMath::Norm(d);
-        double opacity = 0.0;
+        double first = 0.0, last = -1e30; // (no ray: nothing accumulated)
         if (length > 0.0)
         {
           toIndex(x, ray.Ijk, false);
-          const double move[3] = { d[0] / length * step, d[1] / length * step,
-            d[2] / length * step };
+          const double move[3] = { d[0] / length * r.Step, d[1] / length * r.Step,
+            d[2] / length * r.Step };
           toIndex(move, ray.Di, true);
+          std::copy(x, x + 3, ray.X0);
+          std::copy(move, move + 3, ray.Dx);
           for (int a = 0; a < 3; ++a)
           {
             ray.ToLight[a] = -d[a] / length;
           }
-          double first, last;
-          RayExtent(ray.Ijk, ray.Di, e, dims, first, last);
-          opacity = ray.March(first, last, level, solid, whole != nullptr);
+          RayExtent(ray.Ijk, ray.Di, r.Extent, r.Dims, first, last);
         }
-        WriteRGBA(out, id, ray.Rgba, scale);
-        if (whole)
-        {
-          whole->SetValue(id, static_cast<float>(opacity >= 0.0 ? opacity * scale : -1.0));
-        }
+        work(id, ray, first, last);
       }
+    });
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double level, double solid,
+  double scale, const double eye[3], const double dop[3], bool parallel, vtkUnsignedCharArray* out,
+  vtkFloatArray* whole, vtkAbstractCellLocator* drawn)
+{
+  const vtkIdType n = haze->GetNumberOfPoints();
+  Rays r;
+  if (n == 0 || !this->Prepare(v, r))
+  {
+    return false;
+  }
+  std::mutex lock;
+  r.Drawn = drawn;
+  r.Lock = &lock;
+  out->SetNumberOfComponents(4);
+  out->SetNumberOfTuples(n);
+  if (whole)
+  {
+    whole->SetNumberOfComponents(1);
+    whole->SetNumberOfTuples(n);
+  }
+  this->ForRays(haze, v, r, eye, dop, parallel,
+    [&](vtkIdType id, FogRay& ray, double first, double last)
+    {
+      const double opacity = ray.March(first, last, level, solid, whole != nullptr);
+      WriteRGBA(out, id, ray.Rgba, scale);
+      if (whole)
+      {
+        whole->SetValue(id, static_cast<float>(opacity >= 0.0 ? opacity * scale : -1.0));
+      }
+    });
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeVolumeFog::SolidOpacity(vtkPolyData* surface, const Volume& v, double solid,
+  const double eye[3], const double dop[3], bool parallel, vtkFloatArray* out)
+{
+  const vtkIdType n = surface->GetNumberOfPoints();
+  Rays r;
+  if (n == 0 || !this->Prepare(v, r))
+  {
+    return false;
+  }
+  out->SetNumberOfComponents(1);
+  out->SetNumberOfTuples(n);
+  this->ForRays(surface, v, r, eye, dop, parallel,
+    [&](vtkIdType id, FogRay& ray, double first, double last)
+    {
+      const double front = ray.Front(first);
+      const double chord = ray.Chord(0.5, last, solid);
+      out->SetValue(id, static_cast<float>(front + (1.0 - front) * chord));
     });
   return true;
 }

@@ -10,7 +10,10 @@
 #include "vtkType.h"         // for vtkMTimeType
 
 #include <memory> // for std::unique_ptr
+#include <mutex>  // for std::mutex
+#include <vector> // for std::vector
 
+class vtkAbstractCellLocator;
 class vtkDataArray;
 class vtkDataSet;
 class vtkMultiProcessController;
@@ -48,6 +51,21 @@ public:
     Shading Light;
   };
 
+  /**
+   * The opacity the view ray must reach through solid material (with the fog in front of it)
+   * for the material to look solid: thinner material (where the opacity reaches the solid level
+   * only along a short chord) is drawn as fog, as VTK's ray casting shows it, and its surface
+   * left out (SolidOpacity()).
+   */
+  static constexpr double LooksSolid = 0.5;
+
+  /**
+   * Solid material whose chord reaches this opacity stops the fog without asking the solid
+   * surface as drawn (Accumulate()'s `drawn`): the surface is cut at LooksSolid, and the two
+   * can disagree only near that value.
+   */
+  static constexpr double Thick = 0.75;
+
   vtkStylizeVolumeFog();
   ~vtkStylizeVolumeFog();
 
@@ -57,7 +75,11 @@ public:
    * (`eye`, or the direction `dop` for a parallel projection, both in the image's coordinates):
    * for the haze's nearest layer on the ray, from where the ray enters the image; then up to the
    * haze's next crossing, the solid surface (an opacity of `solid`) or the image's end, so that
-   * the layers composited front to back add up to the whole ray. Each sample's opacity is
+   * the layers composited front to back add up to the whole ray. With `drawn` (a locator on the
+   * solid surface as the style draws it: where its material looks solid, SolidOpacity() at
+   * least LooksSolid), the fog stops at solid material only where its chord reaches Thick or
+   * where that surface lies within a few steps, and goes on through the rest (thin material,
+   * drawn as fog); without, at the first solid sample. Each sample's opacity is
    * corrected for the step as VTK's (1 - (1 - a)^(step / unit), or 1 - exp(-a step / unit) with
    * Volume::Attenuation) and, with shading, its colour lit
    * as VTK's ray caster lights it (the gradient by central differences as the normal, the
@@ -72,7 +94,19 @@ public:
    */
   bool Accumulate(vtkPolyData* haze, const Volume& volume, double level, double solid, double scale,
     const double eye[3], const double dop[3], bool parallel, vtkUnsignedCharArray* out,
-    vtkFloatArray* whole = nullptr);
+    vtkFloatArray* whole = nullptr, vtkAbstractCellLocator* drawn = nullptr);
+
+  /**
+   * Per point of `surface` (where the opacity reaches `solid`, in the image's coordinates), the
+   * opacity the view ray (from `eye`, or along `dop` for a parallel projection) accumulates from
+   * where it enters the image through the solid material the point starts: the fog in front of
+   * the point, then, from the first sample at least `solid` within a few steps, the samples on
+   * while at least `solid`, composited as VTK does, up to Thick. The surface is drawn where this
+   * reaches LooksSolid (VTK's picture there is at least half opaque); below, the fog goes through
+   * the material. Written as `out`. False when the image cannot be sampled so.
+   */
+  bool SolidOpacity(vtkPolyData* surface, const Volume& volume, double solid, const double eye[3],
+    const double dop[3], bool parallel, vtkFloatArray* out);
 
   /**
    * Over several processes that each hold a piece of the same volume (collective: every process
@@ -87,6 +121,23 @@ public:
 private:
   struct Tables;
   std::unique_ptr<Tables> Kept;
+
+  /** What the rays of one call share: the image's extent, the step and its opacities. */
+  struct Rays
+  {
+    int Extent[6], Dims[3];
+    double Step = 0.0;                       // in the image's coordinates: half its finest spacing
+    std::vector<double> Corrected;           // per table bin, a step's opacity
+    double T0[3], Tx[3][3];                  // the map to the continuous index
+    vtkAbstractCellLocator* Drawn = nullptr; // (Accumulate()'s `drawn`)
+    std::mutex* Lock = nullptr;
+  };
+  /** Brings the tables up to date and fills `r` for `volume`; false when it cannot be sampled. */
+  bool Prepare(const Volume& volume, Rays& r);
+  /** `work(id, ray, first, last)` for each point's view ray (its steps in the image). */
+  template <typename Work>
+  void ForRays(vtkPolyData* surface, const Volume& v, const Rays& r, const double eye[3],
+    const double dop[3], bool parallel, Work work);
 
   vtkStylizeVolumeFog(const vtkStylizeVolumeFog&) = delete;
   void operator=(const vtkStylizeVolumeFog&) = delete;

@@ -33,6 +33,7 @@
 #include "vtkStylizeLightingPass.h"
 #include "vtkStylizeStylePass.h"
 #include "vtkStylizeVolumeFog.h"
+#include "vtkStylizeVolumeSolidCut.h"
 #include "vtkStylizeVolumeSurface.h"
 #include "vtkThreshold.h"
 #include "vtkUnsignedCharArray.h"
@@ -46,6 +47,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 struct vtkStylizeVolumeSurfaces::Proxy
 {
@@ -68,6 +70,16 @@ struct vtkStylizeVolumeSurfaces::Proxy
   double FogScale = -1.0;
   double FogSolid = -1.0;
   bool Fogged = false; // the haze drawn with them
+  // With the fog: the solid surface where it looks solid from the eye (drawn while Clipped),
+  // and the haze as the fog samples it (vtkStylizeVolumeSolidCut::FogSurface()).
+  vtkStylizeVolumeSolidCut Cut;
+  bool Clipped = false;
+  // On several processes, each drawing its piece: the whole volume's solid surface (from the
+  // gathered image) cut by the same rule, where the fog asks (the same on every process).
+  vtkNew<vtkStylizeVolumeSurface> WholeSolid;
+  vtkStylizeVolumeSolidCut WholeCut;
+  vtkSmartPointer<vtkPolyData> FineShell;
+  vtkMTimeType FineShellTime = 0;
   // Data that is not an image, resampled on an image for the fog (when the data changes).
   vtkSmartPointer<vtkImageData> Resampled;
   vtkMTimeType ResampledTime = 0;
@@ -239,6 +251,32 @@ void Feed(vtkStylizeVolumeSurface* surface, std::string& selected, vtkAbstractVo
   surface->SetOpacityThreshold(threshold);
 }
 
+/**
+ * What the fog samples: `image`'s `scalars` through `property`'s opacity and `colors`, lit as
+ * the volume's mapper `vm` lights it (VTK's unstructured-grid mappers take the opacity as an
+ * attenuation and do not shade).
+ */
+vtkStylizeVolumeFog::Volume FogVolume(vtkImageData* image, vtkDataArray* scalars,
+  vtkScalarsToColors* colors, vtkVolumeProperty* property, vtkAbstractVolumeMapper* vm,
+  bool twoSided)
+{
+  vtkStylizeVolumeFog::Volume volume;
+  volume.Image = image;
+  volume.Scalars = scalars;
+  volume.Opacity = property->GetScalarOpacity(0);
+  volume.Colors = colors;
+  volume.Mask = image->GetPointData()->GetArray("vtkValidPointMask");
+  volume.Unit = property->GetScalarOpacityUnitDistance(0);
+  const bool unstructured = vtkUnstructuredGridVolumeMapper::SafeDownCast(vm) != nullptr;
+  volume.Attenuation = unstructured;
+  volume.Light.On = property->GetShade(0) != 0 && !unstructured;
+  volume.Light.Ambient = property->GetAmbient(0);
+  volume.Light.Diffuse = property->GetDiffuse(0);
+  volume.Light.Specular = property->GetSpecular(0);
+  volume.Light.Power = property->GetSpecularPower(0);
+  volume.Light.TwoSided = twoSided;
+  return volume;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -249,6 +287,29 @@ vtkDataSet* vtkStylizeVolumeSurfaces::UpdatedInput(vtkAbstractVolumeMapper* mapp
     mapper->GetInputAlgorithm()->Update();
   }
   return mapper->GetDataSetInput();
+}
+
+//------------------------------------------------------------------------------
+vtkAbstractCellLocator* vtkStylizeVolumeSurfaces::CutSolid(Proxy& p, vtkDataSet* data,
+  vtkImageData* gathered, const vtkStylizeVolumeFog::Volume& volume, double solid,
+  const double eye[3], const double dop[3], bool parallel)
+{
+  p.Clipped =
+    p.Cut.Cut(p.Solid.Surface->GetOutput(), data, p.Fog, volume, solid, eye, dop, parallel);
+  if (!p.Clipped || !gathered)
+  {
+    return p.Clipped ? p.Cut.GetLocator() : nullptr;
+  }
+  p.WholeSolid->SetInputData(gathered);
+  p.WholeSolid->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, volume.Scalars->GetName());
+  p.WholeSolid->SetScalarOpacity(volume.Opacity);
+  p.WholeSolid->SetOpacityThreshold(solid);
+  p.WholeSolid->Update();
+  return p.WholeCut.Cut(
+           p.WholeSolid->GetOutput(), gathered, p.Fog, volume, solid, eye, dop, parallel)
+    ? p.WholeCut.GetLocator()
+    : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -304,22 +365,9 @@ void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeP
   fog = fog && camera && image && scalars && cells == 0 && shell->GetPoints();
   if (fog)
   {
-    vtkStylizeVolumeFog::Volume volume;
-    volume.Image = image;
-    volume.Scalars = scalars;
-    volume.Opacity = opacity;
-    volume.Colors = colors;
-    volume.Mask = image->GetPointData()->GetArray("vtkValidPointMask");
-    volume.Unit = property->GetScalarOpacityUnitDistance(0);
-    // (VTK's unstructured-grid mappers take the opacity as an attenuation and do not shade)
-    const bool unstructured = vtkUnstructuredGridVolumeMapper::SafeDownCast(vm) != nullptr;
-    volume.Attenuation = unstructured;
-    volume.Light.On = property->GetShade(0) != 0 && !unstructured;
-    volume.Light.Ambient = property->GetAmbient(0);
-    volume.Light.Diffuse = property->GetDiffuse(0);
-    volume.Light.Specular = property->GetSpecular(0);
-    volume.Light.Power = property->GetSpecularPower(0);
-    volume.Light.TwoSided = ren->GetTwoSidedLighting() != 0;
+    shell = vtkStylizeVolumeSolidCut::FogSurface(shell, data, image, p.FineShell, p.FineShellTime);
+    const vtkStylizeVolumeFog::Volume volume =
+      FogVolume(image, scalars, colors, property, vm, ren->GetTwoSidedLighting() != 0);
     // (the renderer's time follows its camera's: in `time`, with the view)
     const vtkMTimeType dataTime = std::max({ shell->GetPoints()->GetMTime(), p.Matrix->GetMTime(),
       opacity->GetMTime(), colors->GetMTime(), data->GetMTime(), property->GetMTime() });
@@ -349,12 +397,17 @@ void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeP
           eye[a] /= eye[3];
         }
       }
+      // The solid surface where its material is thick enough to look solid along the view
+      // rays; the fog stops where it is drawn and goes on through the rest.
+      const bool parallel = camera->GetParallelProjection() != 0;
+      vtkAbstractCellLocator* drawn = CutSolid(
+        p, data, image == gathered ? gathered : nullptr, volume, solid, eye, dop, parallel);
       vtkNew<vtkUnsignedCharArray> rgba;
       rgba->SetName("StylizeHazeRGBA");
       vtkNew<vtkFloatArray> whole;
       whole->SetName("StylizeHazeWhole");
-      fog = p.Fog.Accumulate(shell, volume, HazeLevel * solid, solid, haze, eye, dop,
-        camera->GetParallelProjection() != 0, rgba, outline > 0.0 ? whole.GetPointer() : nullptr);
+      fog = p.Fog.Accumulate(shell, volume, HazeLevel * solid, solid, haze, eye, dop, parallel,
+        rgba, outline > 0.0 ? whole.GetPointer() : nullptr, drawn);
       if (fog)
       {
         shell->GetPointData()->AddArray(rgba);
@@ -364,7 +417,7 @@ void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeP
           p.Nearest->SetInputData(shell);
           p.Contour->Update();
           const double* spacing = image->GetSpacing();
-          TowardsEye(p.Contour->GetOutput(), eye, dop, camera->GetParallelProjection() != 0,
+          TowardsEye(p.Contour->GetOutput(), eye, dop, parallel,
             std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) }),
             p.OutlineLines);
         }
@@ -586,6 +639,25 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
   if (p.Hazy)
   {
     ColourHaze(p, data, property, colors, solid, haze, fog, ren, outline, gathered);
+  }
+  // (with the fog, the haze as the fog sampled it)
+  vtkPolyDataMapper* hazeMapper = p.Haze.Mapper;
+  if (p.Hazy && p.Fogged && p.FineShell)
+  {
+    if (hazeMapper->GetInputDataObject(0, 0) != p.FineShell)
+    {
+      hazeMapper->SetInputData(p.FineShell);
+    }
+  }
+  else if (hazeMapper->GetInputConnection(0, 0) != p.Haze.Surface->GetOutputPort())
+  {
+    hazeMapper->SetInputConnection(p.Haze.Surface->GetOutputPort());
+  }
+  vtkAlgorithmOutput* drawn =
+    p.Hazy && p.Fogged && p.Clipped ? p.Cut.GetOutputPort() : p.Solid.Surface->GetOutputPort();
+  if (p.Solid.Mapper->GetInputConnection(0, 0) != drawn)
+  {
+    p.Solid.Mapper->SetInputConnection(drawn);
   }
   return &p;
 }

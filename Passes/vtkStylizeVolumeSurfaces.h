@@ -22,7 +22,8 @@
 #ifndef vtkStylizeVolumeSurfaces_h
 #define vtkStylizeVolumeSurfaces_h
 
-#include "vtkType.h" // for vtkMTimeType
+#include "vtkStylizeVolumeFog.h" // for vtkStylizeVolumeFog::Volume
+#include "vtkType.h"             // for vtkMTimeType
 
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 
@@ -32,6 +33,7 @@
 #include <string> // for std::string
 #include <vector> // for std::vector
 
+class vtkAbstractCellLocator;
 class vtkAbstractVolumeMapper;
 class vtkActor;
 class vtkCamera;
@@ -120,6 +122,16 @@ private:
    */
   static std::vector<std::array<int, 6>> WholeExtents(
     const std::vector<vtkProp*>& props, vtkMultiProcessController* c);
+  /**
+   * With the fog: `p`'s solid surface cut to where it looks solid from the eye (`eye`, or along
+   * `dop`, parallel; vtkStylizeVolumeSolidCut), and the locator the fog asks where the solid is
+   * drawn: on the cut surface, or over several processes (`gathered`: the whole volume, each
+   * process drawing its piece) on the whole volume's solid surface cut by the same rule. Null
+   * when it cannot be cut (the whole surface drawn).
+   */
+  static vtkAbstractCellLocator* CutSolid(Proxy& p, vtkDataSet* data, vtkImageData* gathered,
+    const vtkStylizeVolumeFog::Volume& volume, double solid, const double eye[3],
+    const double dop[3], bool parallel);
   static void ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeProperty* property,
     vtkScalarsToColors* colors, double solid, double haze, bool fog, vtkRenderer* ren,
     double outline, vtkImageData* gathered);

@@ -22,7 +22,9 @@ the expected opacity), and the next still frame makes it again (as a new window'
 levels). The ball as an unstructured grid (an unstructured mapper's volume): the fog's opacity
 is VTK's unstructured mappers' 1 - exp(-0.05 L) (0.503 through the core, 0.816 beside it), and a
 white fog with the volume's Shade on is unlit there (white over the white core), lit for the
-image's mapper (darker).
+image's mapper (darker). A soft ball whose solid part (at the style's threshold) is larger than
+where VTK's picture looks solid: the line art draws one outline, at VTK's half-opacity
+(the solid surface cut to where it looks solid).
 """
 import math
 import sys
@@ -196,6 +198,74 @@ unlit = grab(scene(1.0, FOG_MODE, unstructured=True, white=True))[centre]
 print("white shaded fog over the white core: %.0f (image's mapper, lit), %.0f (unstructured, "
       "unlit)" % (lit, unlit))
 check(lit < 200 and unlit > 240, "the fog lit for the image's mapper only")
+
+
+# A soft ball (the scalar 1 - r, opacity 0 to 0.6 per 0.2 units of it: solid, at the style's
+# threshold 0.1, out to r = 0.83, but looking solid only within r = 0.69, where VTK's picture is
+# half opaque): the line art draws one outline, at VTK's. Before the solid surface was cut to
+# where it looks solid, its own outline was a second ring 10 px outside (at 400 px).
+S = 160
+
+
+def soft_ball(style=None, background=1.0):
+    """The soft ball's picture (red channel), drawn by VTK or the line art with the fog."""
+    n = 48
+    g = np.linspace(-1.0, 1.0, n)
+    z, y, x = np.meshgrid(g, g, g, indexing="ij")
+    image = vtkImageData()
+    image.SetDimensions(n, n, n)
+    image.SetOrigin(-1.0, -1.0, -1.0)
+    image.SetSpacing(2.0 / (n - 1), 2.0 / (n - 1), 2.0 / (n - 1))
+    values = np.clip(1.0 - np.sqrt(x * x + y * y + z * z), 0.0, 1.0)
+    array = numpy_to_vtk(values.ravel().astype(np.float32), deep=True)
+    array.SetName("value")
+    image.GetPointData().SetScalars(array)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(0.0, 0.0)
+    opacity.AddPoint(1.0, 0.6)
+    colour = vtkColorTransferFunction()
+    colour.AddRGBPoint(0.0, 0.8, 0.3, 0.2)
+    colour.AddRGBPoint(1.0, 0.8, 0.3, 0.2)
+    prop = vtkVolumeProperty()
+    prop.SetScalarOpacity(opacity)
+    prop.SetColor(colour)
+    prop.SetScalarOpacityUnitDistance(0.2)
+    prop.SetInterpolationTypeToLinear()
+    mapper = vtkFixedPointVolumeRayCastMapper()
+    mapper.SetInputData(image)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    win = offscreen_window(S, S)
+    ren = vtkRenderer()
+    ren.SetBackground(background, background, background)
+    win.AddRenderer(ren)
+    ren.AddVolume(volume)
+    camera = ren.GetActiveCamera()
+    camera.SetPosition(0.0, 0.0, 10.0)
+    camera.SetFocalPoint(0.0, 0.0, 0.0)
+    camera.ParallelProjectionOn()
+    camera.SetParallelScale(1.2)
+    ren.ResetCameraClippingRange()
+    if style:
+        style.SetVolumeHaze(1.0)
+        ren.SetPass(style)
+    w2i = vtkWindowToImageFilter()
+    w2i.SetInput(win)
+    w2i.ReadFrontBufferOff()
+    w2i.Update()
+    return vtk_to_numpy(w2i.GetOutput().GetPointData().GetScalars()).reshape(S, S, -1)[:, :, 0] \
+        .astype(float)
+
+
+alpha = 1.0 - (soft_ball() - soft_ball(background=0.0)) / 255.0
+row = S // 2
+half = np.nonzero(alpha[row] >= 0.5)[0]
+ink = np.nonzero(soft_ball(vtkstylize.vtkLineArtPass())[row] < 128)[0]
+print("soft ball: VTK half opaque from %d to %d, the line art's ink at %s"
+      % (half.min(), half.max(), list(ink)))
+check(len(ink) > 0 and np.all(np.minimum(np.abs(ink - half.min()), np.abs(ink - half.max())) <= 2),
+      "the soft ball's line art must draw one outline, at VTK's (within 2 px)")
 
 if failures:
     print("%d failure(s)" % len(failures))
