@@ -112,7 +112,6 @@ vtkSmartPointer<vtkPolyData> vtkStylizeVolumeSolidCut::Refined(
     const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
     std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> middles;
     vtkNew<vtkPoints> more;
-    more->SetDataTypeToDouble();
     more->DeepCopy(points);
     auto out = vtkSmartPointer<vtkPolyData>::New();
     vtkPointData* from = current->GetPointData();

@@ -60,15 +60,33 @@ def ball():
     return image
 
 
+def volume_window(mapper, opacity, colour, unit, size, background=1.0, shade=False):
+    """An offscreen window of `size` pixels square whose renderer (its background gray
+    `background`) holds a vtkVolume of `mapper` with the scalar `opacity` and `colour` functions,
+    the opacity per `unit` distance, linear interpolation, shaded with `shade`; and the
+    renderer."""
+    prop = vtkVolumeProperty()
+    prop.SetScalarOpacity(opacity)
+    prop.SetColor(colour)
+    prop.SetScalarOpacityUnitDistance(unit)
+    prop.SetInterpolationTypeToLinear()
+    prop.SetShade(shade)
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    win = offscreen_window(size, size)
+    ren = vtkRenderer()
+    ren.SetBackground(background, background, background)
+    win.AddRenderer(ren)
+    ren.AddVolume(volume)
+    return win, ren
+
+
 def scene(haze, mode, azimuth=0.0, unstructured=False, white=False):
     """The window of the ball in pixel art's PIXELATED layer, seen along -z (turned by `azimuth`
     degrees about the ball's centre); `unstructured`: the ball as an unstructured grid of
     hexahedra (an unstructured mapper's volume); `white`: the fog white too, shaded (the
     volume's Shade on)."""
-    win = offscreen_window(N, N)
-    ren = vtkRenderer()
-    ren.SetBackground(1.0, 1.0, 1.0)
-    win.AddRenderer(ren)
     opacity = vtkPiecewiseFunction()
     for value, o in ((0.0, 0.0), (100.0, FOG), (150.0, FOG), (160.0, 1.0), (200.0, 1.0)):
         opacity.AddPoint(value, o)
@@ -78,12 +96,6 @@ def scene(haze, mode, azimuth=0.0, unstructured=False, white=False):
     colour.AddRGBPoint(120.0, fog, fog, fog)
     colour.AddRGBPoint(140.0, 1.0, 1.0, 1.0)
     colour.AddRGBPoint(200.0, 1.0, 1.0, 1.0)
-    prop = vtkVolumeProperty()
-    prop.SetScalarOpacity(opacity)
-    prop.SetColor(colour)
-    prop.SetScalarOpacityUnitDistance(1.0)
-    prop.SetInterpolationTypeToLinear()
-    prop.SetShade(white)
     if unstructured:
         grid = vtkAppendFilter()
         grid.SetInputData(ball())
@@ -93,10 +105,7 @@ def scene(haze, mode, azimuth=0.0, unstructured=False, white=False):
     else:
         mapper = vtkFixedPointVolumeRayCastMapper()
         mapper.SetInputData(ball())
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    ren.AddVolume(volume)
+    win, ren = volume_window(mapper, opacity, colour, 1.0, N, shade=white)
     camera = ren.GetActiveCamera()
     c = (N - 1) / 2.0
     camera.SetFocalPoint(c, c, c)
@@ -118,13 +127,13 @@ def scene(haze, mode, azimuth=0.0, unstructured=False, white=False):
     return win
 
 
-def grab(win):
-    """The picture's red channel (0-255)."""
+def grab(win, size=N):
+    """The picture's red channel (0-255) of a window `size` pixels square."""
     w2i = vtkWindowToImageFilter()
     w2i.SetInput(win)
     w2i.ReadFrontBufferOff()
     w2i.Update()
-    pixels = vtk_to_numpy(w2i.GetOutput().GetPointData().GetScalars()).reshape(N, N, -1)
+    pixels = vtk_to_numpy(w2i.GetOutput().GetPointData().GetScalars()).reshape(size, size, -1)
     return pixels[:, :, 0].astype(float)
 
 
@@ -226,21 +235,9 @@ def soft_ball(style=None, background=1.0):
     colour = vtkColorTransferFunction()
     colour.AddRGBPoint(0.0, 0.8, 0.3, 0.2)
     colour.AddRGBPoint(1.0, 0.8, 0.3, 0.2)
-    prop = vtkVolumeProperty()
-    prop.SetScalarOpacity(opacity)
-    prop.SetColor(colour)
-    prop.SetScalarOpacityUnitDistance(0.2)
-    prop.SetInterpolationTypeToLinear()
     mapper = vtkFixedPointVolumeRayCastMapper()
     mapper.SetInputData(image)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    win = offscreen_window(S, S)
-    ren = vtkRenderer()
-    ren.SetBackground(background, background, background)
-    win.AddRenderer(ren)
-    ren.AddVolume(volume)
+    win, ren = volume_window(mapper, opacity, colour, 0.2, S, background)
     camera = ren.GetActiveCamera()
     camera.SetPosition(0.0, 0.0, 10.0)
     camera.SetFocalPoint(0.0, 0.0, 0.0)
@@ -250,12 +247,7 @@ def soft_ball(style=None, background=1.0):
     if style:
         style.SetVolumeHaze(1.0)
         ren.SetPass(style)
-    w2i = vtkWindowToImageFilter()
-    w2i.SetInput(win)
-    w2i.ReadFrontBufferOff()
-    w2i.Update()
-    return vtk_to_numpy(w2i.GetOutput().GetPointData().GetScalars()).reshape(S, S, -1)[:, :, 0] \
-        .astype(float)
+    return grab(win, S)
 
 
 alpha = 1.0 - (soft_ball() - soft_ball(background=0.0)) / 255.0
