@@ -204,6 +204,7 @@ struct FogRay
   // start and step in the image's coordinates.
   vtkAbstractCellLocator* Drawn = nullptr;
   std::mutex* DrawnLock = nullptr;
+  vtkGenericCell* DrawnCell = nullptr; // (the queries' cell, used under DrawnLock)
   double X0[3] = { 0.0, 0.0, 0.0 }, Dx[3] = { 0.0, 0.0, 0.0 };
 
   /**
@@ -399,9 +400,8 @@ struct FogRay
     {
       return 1e30; // (nothing solid drawn)
     }
-    vtkNew<vtkGenericCell> cell;
     std::lock_guard<std::mutex> guard(*this->DrawnLock); // (VTK 9.1's locators are not reentrant)
-    return this->Drawn->IntersectWithLine(a, b, 0.0, u, x, pcoords, subId, cellId, cell)
+    return this->Drawn->IntersectWithLine(a, b, 0.0, u, x, pcoords, subId, cellId, this->DrawnCell)
       ? from + u * (to - from)
       : 1e30;
   }
@@ -590,6 +590,7 @@ void vtkStylizeVolumeFog::ForRays(vtkPolyData* surface, const Volume& v, const R
         FogRay ray{ tables, v.Light, r.Extent, r.Dims, r.Tx, {}, {}, {}, r.Corrected.data() };
         ray.Drawn = r.Drawn;
         ray.DrawnLock = r.Lock;
+        ray.DrawnCell = r.Cell;
         double x[3], d[3];
         points->GetPoint(id, x);
         for (int a = 0; a < 3; ++a)
@@ -629,8 +630,10 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
     return false;
   }
   std::mutex lock;
+  vtkNew<vtkGenericCell> cell;
   r.Drawn = drawn;
   r.Lock = &lock;
+  r.Cell = cell;
   out->SetNumberOfComponents(4);
   out->SetNumberOfTuples(n);
   if (whole)

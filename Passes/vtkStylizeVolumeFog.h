@@ -18,6 +18,7 @@ class vtkDataArray;
 class vtkDataSet;
 class vtkMultiProcessController;
 class vtkFloatArray;
+class vtkGenericCell;
 class vtkImageData;
 class vtkPiecewiseFunction;
 class vtkPolyData;
@@ -131,6 +132,7 @@ private:
     double T0[3], Tx[3][3];                  // the map to the continuous index
     vtkAbstractCellLocator* Drawn = nullptr; // (Accumulate()'s `drawn`)
     std::mutex* Lock = nullptr;
+    vtkGenericCell* Cell = nullptr; // (the locator's queries', under Lock)
   };
   /** Brings the tables up to date and fills `r` for `volume`; false when it cannot be sampled. */
   bool Prepare(const Volume& volume, Rays& r);

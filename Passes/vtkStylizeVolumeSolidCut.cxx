@@ -112,6 +112,7 @@ vtkSmartPointer<vtkPolyData> vtkStylizeVolumeSolidCut::Refined(
     const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
     std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> middles;
     vtkNew<vtkPoints> more;
+    more->SetDataTypeToDouble(); // (kept by DeepCopy: the middles of middles in double)
     more->DeepCopy(points);
     auto out = vtkSmartPointer<vtkPolyData>::New();
     vtkPointData* from = current->GetPointData();
@@ -169,24 +170,15 @@ vtkSmartPointer<vtkPolyData> vtkStylizeVolumeSolidCut::Refined(
       }
       const vtkIdType a = t[r], b = t[(r + 1) % 3], c = t[(r + 2) % 3];
       const vtkIdType ab = m[r], bc = m[(r + 1) % 3], ca = m[(r + 2) % 3];
-      std::vector<std::array<vtkIdType, 3>> pieces;
-      switch (splits)
+      const std::array<std::array<vtkIdType, 3>, 4> pieces[4] = {
+        { { { a, b, c } } },
+        { { { a, ab, c }, { ab, b, c } } },
+        { { { ab, b, bc }, { a, ab, bc }, { a, bc, c } } },
+        { { { a, ab, ca }, { ab, b, bc }, { ca, bc, c }, { ab, bc, ca } } },
+      };
+      for (int i = 0; i <= splits; ++i) // (splits + 1 triangles)
       {
-        case 0:
-          pieces = { { a, b, c } };
-          break;
-        case 1:
-          pieces = { { a, ab, c }, { ab, b, c } };
-          break;
-        case 2:
-          pieces = { { ab, b, bc }, { a, ab, bc }, { a, bc, c } };
-          break;
-        default:
-          pieces = { { a, ab, ca }, { ab, b, bc }, { ca, bc, c }, { ab, bc, ca } };
-      }
-      for (const auto& piece : pieces)
-      {
-        split->InsertNextCell(3, piece.data());
+        split->InsertNextCell(3, pieces[splits][i].data());
       }
     }
     out->SetPoints(more);
