@@ -694,8 +694,39 @@ vtkSmartPointer<vtkImageData> vtkStylizeVolumeFog::GatherImage(
       local[3 + a] = -b[2 * a + 1];
     }
   }
+  // An image piece's extent (lows and negated highs; no image: an empty one, so that the union
+  // is no grid unless every piece holding data is an image).
+  auto* grid = vtkImageData::SafeDownCast(piece);
+  const int* e = grid ? grid->GetExtent() : nullptr;
+  const bool isImage = held && e && grid->GetPointData()->GetArray(name);
+  int lows[6] = { VTK_INT_MAX, VTK_INT_MAX, VTK_INT_MAX, VTK_INT_MAX, VTK_INT_MAX, VTK_INT_MAX };
+  int images = held && !isImage ? 0 : 1, allImages = 0;
+  if (isImage)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      lows[a] = e[2 * a];
+      lows[3 + a] = -e[2 * a + 1];
+    }
+  }
   double all[6];
-  c->AllReduce(local, all, 6, vtkCommunicator::MIN_OP);
+  int extent[6];
+  // (one process, or none: its own piece, sampled as several processes sample theirs)
+  const bool several = c && c->GetNumberOfProcesses() > 1;
+  auto reduce = [&](auto* in, auto* out, vtkIdType n, int op)
+  {
+    if (several)
+    {
+      c->AllReduce(in, out, n, op);
+    }
+    else
+    {
+      std::copy(in, in + n, out);
+    }
+  };
+  reduce(local, all, 6, vtkCommunicator::MIN_OP);
+  reduce(lows, extent, 6, vtkCommunicator::MIN_OP);
+  reduce(&images, &allImages, 1, vtkCommunicator::MIN_OP);
   if (!(all[0] < VTK_DOUBLE_MAX))
   {
     return nullptr; // (no piece holds data)
@@ -706,13 +737,23 @@ vtkSmartPointer<vtkImageData> vtkStylizeVolumeFog::GatherImage(
     bounds[2 * a] = all[a];
     bounds[2 * a + 1] = std::max(-all[3 + a], all[a]);
   }
-  const double longest =
-    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-30 });
   int dims[3];
-  for (int a = 0; a < 3; ++a)
+  vtkIdType gridPoints = allImages && extent[0] < VTK_INT_MAX ? 1 : 0;
+  for (int a = 0; a < 3 && gridPoints > 0; ++a)
   {
-    dims[a] = std::max(
-      2, static_cast<int>(std::lround(points * (bounds[2 * a + 1] - bounds[2 * a]) / longest)));
+    dims[a] = std::max(1, -extent[3 + a] - extent[a] + 1);
+    gridPoints = dims[a] > 1 ? gridPoints * dims[a] : 0; // (a flat image: resampled)
+    gridPoints = gridPoints > GatheredGridPoints ? 0 : gridPoints;
+  }
+  if (gridPoints == 0)
+  {
+    const double longest =
+      std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-30 });
+    for (int a = 0; a < 3; ++a)
+    {
+      dims[a] = std::max(
+        2, static_cast<int>(std::lround(points * (bounds[2 * a + 1] - bounds[2 * a]) / longest)));
+    }
   }
   const vtkIdType n = static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2];
   // Each piece's values where it holds data, and 1 there: summed over the processes. (Probed:
@@ -742,8 +783,7 @@ vtkSmartPointer<vtkImageData> vtkStylizeVolumeFog::GatherImage(
       }
     }
   }
-  c->AllReduce(
-    sums.data(), totals.data(), static_cast<vtkIdType>(sums.size()), vtkCommunicator::SUM_OP);
+  reduce(sums.data(), totals.data(), static_cast<vtkIdType>(sums.size()), vtkCommunicator::SUM_OP);
   vtkNew<vtkFloatArray> values;
   values->SetName(name ? name : "");
   values->SetNumberOfTuples(n);

@@ -110,11 +110,28 @@ public:
     const double dop[3], bool parallel, vtkFloatArray* out);
 
   /**
+   * Data that is not an image (or with cell scalars) is sampled for the fog on an image of this
+   * many points along its longest side, on one process and gathered from several alike.
+   */
+  static constexpr int SampledPoints = 64;
+
+  /**
+   * Image pieces gathered from several processes (GatherImage()) keep their own grid up to this
+   * many points in all (so that the fog samples what one process holding the whole image
+   * samples); larger images are gathered onto `points` along their longest side.
+   */
+  static constexpr vtkIdType GatheredGridPoints = 4 * 1024 * 1024;
+
+  /**
    * Over several processes that each hold a piece of the same volume (collective: every process
    * calls it for the same volumes in the same order): every piece's array `name` resampled onto
-   * one image over the union of the pieces' bounds (`points` along its longest side) and combined
-   * over the processes, so that each samples the whole volume; its vtkValidPointMask is 1 where
-   * some piece holds data. `piece` may be null or empty. Null when no piece has data.
+   * one image over the union of the pieces' bounds and combined over the processes, so that each
+   * samples the whole volume; its vtkValidPointMask is 1 where some piece holds data. The image
+   * has the pieces' own grid when every piece is an image of point scalars with at most
+   * GatheredGridPoints points in all (the same samples as on one process); else `points` along
+   * its longest side. `piece` may be null or empty. Null when no piece has data. With no
+   * controller, or one process, `piece` alone is sampled so (the same samples as its part of a
+   * gathered image).
    */
   static vtkSmartPointer<vtkImageData> GatherImage(
     vtkDataSet* piece, const char* name, vtkMultiProcessController* c, int points);

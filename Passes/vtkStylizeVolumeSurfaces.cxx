@@ -27,7 +27,6 @@
 #include "vtkRenderState.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkResampleToImage.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStylizeLightingPass.h"
@@ -337,25 +336,14 @@ void vtkStylizeVolumeSurfaces::ColourHaze(Proxy& p, vtkDataSet* data, vtkVolumeP
   }
   else if ((!image || cells) && fog && scalars && data->GetNumberOfCells() > 0)
   {
-    // Other data, or cell scalars, sampled on an image of up to 64 points along its longest
+    // Other data, or cell scalars, sampled on an image of up to SampledPoints along its longest
     // side (where the image lies outside the data, vtkValidPointMask is 0 and the fog nothing);
     // there the array of the scalars' name.
     if (!p.Resampled || p.ResampledTime < data->GetMTime())
     {
-      double b[6];
-      data->GetBounds(b);
-      const double longest = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4], 1e-30 });
-      int dims[3];
-      for (int a = 0; a < 3; ++a)
-      {
-        dims[a] =
-          std::max(2, static_cast<int>(std::lround(64.0 * (b[2 * a + 1] - b[2 * a]) / longest)));
-      }
-      vtkNew<vtkResampleToImage> resample;
-      resample->SetInputDataObject(data);
-      resample->SetSamplingDimensions(dims);
-      resample->Update();
-      p.Resampled = resample->GetOutput();
+      // (probed as several processes probe their pieces: the same samples on any number)
+      p.Resampled = vtkStylizeVolumeFog::GatherImage(
+        data, scalars->GetName(), nullptr, vtkStylizeVolumeFog::SampledPoints);
       p.ResampledTime = data->GetMTime();
     }
     image = p.Resampled;

@@ -18,8 +18,14 @@
 
 namespace
 {
-/** The points along the longest side of the image the fog samples on several processes. */
-constexpr int FogImagePoints = 128;
+/**
+ * The points along the longest side of the image the fog samples on several processes: data that
+ * is not an image as on one process; an image too large to gather on its own grid, 128.
+ */
+int FogImagePoints(vtkDataSet* data)
+{
+  return vtkImageData::SafeDownCast(data) ? 128 : vtkStylizeVolumeFog::SampledPoints;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -237,7 +243,7 @@ std::vector<vtkImageData*> vtkStylizeVolumeSurfaces::FogImages(vtkMultiProcessCo
     if (any)
     {
       entry.Image = vtkStylizeVolumeFog::GatherImage(
-        data, scalars ? scalars->GetName() : nullptr, c, FogImagePoints);
+        data, scalars ? scalars->GetName() : nullptr, c, FogImagePoints(data));
       entry.Time = time;
       entry.Name = name;
     }
