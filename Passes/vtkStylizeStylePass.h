@@ -186,11 +186,11 @@ public:
    * lighting coefficients, so that the style's zones, edges, patterns, strokes and lines apply
    * to it as to any surface, in rendered frames and vector figures. The surface is recomputed
    * only when the data or the transfer functions change. What the volume holds below the
-   * threshold (a faint haze) is not drawn unless VolumeHaze is above 0, or lower the threshold.
-   * Off, and for a volume whose STYLIZE_VOLUME key is 0, the volume is drawn by VTK over the
-   * stylized picture. Volumes of composite data or of dependent components (RGBA) are always
-   * drawn by VTK. Behind a compositor (a delegate pass: ParaView's view) each process draws the
-   * surfaces of its own pieces of the volumes. Default on.
+   * threshold (a faint haze) is drawn as VTK's fog (VolumeHaze, VolumeHazeMode). Off, and for a
+   * volume whose STYLIZE_VOLUME key is 0, the volume is drawn by VTK over the stylized picture.
+   * Volumes of composite data or of dependent components (RGBA) are always drawn by VTK. Behind a
+   * compositor (a delegate pass: ParaView's view) each process draws the surfaces of its own pieces
+   * of the volumes. Default on.
    */
   vtkSetMacro(StylizeVolumes, bool);
   vtkGetMacro(StylizeVolumes, bool);
@@ -212,13 +212,16 @@ public:
   /**
    * The opacity of a stylized volume's haze (StylizeVolumes): what the volume holds below
    * VolumeOpacityThreshold (soft tissue over a CT's bone, a faint shell of a field). 0 leaves
-   * it out: the volume is its solid surface alone. Above 0, a volume whose opacity function
+   * it out: the volume is its solid surface alone, drawn wherever its material reaches the
+   * threshold (cheaper: nothing is computed per view, but thin or faint material looks unlike
+   * VTK's picture). Above 0, a volume whose opacity function
    * holds values between a tenth of the threshold and the threshold is also drawn as a
    * translucent surface where its opacity first reaches a tenth of the threshold, coloured as
    * VolumeHazeMode says (HAZE_FOG: VTK's fog times this, so that 1 draws the volume's
    * translucent part as VTK does), which the style draws in its translucent layers
    * (TranslucentLayers: stylized, over the solid surface; the line art draws it as its paper,
-   * with its outline). Not with the isosurface blend mode. Range [0, 1], default 0.
+   * with its outline). Not with the isosurface blend mode. Range [0, 1], default 1 (with
+   * HAZE_FOG: the volume as VTK draws it, in the style).
    */
   vtkSetClampMacro(VolumeHaze, double, 0.0, 1.0);
   vtkGetMacro(VolumeHaze, double);
@@ -252,8 +255,9 @@ public:
    * the outline of where the volume looks solid (the whole ray's opacity one half) instead of
    * the shell's. Data that is not an image, or cell scalars, is sampled on an image of 64 points
    * along its longest side (again when it changes). On several processes (ParaView's ranks,
-   * each holding a piece) each samples the whole volume, the pieces gathered onto an image of
-   * 128 points along its longest side (again when a piece changes).
+   * each holding a piece) each samples the whole volume, the pieces gathered onto the same
+   * samples as one process takes (an image's own grid, up to 4M points; larger images on 128
+   * points along their longest side), again when a piece changes.
    * HAZE_SHELL: a shell of the VolumeHaze opacity in the colour the colour map gives there.
    */
   vtkSetClampMacro(VolumeHazeMode, int, HAZE_SHELL, HAZE_FOG);
@@ -771,7 +775,7 @@ protected:
    * drawn after the stylized picture, which must then write its depth. */
   bool HasPlainAnnotations();
   double VolumeOpacityThreshold = 0.1;
-  double VolumeHaze = 0.0;
+  double VolumeHaze = 1.0;
   int VolumeHazeMode = HAZE_FOG;
 
   /**

@@ -9,11 +9,11 @@ realdata.volumes' skull (Testing/RealData/volumes.py), 400x300. Writes OUTPUT_PR
   vtk     Style None: the volume as ParaView draws it
   bare    Style None without the volume (the volume's region is where the two differ)
   white, black   the volume alone as ParaView draws it over white and over black (its opacity)
-  comic, pixel, sketch, lines   each style at its defaults (pixel art: Palette 16)
-  haze    the comic with VolumeHaze 0.5 (the tissue below the opacity threshold as a translucent
-          surface: the shell, HAZE_SHELL)
-  fog, fog-lines   the comic and the line art with VolumeHaze 1, HAZE_FOG (VTK's fog, on 2
-          ranks sampled on the pieces gathered)
+  comic, pixel, sketch, lines   each style at its defaults (pixel art: Palette 16; VolumeHaze 1,
+          HAZE_FOG: VTK's fog, on 2 ranks sampled on the pieces gathered)
+  haze    the comic with VolumeHaze 0.5 in HAZE_SHELL (the tissue below the opacity threshold as
+          a translucent surface)
+  solid, solid-lines   the comic and the line art with VolumeHaze 0 (the solid part alone)
   grid-<style>   the data axes grid on: vtk (Style None) and each style
   disk-<style>   ParaView's disk_out_ref simulation, an unstructured volume redistributed over
                  the ranks, seen across the cut between their pieces: vtk and each style
@@ -70,15 +70,14 @@ view.Style = 1
 view.ComicVolumeHaze = 0.5
 view.ComicVolumeHazeMode = 0  # (the shell)
 shot("haze")
-view.ComicVolumeHaze = 1.0
-view.ComicVolumeHazeMode = 1  # (the fog: on 2 ranks sampled on the pieces gathered)
-shot("fog")
-view.Style = 4
-view.LineArtVolumeHaze = 1.0
-shot("fog-lines")
-view.LineArtVolumeHaze = 0.0
-view.Style = 1
 view.ComicVolumeHaze = 0.0
+view.ComicVolumeHazeMode = 1
+shot("solid")
+view.ComicVolumeHaze = 1.0
+view.Style = 4
+view.LineArtVolumeHaze = 0.0
+shot("solid-lines")
+view.LineArtVolumeHaze = 1.0
 view.Style = 0
 background = list(view.Background)
 for label, color in (("white", [1.0, 1.0, 1.0]), ("black", [0.0, 0.0, 0.0])):

@@ -59,16 +59,18 @@ def near(mask, radius):
     return out
 
 
-def overlay_match(plain, bare, styled, where, level):
+def overlay_match(plain, bare, styled, where, level, styled_bare=None):
     """Whether a style draws an overlay (axes, text) where the plain picture draws it: the
     overlay's pixels are where `plain` (with it) differs from `bare` (without it) by more than
     `level` summed over the channels, within the boolean mask `where`; what the style draws of
-    it, where `styled` differs from `bare` so. Returns (recall: the share of the overlay's pixels
-    within 1 px of the style's, precision: the share of the style's within 1 px of the overlay's,
-    the overlay's pixel count)."""
+    it, where `styled` differs from `styled_bare` (the style's picture without it; default
+    `bare`) so. Returns (recall: the share of the overlay's pixels within 1 px of the style's,
+    precision: the share of the style's within 1 px of the overlay's, the overlay's pixel
+    count)."""
     import numpy
     overlay = (numpy.abs(plain - bare).sum(axis=2) > level) & where
-    drawn = (numpy.abs(styled - bare).sum(axis=2) > level) & where
+    drawn = (numpy.abs(styled - (bare if styled_bare is None else styled_bare)).sum(axis=2)
+             > level) & where
     recall = float(near(drawn, 1)[overlay].mean()) if overlay.any() else 0.0
     precision = float(near(overlay, 1)[drawn].mean()) if drawn.any() else 0.0
     return recall, precision, int(overlay.sum())

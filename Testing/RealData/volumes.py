@@ -10,7 +10,7 @@ defaults:
 - field: a ParaView-like scene of VTK's wavelet field: a slice coloured by a colour map, arrow
   glyphs of the gradient, streamlines, an isosurface, cube axes and the field as a volume;
 - vessel (not in the default scenes): the Exodus vessel by its temperature as an unstructured
-  volume (projected tetrahedra, as ParaView draws one by default), held out;
+  volume (projected tetrahedra, as ParaView draws one by default), held out until stop 69;
 - headsq (not in the default scenes): VTK's headsq CT of a head (vtkdata/) with the transfer
   functions of VTK's MedicalDemo4 example, held out (never tuned on);
 - disk (not in the default scenes): ParaView's tutorial flow simulation disk_out_ref.ex2
@@ -29,10 +29,10 @@ tone (luminance blurred over 4 px) with VTK's (goal >= 0.8); line art: the recal
 by ink, of the outline of where the volume looks solid (its own opacity, from its picture alone
 over white and over black, at least 0.5) (goal >= 0.9); with --bench, the median frame time of each style against VTK's frame with the volume
 (with a haze, also while the camera moves: the window's desired update rate 15, the fog kept).
-The styles draw at their defaults (VolumeHaze 0: the solid part alone); the comic with VolumeHaze
-0.4 (HAZE_SHELL) must change the comic's picture (the haze drawn: at least 0.5% of the pixels);
---haze OPACITY measures every style with that haze instead (1 with --haze-mode fog, the default:
-the volume's translucent part as VTK's fog).
+The styles draw at their defaults (VolumeHaze 1, HAZE_FOG: the volume's translucent part as
+VTK's fog); the comic with VolumeHaze 0.4 (HAZE_SHELL) must change the comic's picture (at least
+0.5% of the pixels); --haze OPACITY measures every style with that haze instead (0: the solid
+part alone; with --haze-mode shell, a shell of that opacity).
 With --primitives field,disk, the scenes' streamlines (dark line primitives), their boxes' outlines (light
 ones), points of the field (4 px, coloured by it; not in the scene's pictures) and arrow glyphs
 (about 10 px) are drawn alone: per style, the share of VTK's pixels of them with a styled pixel within 1 px
@@ -510,7 +510,7 @@ def main():
             m["surfaces"] = surfaces
             if args.bench:
                 m["cost"] = styled_time / plain_time
-                if args.haze:  # (the fog kept while the camera moves)
+                if args.haze != 0:  # (the fog kept while the camera moves)
                     _, moving_time, _ = render(builder, args.data, style, size, True, times,
                                                haze=args.haze, haze_mode=args.haze_mode,
                                                moving=True)
@@ -546,9 +546,9 @@ def main():
                                     % (name, changed))
     print("| scene | style | region (px) | left as VTK | comic: plain gradient (VTK's) | palette "
           "| tone corr. | outline recall |" + (" cost vs VTK |" if args.bench else "") +
-          (" moving vs VTK |" if args.bench and args.haze else ""))
+          (" moving vs VTK |" if args.bench and args.haze != 0 else ""))
     print("|---|---|---:|---:|---:|---:|---:|---:|" + ("---:|" if args.bench else "") +
-          ("---:|" if args.bench and args.haze else ""))
+          ("---:|" if args.bench and args.haze != 0 else ""))
     for name, style, n, m in rows:
         cells = [m.get(k) for k in ("plain", "gradient", "palette", "tone", "recall")]
         text = ["" if c is None else "%.3f" % c for c in cells]
