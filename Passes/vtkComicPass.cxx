@@ -277,7 +277,8 @@ void vtkComicPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame, c
     .Int("comicHatchDirections", this->HatchDirections)
     .Float("comicBright", this->BrightThreshold)
     .Float("comicDark", this->DarkThreshold)
-    .Float("comicCross", this->CrossThreshold);
+    .Float("comicCross", this->CrossThreshold)
+    .Int("comicEmittedLayer", this->GetTranslucentLayerEmitted() ? 1 : 0);
   this->SetSceneOutputUniforms(u, frame.Renderer);
 }
 

@@ -75,6 +75,13 @@ inline double Zone(double tone, double bright, double dark)
  */
 constexpr int FixedAngleStep = 255;
 
+/**
+ * The screen of a fog's opacity (a translucent layer of emitted colours: its opacity drawn as
+ * dots covering that share of each cell, since the comic draws no plain gradient): its angle
+ * from the tone's dots, radians (30 degrees, so that the two screens do not beat into moire).
+ */
+constexpr double FogScreenAngle = Pi / 6.0;
+
 /** Hatch steps over 180 degrees along the principal directions when HatchDirections is 0. */
 constexpr int DefaultPrincipalSteps = 8;
 
@@ -140,6 +147,7 @@ inline std::string ShaderDefines()
   define("COMIC_DOT_INSCRIBED_RADIUS", DotInscribedRadius);
   define("COMIC_DOT_CORNER_RADIUS", DotCornerRadius);
   define("COMIC_FIXED_ANGLE_STEP", FixedAngleStep);
+  define("COMIC_FOG_SCREEN_ANGLE", FogScreenAngle);
   return defines;
 }
 }

@@ -684,7 +684,8 @@ void vtkPixelArtPass::SetStageUniforms(vtkStylizeUniforms& u, const Frame& frame
     .Float("pixelAnchorUnit", p.AnchorUnit)
     .Float("pixelTexelUnit", p.TexelUnit)
     .Float3(
-      "pixelOutlineColor", this->OutlineColor[0], this->OutlineColor[1], this->OutlineColor[2]);
+      "pixelOutlineColor", this->OutlineColor[0], this->OutlineColor[1], this->OutlineColor[2])
+    .Int("pixelEmittedLayer", this->GetTranslucentLayerEmitted() ? 1 : 0);
   this->SetSceneOutputUniforms(u, frame.Renderer);
 }
 

@@ -4,6 +4,7 @@
 #include "vtkCamera.h"
 #include "vtkCommunicator.h"
 #include "vtkFloatArray.h"
+#include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkMultiProcessController.h"
@@ -248,6 +249,29 @@ int vtkStylizeStylePass::GetTranslucentLayer() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkStylizeStylePass::GetTranslucentLayerEmitted() const
+{
+  return this->Internals->Layer > 0 && this->Internals->EmittedLayers;
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizeStylePass::EmittedLayers(const vtkRenderState* s)
+{
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+    if (prop && prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry() &&
+      !(keys && keys->Has(vtkStylizeLightingPass::EMITTED_COLORS()) &&
+        keys->Get(vtkStylizeLightingPass::EMITTED_COLORS()) >= 0.5))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkStylizeStylePass::SetClampedColor(double target[3], double r, double g, double b)
 {
   const double in[3] = { r, g, b };
@@ -438,15 +462,19 @@ void vtkStylizeStylePass::RenderTranslucentLayers(const vtkRenderState* s, const
   const bool fromProps = !this->DelegatePass || (source && !source->GetDrawTranslucent());
   bool layers = this->TranslucentLayers > 0 && fromProps && !frame.Renderer->GetSelector();
   int translucent = layers && vtkStylizeGBufferPass::HasTranslucentGeometry(s) ? 1 : 0;
+  int surfaces = layers && !EmittedLayers(s) ? 1 : 0; // (a translucent prop with a surface)
   vtkMultiProcessController* controller = in.GBuffer->GetController();
   if (layers && controller && controller->GetNumberOfProcesses() > 1)
   {
     // Several processes, each with its props: the layers are composited across them (a
     // collective call per layer), so all of them draw layers when any has translucent geometry.
-    int local = translucent;
-    controller->AllReduce(&local, &translucent, 1, vtkCommunicator::MAX_OP);
+    int local[2] = { translucent, surfaces }, all[2];
+    controller->AllReduce(local, all, 2, vtkCommunicator::MAX_OP);
+    translucent = all[0];
+    surfaces = all[1];
   }
   layers = layers && translucent != 0;
+  in.EmittedLayers = surfaces == 0;
   in.GBuffer->SetDrawTranslucent(!layers);
   if (!layers)
   {

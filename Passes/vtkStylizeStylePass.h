@@ -582,6 +582,16 @@ protected:
   /** The translucent layer RenderStyle() is stylizing: 0 for the opaque scene, 1 the nearest. */
   int GetTranslucentLayer() const;
 
+  /**
+   * Whether RenderStyle() is stylizing a translucent layer of emitted colours alone (every
+   * translucent prop's vtkStylizeLightingPass::EMITTED_COLORS set: a volume's fog, a glow, on
+   * every process): light without a surface, whose ink a style fades with its opacity.
+   */
+  bool GetTranslucentLayerEmitted() const;
+
+  /** Whether every visible translucent prop of `s` has emitted colours (none: true). */
+  static bool EmittedLayers(const vtkRenderState* s);
+
   /** The G-buffer RenderStyle() is stylizing: GetGBufferPass(), or the translucent layer's. */
   vtkStylizeGBufferPass* GetSceneGBufferPass();
 

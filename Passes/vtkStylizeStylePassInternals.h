@@ -32,6 +32,7 @@ public:
   vtkNew<vtkStylizeGBufferPass> LayerGBuffer;
   vtkStylizeGBufferPass* Scene = nullptr;
   int Layer = 0;
+  bool EmittedLayers = false; // (the layers hold emitted colours alone: a volume's fog)
   vtkTextureObject* LayerTexture = nullptr;
   vtkOpenGLFramebufferObject* LayerFramebuffer = nullptr;
   vtkStylizeScreenQuad LayerQuad;

@@ -40,6 +40,7 @@ uniform int comicHatchDirections;  // 0: one direction; n: normal-dependent, n s
 uniform float comicBright;         // a1 of eq. 13-14: dots above
 uniform float comicDark;           // a2 of eq. 13-14: hatching below
 uniform float comicCross;          // cross-hatching below this tone
+uniform int comicEmittedLayer;     // 1: a translucent layer of emitted colours alone (a fog)
 uniform sampler2D comicField;      // COMIC_HATCH_PRINCIPAL: xyz view-space direction, w depth
 uniform int comicHatchSteps;       // COMIC_HATCH_PRINCIPAL: angle steps over 180 degrees
 
@@ -406,7 +407,29 @@ void comicMain()
   {
     discard;
   }
-  gl_FragData[0] = stylizeOutput(background, result, image.a, 1.0 - e);
+  // A fog's layer (vtkStylizeStylePass::GetTranslucentLayerEmitted()) has no surface to
+  // outline, and its opacity is no plain gradient either: it is drawn as a screen of dots
+  // covering that share of each cell (turned COMIC_FOG_SCREEN_ANGLE from the tone's dots, fading
+  // to the mean below three pixels a cell like them), its ink (where its depth, normal or colour
+  // jump: its shells' silhouettes) only within them, none beside it.
+  float drawnAlpha = image.a;
+  float drawnInk = 1.0 - e;
+  if (comicEmittedLayer == 1)
+  {
+    vec2 turn = stylizeRotate(comicDotDirection,
+      vec2(cos(COMIC_FOG_SCREEN_ANGLE), sin(COMIC_FOG_SCREEN_ANGLE)));
+    vec2 fogUV = stylizeRotate(plane / comicDotSpacing, turn);
+    vec2 fogDx = stylizeRotate(planeJ[0], turn) / comicDotSpacing;
+    vec2 fogDy = stylizeRotate(planeJ[1], turn) / comicDotSpacing;
+    float fogAA = clamp(0.5 * max(abs(fogDx.x) + abs(fogDy.x), abs(fogDx.y) + abs(fogDy.y)), 1e-4, 0.5);
+    float fogFade = stylizePatternFade(
+      max(length(vec2(fogDx.x, fogDy.x)), length(vec2(fogDx.y, fogDy.y))));
+    float opacity = clamp(image.a, 0.0, 1.0);
+    float screen = 1.0 - stylizeHalftoneDots(fogUV, 1.0 - opacity, fogAA);
+    drawnAlpha = background ? 0.0 : mix(screen, opacity, fogFade);
+    drawnInk = background ? 0.0 : (1.0 - e) * drawnAlpha;
+  }
+  gl_FragData[0] = stylizeOutput(background, result, drawnAlpha, drawnInk);
   gl_FragDepth = stylizeWindowDepth(depth);
 }
 

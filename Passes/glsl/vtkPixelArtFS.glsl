@@ -45,6 +45,7 @@ uniform int pixelParallel;
 uniform float pixelAnchorUnit;   // world size of a dither cell (surface anchor)
 uniform float pixelTexelUnit;    // world size of a texel, a surface-fixed art pixel
 uniform vec3 pixelOutlineColor;
+uniform int pixelEmittedLayer;   // 1: a translucent layer of emitted colours alone (a fog)
 
 // This fragment's art pixel (art-resolution stages) from the quad's texture coordinate.
 ivec2 pixelArtCoord()
@@ -427,6 +428,12 @@ vec3 pixelQuantize(vec3 c, float t)
 // composite to the palette's colours; the PIXELATED layer blends.
 vec4 pixelOutputColour(vec4 art, ivec2 q)
 {
+  // (a fog's layer has no surface to outline: its outline pixels are left out, as its paper is
+  // where its opacity is low; vtkStylizeStylePass::GetTranslucentLayerEmitted())
+  if (stylizeTranslucentLayer > 0 && pixelEmittedLayer == 1 && art.a > 1.75)
+  {
+    return vec4(0.0);
+  }
   float opacity = clamp(2.0 * (art.a - 1.0), 0.0, 1.0);
   if (stylizeTranslucentLayer > 0 && PIXEL_LAYER != 1)
   {
