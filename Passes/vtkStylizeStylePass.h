@@ -585,7 +585,8 @@ protected:
   /**
    * Whether RenderStyle() is stylizing a translucent layer of emitted colours alone (every
    * translucent prop's vtkStylizeLightingPass::EMITTED_COLORS set: a volume's fog, a glow, on
-   * every process): light without a surface, whose ink a style fades with its opacity.
+   * every process): light without a surface, which a style draws without outlines (the comic
+   * screens its opacity with dots, the pixel art leaves its outline pixels out).
    */
   bool GetTranslucentLayerEmitted() const;
 
