@@ -205,6 +205,19 @@ float comicLines(float u, float w, float aa)
                   : 1.0 - (hw / aa) * (1.0 - smoothstep(0.0, 2.0 * aa, t));
 }
 
+// The dot screen's cells at `plane` (pixels or world units; planeJ its derivatives per pixel)
+// turned by `direction` (cos, sin): xy the cell coordinates, z the smooth edge (half the cell
+// units a pixel spans), w how much the dots fade to their mean (a cell's side under three
+// pixels, stylizePatternFade). The tone's dots and a fog's opacity screen use it.
+vec4 comicDotCells(vec2 plane, mat2 planeJ, vec2 direction)
+{
+  vec2 dx = stylizeRotate(planeJ[0], direction) / comicDotSpacing;
+  vec2 dy = stylizeRotate(planeJ[1], direction) / comicDotSpacing;
+  float aa = clamp(0.5 * max(abs(dx.x) + abs(dy.x), abs(dx.y) + abs(dy.y)), 1e-4, 0.5);
+  float fade = stylizePatternFade(max(length(vec2(dx.x, dy.x)), length(vec2(dx.y, dy.y))));
+  return vec4(stylizeRotate(plane / comicDotSpacing, direction), aa, fade);
+}
+
 // The value of a line's ink in the tinted comic: its hue at this fraction of full value.
 const float comicLineInk = 0.25;
 
@@ -263,14 +276,10 @@ void comicMain()
 #endif
 #if defined(COMIC_DOTS) || defined(COMIC_HATCH)
 #ifdef COMIC_DOTS
-  vec2 dotUV = stylizeRotate(plane / comicDotSpacing, comicDotDirection);
-  // d(dotUV) / dx and / dy; the smooth edge is half the cell units a pixel spans, and the dots
-  // fade where a cell's side spans less than three pixels (stylizePatternFade)
-  vec2 dotDx = stylizeRotate(planeJ[0], comicDotDirection) / comicDotSpacing;
-  vec2 dotDy = stylizeRotate(planeJ[1], comicDotDirection) / comicDotSpacing;
-  float dotAA = clamp(0.5 * max(abs(dotDx.x) + abs(dotDy.x), abs(dotDx.y) + abs(dotDy.y)), 1e-4, 0.5);
-  float dotFade = stylizePatternFade(
-    max(length(vec2(dotDx.x, dotDy.x)), length(vec2(dotDx.y, dotDy.y))));
+  vec4 dotCell = comicDotCells(plane, planeJ, comicDotDirection);
+  vec2 dotUV = dotCell.xy;
+  float dotAA = dotCell.z;
+  float dotFade = dotCell.w;
   float dots = stylizeHalftoneDots(dotUV, tone, dotAA);
 #else
   float dots = tone;
@@ -416,17 +425,11 @@ void comicMain()
   float drawnInk = 1.0 - e;
   if (comicEmittedLayer == 1)
   {
-    vec2 turn = stylizeRotate(comicDotDirection,
-      vec2(cos(COMIC_FOG_SCREEN_ANGLE), sin(COMIC_FOG_SCREEN_ANGLE)));
-    vec2 fogUV = stylizeRotate(plane / comicDotSpacing, turn);
-    vec2 fogDx = stylizeRotate(planeJ[0], turn) / comicDotSpacing;
-    vec2 fogDy = stylizeRotate(planeJ[1], turn) / comicDotSpacing;
-    float fogAA = clamp(0.5 * max(abs(fogDx.x) + abs(fogDy.x), abs(fogDx.y) + abs(fogDy.y)), 1e-4, 0.5);
-    float fogFade = stylizePatternFade(
-      max(length(vec2(fogDx.x, fogDy.x)), length(vec2(fogDx.y, fogDy.y))));
+    vec4 fogCell = comicDotCells(plane, planeJ, stylizeRotate(comicDotDirection,
+      vec2(cos(COMIC_FOG_SCREEN_ANGLE), sin(COMIC_FOG_SCREEN_ANGLE))));
     float opacity = clamp(image.a, 0.0, 1.0);
-    float screen = 1.0 - stylizeHalftoneDots(fogUV, 1.0 - opacity, fogAA);
-    drawnAlpha = background ? 0.0 : mix(screen, opacity, fogFade);
+    float screen = 1.0 - stylizeHalftoneDots(fogCell.xy, 1.0 - opacity, fogCell.z);
+    drawnAlpha = background ? 0.0 : mix(screen, opacity, fogCell.w);
     drawnInk = background ? 0.0 : (1.0 - e) * drawnAlpha;
   }
   gl_FragData[0] = stylizeOutput(background, result, drawnAlpha, drawnInk);
