@@ -45,6 +45,17 @@ void WriteRGBA(vtkUnsignedCharArray* out, vtkIdType id, const double rgba[4], do
   out->SetTypedComponent(id, 3, static_cast<unsigned char>(std::lround(255.0 * a)));
 }
 
+/**
+ * The first step k at or past the point (its samples at steps 0.5 + k) in the image, the ray
+ * entering it at step `first`: a point of a surface closed past the image's faces (padded) lies
+ * outside it, where VTK's ray caster takes no samples (the image's values clamped there would
+ * add the faces' opacity again).
+ */
+int FirstInside(double first)
+{
+  return first > 0.5 ? static_cast<int>(std::ceil(std::min(first - 0.5, 1e9))) : 0;
+}
+
 /** The steps t (from the point, along di) of the ray inside the image's index box. */
 void RayExtent(const double ijk[3], const double di[3], const int e[6], const int dims[3],
   double& first, double& last)
@@ -458,8 +469,9 @@ struct FogRay
     bool within = false;
     bool through = false; // in solid material not drawn (too thin to look solid): fog
     double stop = 1e30;   // where the ray meets the solid surface drawn
-    int k = 0;
-    for (; 0.5 + k <= last && this->Rgba[3]<0.995; k += k> Settle ? this->Ahead(0.5 + k) : 1)
+    int k = FirstInside(first);
+    const int settle = k + Settle;
+    for (; 0.5 + k <= last && this->Rgba[3]<0.995; k += k> settle ? this->Ahead(0.5 + k) : 1)
     {
       const double sample = this->OpacityAt(0.5 + k, bin);
       if (sample < solid)
@@ -480,11 +492,11 @@ struct FogRay
       {
         break; // the solid surface drawn
       }
-      if (k > Settle && (sample >= level) != within)
+      if (k > settle && (sample >= level) != within)
       {
         break; // the haze's next layer
       }
-      within = k == Settle ? sample >= level : within;
+      within = k == settle ? sample >= level : within;
       this->Add(0.5 + k, bin);
     }
     // The whole ray's opacity (the nearest layer's points, and from the point on where the ray
@@ -670,7 +682,7 @@ bool vtkStylizeVolumeFog::SolidOpacity(vtkPolyData* surface, const Volume& v, do
     [&](vtkIdType id, FogRay& ray, double first, double last)
     {
       const double front = ray.Front(first);
-      const double chord = ray.Chord(0.5, last, solid);
+      const double chord = ray.Chord(0.5 + FirstInside(first), last, solid);
       out->SetValue(id, static_cast<float>(front + (1.0 - front) * chord));
     });
   return true;

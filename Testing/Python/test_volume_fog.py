@@ -114,6 +114,14 @@ def scene(haze, mode, azimuth=0.0, unstructured=False, white=False):
     camera.ParallelProjectionOn()
     camera.SetParallelScale(N / 2.0)
     ren.ResetCameraClippingRange()
+    ren.SetPass(pixelated(haze, mode))
+    camera.Azimuth(azimuth)
+    return win
+
+
+def pixelated(haze, mode):
+    """Pixel art's PIXELATED layer at one screen pixel per art pixel, no edges: the layers
+    blended by their opacity."""
     style = vtkstylize.vtkPixelArtPass()
     style.SetLayer(vtkstylize.vtkPixelArtPass.PIXELATED)
     style.SetPixelSize(1)
@@ -122,9 +130,7 @@ def scene(haze, mode, azimuth=0.0, unstructured=False, white=False):
     style.SetNormalEdges(False)
     style.SetVolumeHaze(haze)
     style.SetVolumeHazeMode(mode)
-    ren.SetPass(style)
-    camera.Azimuth(azimuth)
-    return win
+    return style
 
 
 def grab(win, size=N):
@@ -207,6 +213,54 @@ unlit = grab(scene(1.0, FOG_MODE, unstructured=True, white=True))[centre]
 print("white shaded fog over the white core: %.0f (image's mapper, lit), %.0f (unstructured, "
       "unlit)" % (lit, unlit))
 check(lit < 200 and unlit > 240, "the fog lit for the image's mapper only")
+
+# A slab of fog that fills its image (5 units thick, 0.05 per unit, black): the haze's surface
+# is closed past the image's faces (padded), its points outside the image, where VTK takes no
+# samples. Seen along -z and 30 degrees from it, A = 1 - 0.95^(5 / cos): 0.226 and 0.256. Before
+# the march began where the ray enters the image, the faces' values clamped outside it added
+# 0.04 (0.267) and 0.03 (0.282).
+def slab(elevation):
+    """The slab's picture (red channel) in the fog and without it (VolumeHaze 0)."""
+    image = vtkImageData()
+    image.SetDimensions(40, 40, 6)
+    image.SetOrigin(-19.5, -19.5, 0.0)
+    values = np.full((6, 40, 40), 100.0, np.float32)
+    values[:, :4, :4] = 0.0  # (a corner empty: the haze has a surface, not the image's faces)
+    array = numpy_to_vtk(values.ravel(), deep=True)
+    array.SetName("value")
+    image.GetPointData().SetScalars(array)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(0.0, 0.0)
+    opacity.AddPoint(100.0, FOG)
+    colour = vtkColorTransferFunction()
+    colour.AddRGBPoint(0.0, 0.0, 0.0, 0.0)
+    colour.AddRGBPoint(100.0, 0.0, 0.0, 0.0)
+    mapper = vtkFixedPointVolumeRayCastMapper()
+    mapper.SetInputData(image)
+    pictures = []
+    for haze in (1.0, 0.0):
+        win, ren = volume_window(mapper, opacity, colour, 1.0, N)
+        camera = ren.GetActiveCamera()
+        camera.SetFocalPoint(0.0, 0.0, 2.5)
+        camera.SetPosition(0.0, 0.0, 202.5)
+        camera.SetViewUp(0.0, 1.0, 0.0)
+        camera.ParallelProjectionOn()
+        camera.SetParallelScale(10.0)
+        camera.Elevation(elevation)
+        ren.ResetCameraClippingRange()
+        ren.SetPass(pixelated(haze, FOG_MODE))
+        pictures.append(grab(win))
+    return pictures
+
+
+for elevation in (0.0, 30.0):
+    fogged, bare = slab(elevation)
+    measured = 1.0 - fogged[N // 2, N // 2] / max(bare[N // 2, N // 2], 1.0)
+    expected = 1.0 - (1.0 - FOG) ** (5.0 / math.cos(math.radians(elevation)))
+    print("slab filling its image, %g degrees: opacity %.3f, expected %.3f"
+          % (elevation, measured, expected))
+    check(abs(measured - expected) <= 0.012, "slab filling its image, %g degrees: opacity %.3f, "
+          "expected %.3f +- 0.012" % (elevation, measured, expected))
 
 
 # A soft ball (the scalar 1 - r, opacity 0 to 0.6 per 0.2 units of it: solid, at the style's
