@@ -505,6 +505,7 @@ bool vtkStylizeGBufferPass::RenderGeometry(const vtkRenderState* s)
   this->AttachTextures(w, h);
   this->Internals->View->DeepCopy(ren->GetActiveCamera()->GetModelViewTransformMatrix());
   vtkMatrix4x4::Invert(this->Internals->View, this->Internals->InverseView);
+  ren->GetActiveCamera()->GetClippingRange(this->Internals->ClippingRange);
   if (this->SceneFromImage)
   {
     this->Internals->ImagePath->Render(s, this, renWin, w, h, this->Internals->InverseView);

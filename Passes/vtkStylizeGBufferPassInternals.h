@@ -25,6 +25,7 @@ public:
   vtkStylizeScreenQuad CompositeQuad;
   vtkNew<vtkMatrix4x4> InverseView;
   vtkNew<vtkMatrix4x4> View;
+  double ClippingRange[2] = { 0.1, 1000.0 }; // (the camera's, for the frame's props)
   vtkNew<vtkMatrix4x4> InverseModel;
   vtkNew<vtkMatrix4x4> Product;
 };

@@ -5,15 +5,19 @@
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkProp3D.h"
 #include "vtkShaderProgram.h"
 #include "vtkStylizeDepthPeeler.h"
 #include "vtkStylizeGBufferPassInternals.h"
 #include "vtkStylizeShaderUtilities.h"
+#include "vtkStylizeVolumeSolidCut.h"
 
 #include "vtkStylizeGBufferDirectionFS.h"
 #include "vtkStylizeGBufferImpl.h"
 
+#include <cmath>
 #include <cstring>
 #include <sstream>
 #include <string>
@@ -23,6 +27,11 @@ namespace
 const char* const GBufferTag = "//VTK::StylizeGBuffer::Impl";
 // The DIRECTION channel's attribute on the helpers of VTK's composite data mapper.
 const char* const TangentDeclaration = "in vec3 tangentMC; // the DIRECTION channel's source\n";
+// How far behind a volume's cut solid surface it looks solid (in the prop's coordinates, times
+// stylizeLooksSolidScale in the view's), and the camera's clipping range (the window depth).
+const std::string LooksSolidDeclaration = "in float stylizeLooksSolidVSOutput;\n"
+                                          "uniform float stylizeLooksSolidScale;\n"
+                                          "uniform vec2 stylizeClippingRange;\n";
 
 /**
  * The channels beyond the colour, in attachment order: the bit that requests each and the name
@@ -78,6 +87,21 @@ bool vtkStylizeGBufferPass::PreReplaceShaderValues(std::string& vertexShader, st
           "  stylizeDirOffVSOutput = stylizeDirVC.xxy * stylizeDirVC.yzz;\n",
         false);
     }
+    // A volume's solid surface cut to where it looks solid (vtkStylizeVolumeSolidCut) stores the
+    // depth of where its view ray's opacity reaches one half: opaque geometry in the material in
+    // front of that (streamlines through a glowing region) shows through, as in VTK's picture.
+    auto* polyMapper = vtkPolyDataMapper::SafeDownCast(mapper);
+    vtkPolyData* input = polyMapper ? polyMapper->GetInput() : nullptr;
+    if (input && input->GetPointData()->GetArray(vtkStylizeVolumeSolidCut::LooksSolidAt))
+    {
+      vtkShaderProgram::Substitute(vertexShader, "//VTK::System::Dec",
+        "//VTK::System::Dec\nin float stylizeLooksSolid;\nout float stylizeLooksSolidVSOutput;\n",
+        false);
+      vtkShaderProgram::Substitute(vertexShader, "//VTK::PositionVC::Impl",
+        "//VTK::PositionVC::Impl\n  stylizeLooksSolidVSOutput = stylizeLooksSolid;\n", false);
+      vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
+        "//VTK::System::Dec\n" + LooksSolidDeclaration, false);
+    }
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
       std::string("//VTK::Light::Impl\n  ") + GBufferTag, false);
   }
@@ -106,15 +130,45 @@ bool vtkStylizeGBufferPass::PostReplaceShaderValues(std::string& vertexShader,
   // (VTK's template names gl_FragDepth in a comment: look for an assignment)
   std::string depth =
     fragmentShader.find("gl_FragDepth =") != std::string::npos ? "gl_FragDepth" : "gl_FragCoord.z";
+  // (a volume's cut solid: the window depth where it looks solid, never in front of its own)
+  const bool looksSolid =
+    surface && fragmentShader.find(LooksSolidDeclaration) != std::string::npos;
+  if (looksSolid)
+  {
+    // (the window depth's change from the fragment to there, added to its own)
+    if (fragmentShader.find("uniform int cameraParallel;") == std::string::npos)
+    {
+      vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
+        "//VTK::System::Dec\nuniform int cameraParallel;\n", false);
+    }
+    // (normalized device z: (f + n) / (f - n) + 2 f n / ((f - n) z) for a perspective view,
+    // -(2 z + f + n) / (f - n) for a parallel one; z < 0 the view coordinate)
+    code += "  vec3 stylizeRayVC = cameraParallel == 1 ? vec3(0.0, 0.0, -1.0) : "
+            "normalize(vertexVC.xyz);\n"
+            "  float stylizeSolidVCz = vertexVC.z + stylizeRayVC.z * stylizeLooksSolidScale * "
+            "max(stylizeLooksSolidVSOutput, 0.0);\n"
+            "  float stylizeNear = stylizeClippingRange.x, stylizeFar = stylizeClippingRange.y;\n"
+            "  float stylizeDeeper = cameraParallel == 1 ? -(stylizeSolidVCz - vertexVC.z) / "
+            "(stylizeFar - stylizeNear) : stylizeFar * stylizeNear / (stylizeFar - stylizeNear) * "
+            "(1.0 / min(stylizeSolidVCz, -1e-30) - 1.0 / min(vertexVC.z, -1e-30));\n"
+            "  float stylizeLooksSolidZ = clamp(gl_FragCoord.z + stylizeDeeper, gl_FragCoord.z, "
+            "1.0);\n"
+            "  gl_FragDepth = stylizeLooksSolidZ;\n";
+    depth = "gl_FragDepth";
+  }
   if (this->LogarithmicDepth)
   {
     vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
       "//VTK::System::Dec\nuniform vec2 stylizeLogDepthRange;\n", false);
-    const std::string z = surface ? "-vertexVC.z"
-                                  : "(2.0 * stylizeLogDepthRange.x * stylizeLogDepthRange.y / "
-                                    "(stylizeLogDepthRange.y + stylizeLogDepthRange.x - "
-                                    "(2.0 * gl_FragCoord.z - 1.0) * (stylizeLogDepthRange.y - "
-                                    "stylizeLogDepthRange.x)))";
+    const std::string window = looksSolid ? "stylizeLooksSolidZ" : "gl_FragCoord.z";
+    const std::string z = surface && !looksSolid
+      ? "-vertexVC.z"
+      : "(2.0 * stylizeLogDepthRange.x * stylizeLogDepthRange.y / "
+        "(stylizeLogDepthRange.y + stylizeLogDepthRange.x - "
+        "(2.0 * " +
+        window +
+        " - 1.0) * (stylizeLogDepthRange.y - "
+        "stylizeLogDepthRange.x)))";
     code += "  gl_FragDepth = clamp(log(max(" + z +
       ", stylizeLogDepthRange.x) / stylizeLogDepthRange.x) / log(stylizeLogDepthRange.y / "
       "stylizeLogDepthRange.x), 0.0, 1.0);\n";
@@ -282,6 +336,18 @@ bool vtkStylizeGBufferPass::SetShaderParameters(
       }
     }
     program->SetUniformMatrix3x3("stylizeDirectionMCVC", columns);
+  }
+  if (program->IsUniformUsed("stylizeClippingRange"))
+  {
+    const float range[2] = { static_cast<float>(this->Internals->ClippingRange[0]),
+      static_cast<float>(this->Internals->ClippingRange[1]) };
+    program->SetUniform2f("stylizeClippingRange", range);
+  }
+  if (program->IsUniformUsed("stylizeLooksSolidScale"))
+  {
+    // the prop's length scale (its matrix's, taken as uniform)
+    const double det = prop3D ? std::abs(prop3D->GetMatrix()->Determinant()) : 1.0;
+    program->SetUniformf("stylizeLooksSolidScale", static_cast<float>(std::cbrt(det)));
   }
   if (program->IsUniformUsed("stylizeVCToMC"))
   {

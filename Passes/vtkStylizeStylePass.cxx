@@ -360,7 +360,8 @@ void vtkStylizeStylePass::Render(const vtkRenderState* original)
   const vtkRenderState* s = this->StylizeVolumes && !original->GetRenderer()->GetSelector()
     ? volumes.Begin(original, threshold, std::isfinite(this->VolumeHaze) ? this->VolumeHaze : 0.0,
         this->VolumeHazeMode == HAZE_FOG, this->Internals->GBuffer->GetController(),
-        this->GetVolumeOutlineWidth(original->GetRenderer()))
+        this->GetVolumeOutlineWidth(original->GetRenderer()),
+        this->Internals->GBuffer->GetSceneImagePass() == nullptr)
     : original;
   s = this->SeparateAnnotations(s);
   Frame frame;

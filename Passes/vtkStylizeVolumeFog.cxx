@@ -28,6 +28,8 @@ namespace
 {
 /** The fog's steps (half samples) from a haze point before the side of the haze is read. */
 constexpr int Settle = 3;
+/** The samples of material past where a chord looks solid that its depth needs (Chord()). */
+constexpr int Margin = 2;
 
 /** The steps either side of a solid sample within which the solid surface drawn is sought. */
 constexpr double Near = 4.0;
@@ -355,16 +357,19 @@ struct FogRay
    * The opacity of the solid material the ray crosses from step t (up to step `last`): from its
    * first sample at least `solid` within 2 Settle steps (t may lie on the material's boundary,
    * which a resampled image places up to a sample away), the samples on while at least `solid`,
-   * composited as VTK does, up to vtkStylizeVolumeFog::Thick.
+   * composited as VTK does, up to vtkStylizeVolumeFog::Thick. With `reached`: the step of the
+   * first sample where it reaches `target`, when the material goes on for Margin samples past
+   * it, else 0.
    */
-  double Chord(double t, double last, double solid) const
+  double Chord(
+    double t, double last, double solid, double target = 2.0, double* reached = nullptr) const
   {
     int bin = 0, k = 0;
     while (k < 2 * Settle && t + k <= last && this->OpacityAt(t + k, bin) < solid)
     {
       ++k;
     }
-    double a = 0.0;
+    double a = 0.0, found = -1.0;
     for (; t + k <= last && a < vtkStylizeVolumeFog::Thick; ++k)
     {
       if (!(this->OpacityAt(t + k, bin) >= solid) || bin < 0)
@@ -372,6 +377,18 @@ struct FogRay
         break;
       }
       a += this->Step[bin] * (1.0 - a);
+      found = found < 0.0 && a >= target ? t + k : found;
+    }
+    if (reached)
+    {
+      // (only where the material goes on for Margin samples past it: a depth there stays in
+      // front of the material's far side, the surface's own back)
+      bool on = found >= 0.0;
+      for (int m = 1; on && m <= Margin; ++m)
+      {
+        on = found + m <= last && this->OpacityAt(found + m, bin) >= solid && bin >= 0;
+      }
+      *reached = on ? found : 0.0;
     }
     return a;
   }
@@ -668,7 +685,7 @@ bool vtkStylizeVolumeFog::Accumulate(vtkPolyData* haze, const Volume& v, double 
 
 //------------------------------------------------------------------------------
 bool vtkStylizeVolumeFog::SolidOpacity(vtkPolyData* surface, const Volume& v, double solid,
-  const double eye[3], const double dop[3], bool parallel, vtkFloatArray* out)
+  const double eye[3], const double dop[3], bool parallel, vtkFloatArray* out, vtkFloatArray* reach)
 {
   const vtkIdType n = surface->GetNumberOfPoints();
   Rays r;
@@ -678,12 +695,26 @@ bool vtkStylizeVolumeFog::SolidOpacity(vtkPolyData* surface, const Volume& v, do
   }
   out->SetNumberOfComponents(1);
   out->SetNumberOfTuples(n);
+  if (reach)
+  {
+    reach->SetNumberOfComponents(1);
+    reach->SetNumberOfTuples(n);
+  }
   this->ForRays(surface, v, r, eye, dop, parallel,
     [&](vtkIdType id, FogRay& ray, double first, double last)
     {
       const double front = ray.Front(first);
-      const double chord = ray.Chord(0.5 + FirstInside(first), last, solid);
+      // (the chord's share that brings the whole to LooksSolid; none when the front does)
+      const double target = front < LooksSolid ? (LooksSolid - front) / (1.0 - front) : 0.0;
+      double at = 0.0;
+      const double chord =
+        ray.Chord(0.5 + FirstInside(first), last, solid, target, reach ? &at : nullptr);
       out->SetValue(id, static_cast<float>(front + (1.0 - front) * chord));
+      if (reach)
+      {
+        at = front < LooksSolid && std::isfinite(at) ? std::max(at, 0.0) : 0.0;
+        reach->SetValue(id, static_cast<float>(at * r.Step));
+      }
     });
   return true;
 }

@@ -104,10 +104,13 @@ public:
    * the point, then, from the first sample at least `solid` within a few steps, the samples on
    * while at least `solid`, composited as VTK does, up to Thick. The surface is drawn where this
    * reaches LooksSolid (VTK's picture there is at least half opaque); below, the fog goes through
-   * the material. Written as `out`. False when the image cannot be sampled so.
+   * the material. Written as `out`; with `reach`, per point the distance along its view ray (in
+   * the image's coordinates) to where it reaches LooksSolid (0 when the fog in front of the point
+   * does, or the material ends within two samples past it): opaque geometry in front of that
+   * shows through the material, as in VTK's picture. False when the image cannot be sampled so.
    */
   bool SolidOpacity(vtkPolyData* surface, const Volume& volume, double solid, const double eye[3],
-    const double dop[3], bool parallel, vtkFloatArray* out);
+    const double dop[3], bool parallel, vtkFloatArray* out, vtkFloatArray* reach = nullptr);
 
   /**
    * Data that is not an image (or with cell scalars) is sampled for the fog on an image of this

@@ -23,16 +23,20 @@ namespace
 {
 /**
  * `fine` cut where `chords` (per point) reaches vtkStylizeVolumeFog::LooksSolid, the part at or
- * above it as `clip`'s output (`copy`: `fine` with the chords, its input), with `fine`'s
- * scalars active again (the surface's colours). (VTK 9.1's vtkClipPolyData clips by the active
- * scalars alone.)
+ * above it as `clip`'s output (`copy`: `fine` with the chords and `reach` or null, its input), with
+ * `fine`'s scalars active again (the surface's colours). (VTK 9.1's vtkClipPolyData clips by the
+ * active scalars alone.)
  */
-void ClipByChords(
-  vtkPolyData* fine, vtkFloatArray* chords, vtkPolyData* copy, vtkClipPolyData* clip)
+void ClipByChords(vtkPolyData* fine, vtkFloatArray* chords, vtkFloatArray* reach, vtkPolyData* copy,
+  vtkClipPolyData* clip)
 {
   vtkDataArray* values = fine->GetPointData()->GetScalars();
   copy->ShallowCopy(fine);
   vtkPointData* data = copy->GetPointData();
+  if (reach)
+  {
+    data->AddArray(reach);
+  }
   data->SetActiveAttribute(data->AddArray(chords), vtkDataSetAttributes::SCALARS);
   clip->SetValue(vtkStylizeVolumeFog::LooksSolid);
   clip->SetInputData(copy);
@@ -62,7 +66,7 @@ vtkStylizeVolumeSolidCut::~vtkStylizeVolumeSolidCut() = default;
 //------------------------------------------------------------------------------
 bool vtkStylizeVolumeSolidCut::Cut(vtkPolyData* solid, vtkDataSet* data, vtkStylizeVolumeFog& fog,
   const vtkStylizeVolumeFog::Volume& volume, double level, const double eye[3], const double dop[3],
-  bool parallel)
+  bool parallel, bool reach)
 {
   if (solid->GetNumberOfPolys() == 0)
   {
@@ -71,11 +75,14 @@ bool vtkStylizeVolumeSolidCut::Cut(vtkPolyData* solid, vtkDataSet* data, vtkStyl
   vtkPolyData* fine = FogSurface(solid, data, volume.Image, this->Fine, this->FineTime);
   vtkNew<vtkFloatArray> chords;
   chords->SetName("StylizeSolidChord");
-  if (!fog.SolidOpacity(fine, volume, level, eye, dop, parallel, chords))
+  vtkNew<vtkFloatArray> reached;
+  reached->SetName(LooksSolidAt);
+  if (!fog.SolidOpacity(
+        fine, volume, level, eye, dop, parallel, chords, reach ? reached.GetPointer() : nullptr))
   {
     return false;
   }
-  ClipByChords(fine, chords, this->Chords, this->Looks);
+  ClipByChords(fine, chords, reach ? reached.GetPointer() : nullptr, this->Chords, this->Looks);
   this->Drawn->SetDataSet(this->Looks->GetOutput());
   if (this->Looks->GetOutput()->GetNumberOfCells() > 0)
   {

@@ -39,11 +39,20 @@ public:
    * that `fog` samples as `volume`) to where it looks solid along the view rays from `eye` (or
    * along `dop`, parallel), in the image's coordinates. False when the image cannot be sampled
    * or the surface is empty: then the whole surface is drawn and the fog stops at the first
-   * solid sample.
+   * solid sample. With `reach`, the surface kept has the point array LooksSolidAt.
    */
   bool Cut(vtkPolyData* solid, vtkDataSet* data, vtkStylizeVolumeFog& fog,
     const vtkStylizeVolumeFog::Volume& volume, double level, const double eye[3],
-    const double dop[3], bool parallel);
+    const double dop[3], bool parallel, bool reach = false);
+
+  /**
+   * The point array of the surface Cut() keeps: per point, the distance along its view ray (in
+   * the image's coordinates) to where it reaches vtkStylizeVolumeFog::LooksSolid
+   * (vtkStylizeVolumeFog::SolidOpacity()'s `reach`). The G-buffer stores the depth there
+   * (vtkStylizeGBufferPass, the attribute stylizeLooksSolid): opaque geometry inside the
+   * material in front of it shows through.
+   */
+  static constexpr const char* LooksSolidAt = "StylizeLooksSolidAt";
 
   /** The surface Cut() kept, to draw (valid after it returned true). */
   vtkAlgorithmOutput* GetOutputPort();

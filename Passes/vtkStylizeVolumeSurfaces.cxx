@@ -73,6 +73,7 @@ struct vtkStylizeVolumeSurfaces::Proxy
   // and the haze as the fog samples it (vtkStylizeVolumeSolidCut::FogSurface()).
   vtkStylizeVolumeSolidCut Cut;
   bool Clipped = false;
+  bool SolidDepth = false; // (where it looks solid kept for the G-buffer: Begin()'s solidDepth)
   // On several processes, each drawing its piece: the whole volume's solid surface (from the
   // gathered image) cut by the same rule, where the fog asks (the same on every process).
   vtkNew<vtkStylizeVolumeSurface> WholeSolid;
@@ -293,8 +294,9 @@ vtkAbstractCellLocator* vtkStylizeVolumeSurfaces::CutSolid(Proxy& p, vtkDataSet*
   vtkImageData* gathered, const vtkStylizeVolumeFog::Volume& volume, double solid,
   const double eye[3], const double dop[3], bool parallel)
 {
-  p.Clipped =
-    p.Cut.Cut(p.Solid.Surface->GetOutput(), data, p.Fog, volume, solid, eye, dop, parallel);
+  // (where it looks solid along the rays, for the G-buffer's depth: Begin()'s solidDepth)
+  p.Clipped = p.Cut.Cut(
+    p.Solid.Surface->GetOutput(), data, p.Fog, volume, solid, eye, dop, parallel, p.SolidDepth);
   if (!p.Clipped || !gathered)
   {
     return p.Clipped ? p.Cut.GetLocator() : nullptr;
@@ -534,6 +536,9 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
       part->Actor->SetUserMatrix(slot->Matrix);
       part->Actor->PickableOff();
     }
+    // (the cut solid's depth: where it looks solid, vtkStylizeGBufferPass's stylizeLooksSolid)
+    slot->Solid.Mapper->MapDataArrayToVertexAttribute("stylizeLooksSolid",
+      vtkStylizeVolumeSolidCut::LooksSolidAt, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
     // (the fog's outline: black lines, unlit, not coloured by the array)
     slot->Nearest->SetInputArrayToProcess(
       0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "StylizeHazeWhole");
@@ -556,6 +561,7 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
     slot->Outline->GetProperty()->LightingOff();
   }
   Proxy& p = *slot;
+  p.SolidDepth = this->SolidDepth;
   vtkAbstractVolumeMapper* mapper = volume->GetMapper();
   vtkVolumeProperty* property = volume->GetProperty();
 
@@ -652,8 +658,9 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
 
 //------------------------------------------------------------------------------
 const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, double threshold,
-  double haze, bool fog, vtkMultiProcessController* controller, double outline)
+  double haze, bool fog, vtkMultiProcessController* controller, double outline, bool solidDepth)
 {
+  this->SolidDepth = solidDepth && !controller;
 
   this->End();
   this->Count = 0;

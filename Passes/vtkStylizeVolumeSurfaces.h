@@ -67,10 +67,15 @@ public:
    * processes call Begin()). `outline` (a line width in pixels, 0: none): with the fog, the
    * outline of where the volume looks solid (the whole view ray's opacity, as VTK accumulates
    * it, reaches one half) drawn as black lines on the haze's nearest layer, the haze's own
-   * outline then left out (FOG_SHELL).
+   * outline then left out (FOG_SHELL). `solidDepth`: with the fog, the solid surface carries
+   * where its view rays look solid (vtkStylizeVolumeSolidCut::LooksSolidAt), the depth the
+   * G-buffer stores for it, so that opaque geometry inside its material in front of that shows
+   * through as in VTK's picture: for a G-buffer that draws the props itself, without a
+   * controller (under ParaView's, 2 ranks and 1 disagreed: docs/gbuffer.md).
    */
   const vtkRenderState* Begin(const vtkRenderState* s, double threshold, double haze = 0.0,
-    bool fog = false, vtkMultiProcessController* controller = nullptr, double outline = 0.0);
+    bool fog = false, vtkMultiProcessController* controller = nullptr, double outline = 0.0,
+    bool solidDepth = false);
 
   /**
    * Adds the surfaces of the volumes last drawn as surfaces to `ren`'s props, without updating
@@ -175,6 +180,7 @@ private:
   std::unique_ptr<vtkRenderState> State;
   vtkRenderer* Renderer = nullptr;
   int Count = 0;
+  bool SolidDepth = false; // (Begin()'s solidDepth)
 
   vtkStylizeVolumeSurfaces(const vtkStylizeVolumeSurfaces&) = delete;
   void operator=(const vtkStylizeVolumeSurfaces&) = delete;

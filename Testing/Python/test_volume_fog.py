@@ -34,7 +34,9 @@ import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401 (the volume mappers' f
 import vtkstylize
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkVolume,
+from vtkmodules.vtkFiltersSources import vtkPlaneSource
+from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkPolyDataMapper,
+                                         vtkRenderer, vtkVolume,
                                          vtkVolumeProperty, vtkWindowToImageFilter)
 from vtkmodules.vtkFiltersCore import vtkAppendFilter
 from vtkmodules.vtkRenderingVolume import (vtkFixedPointVolumeRayCastMapper,
@@ -261,6 +263,75 @@ for elevation in (0.0, 30.0):
           % (elevation, measured, expected))
     check(abs(measured - expected) <= 0.012, "slab filling its image, %g degrees: opacity %.3f, "
           "expected %.3f +- 0.012" % (elevation, measured, expected))
+
+# Opaque geometry inside solid material (streamlines through a glowing region): VTK shows it
+# through the material in front of it. A slab of white material 20 units thick (0.2 per unit:
+# solid at the styles' threshold, its front face the solid surface drawn) holds a blue square 1
+# unit behind its front face (seen through an opacity of 0.2) and a red one 8 units behind it
+# (0.83). The solid surface stores the depth where the view ray's opacity reaches one half (3.1
+# units in): the blue square shows in the style, the red one stays hidden. Before, the solid
+# surface hid both.
+def buried_squares(style):
+    """The slab with its squares (RGB), drawn by VTK or `style`."""
+    image = vtkImageData()
+    image.SetDimensions(40, 40, 21)
+    image.SetOrigin(-19.5, -19.5, 0.0)
+    array = numpy_to_vtk(np.full(40 * 40 * 21, 100.0, np.float32), deep=True)
+    array.SetName("value")
+    image.GetPointData().SetScalars(array)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(0.0, 0.0)
+    opacity.AddPoint(100.0, 0.2)
+    colour = vtkColorTransferFunction()
+    colour.AddRGBPoint(0.0, 1.0, 1.0, 1.0)
+    colour.AddRGBPoint(100.0, 1.0, 1.0, 1.0)
+    mapper = vtkFixedPointVolumeRayCastMapper()
+    mapper.SetInputData(image)
+    win, ren = volume_window(mapper, opacity, colour, 1.0, N)
+    for x, z, rgb in ((-8.0, 19.0, (0.0, 0.0, 1.0)), (8.0, 12.0, (1.0, 0.0, 0.0))):
+        square = vtkPlaneSource()
+        square.SetOrigin(x - 4.0, -4.0, z)
+        square.SetPoint1(x + 4.0, -4.0, z)
+        square.SetPoint2(x - 4.0, 4.0, z)
+        square_mapper = vtkPolyDataMapper()
+        square_mapper.SetInputConnection(square.GetOutputPort())
+        actor = vtkActor()
+        actor.SetMapper(square_mapper)
+        actor.GetProperty().SetColor(*rgb)
+        actor.GetProperty().SetAmbient(1.0)
+        actor.GetProperty().SetDiffuse(0.0)
+        ren.AddActor(actor)
+    camera = ren.GetActiveCamera()
+    camera.SetFocalPoint(0.0, 0.0, 10.0)
+    camera.SetPosition(0.0, 0.0, 210.0)
+    camera.SetViewUp(0.0, 1.0, 0.0)
+    camera.ParallelProjectionOn()
+    camera.SetParallelScale(20.0)
+    ren.ResetCameraClippingRange()
+    if style:
+        ren.SetPass(style)
+    w2i = vtkWindowToImageFilter()
+    w2i.SetInput(win)
+    w2i.ReadFrontBufferOff()
+    w2i.Update()
+    pixels = vtk_to_numpy(w2i.GetOutput().GetPointData().GetScalars()).reshape(N, N, -1)
+    return pixels[:, :, :3].astype(float)
+
+
+# (each square's pixel against the material's between them, the levels' differences summed: VTK's
+# 408 for the blue one, 86 for the red one, 17% of it showing)
+blue_at, red_at = (N // 2, N // 2 - int(8 * N / 40)), (N // 2, N // 2 + int(8 * N / 40))
+for name, style in (("VTK", None), ("pixel art", pixelated(1.0, FOG_MODE)),
+                    ("comic", vtkstylize.vtkComicPass()), ("sketch", vtkstylize.vtkSketchPass())):
+    picture = buried_squares(style)
+    material = picture[N // 2, N // 2]
+    blue, red = (float(np.abs(picture[at] - material).sum()) for at in (blue_at, red_at))
+    print("squares in solid material, %s: the blue one 1 unit in differs by %.0f, the red one "
+          "8 units in by %.0f" % (name, blue, red))
+    check(blue > 200, "%s: the square in front of where the material looks solid must show "
+          "(%.0f)" % (name, blue))
+    check(red < 100, "%s: the square behind where the material looks solid must stay hidden "
+          "(%.0f)" % (name, red))
 
 
 # A soft ball (the scalar 1 - r, opacity 0 to 0.6 per 0.2 units of it: solid, at the style's
