@@ -84,6 +84,28 @@ def volume_window(mapper, opacity, colour, unit, size, background=1.0, shade=Fal
     return win, ren
 
 
+def ramp_volume(values, origin, spacing, top, top_opacity, rgb, unit, size, background=1.0):
+    """volume_window() of the image of `values` (z, y, x) at `origin` and `spacing`, drawn by
+    fixed-point ray casting: its opacity rising from 0 at 0 to `top_opacity` at `top`, all in
+    colour `rgb`."""
+    image = vtkImageData()
+    image.SetDimensions(values.shape[2], values.shape[1], values.shape[0])
+    image.SetOrigin(*origin)
+    image.SetSpacing(*spacing)
+    array = numpy_to_vtk(values.ravel().astype(np.float32), deep=True)
+    array.SetName("value")
+    image.GetPointData().SetScalars(array)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(0.0, 0.0)
+    opacity.AddPoint(top, top_opacity)
+    colour = vtkColorTransferFunction()
+    colour.AddRGBPoint(0.0, *rgb)
+    colour.AddRGBPoint(top, *rgb)
+    mapper = vtkFixedPointVolumeRayCastMapper()
+    mapper.SetInputData(image)
+    return volume_window(mapper, opacity, colour, unit, size, background)
+
+
 def scene(haze, mode, azimuth=0.0, unstructured=False, white=False):
     """The window of the ball in pixel art's PIXELATED layer, seen along -z (turned by `azimuth`
     degrees about the ball's centre); `unstructured`: the ball as an unstructured grid of
@@ -223,25 +245,12 @@ check(lit < 200 and unlit > 240, "the fog lit for the image's mapper only")
 # 0.04 (0.267) and 0.03 (0.282).
 def slab(elevation):
     """The slab's picture (red channel) in the fog and without it (VolumeHaze 0)."""
-    image = vtkImageData()
-    image.SetDimensions(40, 40, 6)
-    image.SetOrigin(-19.5, -19.5, 0.0)
-    values = np.full((6, 40, 40), 100.0, np.float32)
+    values = np.full((6, 40, 40), 100.0)
     values[:, :4, :4] = 0.0  # (a corner empty: the haze has a surface, not the image's faces)
-    array = numpy_to_vtk(values.ravel(), deep=True)
-    array.SetName("value")
-    image.GetPointData().SetScalars(array)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(0.0, 0.0)
-    opacity.AddPoint(100.0, FOG)
-    colour = vtkColorTransferFunction()
-    colour.AddRGBPoint(0.0, 0.0, 0.0, 0.0)
-    colour.AddRGBPoint(100.0, 0.0, 0.0, 0.0)
-    mapper = vtkFixedPointVolumeRayCastMapper()
-    mapper.SetInputData(image)
     pictures = []
     for haze in (1.0, 0.0):
-        win, ren = volume_window(mapper, opacity, colour, 1.0, N)
+        win, ren = ramp_volume(values, (-19.5, -19.5, 0.0), (1.0, 1.0, 1.0), 100.0, FOG,
+                               (0.0, 0.0, 0.0), 1.0, N)
         camera = ren.GetActiveCamera()
         camera.SetFocalPoint(0.0, 0.0, 2.5)
         camera.SetPosition(0.0, 0.0, 202.5)
@@ -273,21 +282,8 @@ for elevation in (0.0, 30.0):
 # surface hid both.
 def buried_squares(style):
     """The slab with its squares (RGB), drawn by VTK or `style`."""
-    image = vtkImageData()
-    image.SetDimensions(40, 40, 21)
-    image.SetOrigin(-19.5, -19.5, 0.0)
-    array = numpy_to_vtk(np.full(40 * 40 * 21, 100.0, np.float32), deep=True)
-    array.SetName("value")
-    image.GetPointData().SetScalars(array)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(0.0, 0.0)
-    opacity.AddPoint(100.0, 0.2)
-    colour = vtkColorTransferFunction()
-    colour.AddRGBPoint(0.0, 1.0, 1.0, 1.0)
-    colour.AddRGBPoint(100.0, 1.0, 1.0, 1.0)
-    mapper = vtkFixedPointVolumeRayCastMapper()
-    mapper.SetInputData(image)
-    win, ren = volume_window(mapper, opacity, colour, 1.0, N)
+    win, ren = ramp_volume(np.full((21, 40, 40), 100.0), (-19.5, -19.5, 0.0), (1.0, 1.0, 1.0),
+                           100.0, 0.2, (1.0, 1.0, 1.0), 1.0, N)
     for x, z, rgb in ((-8.0, 19.0, (0.0, 0.0, 1.0)), (8.0, 12.0, (1.0, 0.0, 0.0))):
         square = vtkPlaneSource()
         square.SetOrigin(x - 4.0, -4.0, z)
@@ -346,23 +342,10 @@ def soft_ball(style=None, background=1.0):
     n = 48
     g = np.linspace(-1.0, 1.0, n)
     z, y, x = np.meshgrid(g, g, g, indexing="ij")
-    image = vtkImageData()
-    image.SetDimensions(n, n, n)
-    image.SetOrigin(-1.0, -1.0, -1.0)
-    image.SetSpacing(2.0 / (n - 1), 2.0 / (n - 1), 2.0 / (n - 1))
     values = np.clip(1.0 - np.sqrt(x * x + y * y + z * z), 0.0, 1.0)
-    array = numpy_to_vtk(values.ravel().astype(np.float32), deep=True)
-    array.SetName("value")
-    image.GetPointData().SetScalars(array)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(0.0, 0.0)
-    opacity.AddPoint(1.0, 0.6)
-    colour = vtkColorTransferFunction()
-    colour.AddRGBPoint(0.0, 0.8, 0.3, 0.2)
-    colour.AddRGBPoint(1.0, 0.8, 0.3, 0.2)
-    mapper = vtkFixedPointVolumeRayCastMapper()
-    mapper.SetInputData(image)
-    win, ren = volume_window(mapper, opacity, colour, 0.2, S, background)
+    step = 2.0 / (n - 1)
+    win, ren = ramp_volume(values, (-1.0, -1.0, -1.0), (step, step, step), 1.0, 0.6,
+                           (0.8, 0.3, 0.2), 0.2, S, background)
     camera = ren.GetActiveCamera()
     camera.SetPosition(0.0, 0.0, 10.0)
     camera.SetFocalPoint(0.0, 0.0, 0.0)
