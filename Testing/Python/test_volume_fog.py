@@ -106,6 +106,19 @@ def ramp_volume(values, origin, spacing, top, top_opacity, rgb, unit, size, back
     return volume_window(mapper, opacity, colour, unit, size, background)
 
 
+def look_down_z(ren, focal, scale):
+    """`ren`'s camera (returned): parallel, along -z at `focal` from 200 units away, `scale` the
+    half height of the view."""
+    camera = ren.GetActiveCamera()
+    camera.SetFocalPoint(*focal)
+    camera.SetPosition(focal[0], focal[1], focal[2] + 200.0)
+    camera.SetViewUp(0.0, 1.0, 0.0)
+    camera.ParallelProjectionOn()
+    camera.SetParallelScale(scale)
+    ren.ResetCameraClippingRange()
+    return camera
+
+
 def scene(haze, mode, azimuth=0.0, unstructured=False, white=False):
     """The window of the ball in pixel art's PIXELATED layer, seen along -z (turned by `azimuth`
     degrees about the ball's centre); `unstructured`: the ball as an unstructured grid of
@@ -130,14 +143,8 @@ def scene(haze, mode, azimuth=0.0, unstructured=False, white=False):
         mapper = vtkFixedPointVolumeRayCastMapper()
         mapper.SetInputData(ball())
     win, ren = volume_window(mapper, opacity, colour, 1.0, N, shade=white)
-    camera = ren.GetActiveCamera()
     c = (N - 1) / 2.0
-    camera.SetFocalPoint(c, c, c)
-    camera.SetPosition(c, c, c + 200.0)
-    camera.SetViewUp(0.0, 1.0, 0.0)
-    camera.ParallelProjectionOn()
-    camera.SetParallelScale(N / 2.0)
-    ren.ResetCameraClippingRange()
+    camera = look_down_z(ren, (c, c, c), N / 2.0)
     ren.SetPass(pixelated(haze, mode))
     camera.Azimuth(azimuth)
     return win
@@ -251,13 +258,7 @@ def slab(elevation):
     for haze in (1.0, 0.0):
         win, ren = ramp_volume(values, (-19.5, -19.5, 0.0), (1.0, 1.0, 1.0), 100.0, FOG,
                                (0.0, 0.0, 0.0), 1.0, N)
-        camera = ren.GetActiveCamera()
-        camera.SetFocalPoint(0.0, 0.0, 2.5)
-        camera.SetPosition(0.0, 0.0, 202.5)
-        camera.SetViewUp(0.0, 1.0, 0.0)
-        camera.ParallelProjectionOn()
-        camera.SetParallelScale(10.0)
-        camera.Elevation(elevation)
+        look_down_z(ren, (0.0, 0.0, 2.5), 10.0).Elevation(elevation)
         ren.ResetCameraClippingRange()
         ren.SetPass(pixelated(haze, FOG_MODE))
         pictures.append(grab(win))
@@ -297,13 +298,7 @@ def buried_squares(style):
         actor.GetProperty().SetAmbient(1.0)
         actor.GetProperty().SetDiffuse(0.0)
         ren.AddActor(actor)
-    camera = ren.GetActiveCamera()
-    camera.SetFocalPoint(0.0, 0.0, 10.0)
-    camera.SetPosition(0.0, 0.0, 210.0)
-    camera.SetViewUp(0.0, 1.0, 0.0)
-    camera.ParallelProjectionOn()
-    camera.SetParallelScale(20.0)
-    ren.ResetCameraClippingRange()
+    look_down_z(ren, (0.0, 0.0, 10.0), 20.0)
     if style:
         ren.SetPass(style)
     w2i = vtkWindowToImageFilter()
