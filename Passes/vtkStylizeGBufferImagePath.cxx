@@ -136,7 +136,7 @@ void vtkStylizeGBufferImagePath::RenderImage(const vtkRenderState* s,
   const vtkTypeUInt64 sourceRenders = source ? source->GeometryRenders : 0;
   const int sourceChannels = gbuffer->GetChannels() &
     (vtkStylizeGBufferPass::NORMAL | vtkStylizeGBufferPass::POSITION |
-      vtkStylizeGBufferPass::DIRECTION);
+      vtkStylizeGBufferPass::LINEAR_DEPTH | vtkStylizeGBufferPass::DIRECTION);
   if (source)
   {
     source->SetChannels(sourceChannels);
@@ -169,12 +169,13 @@ void vtkStylizeGBufferImagePath::RenderImage(const vtkRenderState* s,
     const int whole[4] = { 0, 0, w, h };
     std::copy(whole, whole + 4, this->SourceRect);
   }
-  std::fill(this->SourceTextures, this->SourceTextures + 4, nullptr);
+  std::fill(this->SourceTextures, this->SourceTextures + SourceSlots, nullptr);
   if (gbuffer->ChannelSourceUsed)
   {
-    vtkTextureObject* const own[4] = { source->GetDepthTexture(), source->GetNormalTexture(),
-      source->GetPositionTexture(), source->GetDirectionTexture() };
-    for (int i = 0; i < 4; ++i)
+    vtkTextureObject* const own[SourceSlots] = { source->GetDepthTexture(),
+      source->GetNormalTexture(), source->GetPositionTexture(), source->GetDirectionTexture(),
+      source->GetLinearDepthTexture() };
+    for (int i = 0; i < SourceSlots; ++i)
     {
       this->SourceTextures[i] = composited ? this->Composited[i] : own[i];
     }
@@ -191,7 +192,9 @@ bool vtkStylizeGBufferImagePath::CompositeChannelSource(
   for (auto channel :
     { std::make_pair(vtkStylizeGBufferPass::NORMAL, vtkStylizeGBufferPass::NORMAL_BUFFER),
       std::make_pair(vtkStylizeGBufferPass::POSITION, vtkStylizeGBufferPass::POSITION_BUFFER),
-      std::make_pair(vtkStylizeGBufferPass::DIRECTION, vtkStylizeGBufferPass::DIRECTION_BUFFER) })
+      std::make_pair(vtkStylizeGBufferPass::DIRECTION, vtkStylizeGBufferPass::DIRECTION_BUFFER),
+      std::make_pair(
+        vtkStylizeGBufferPass::LINEAR_DEPTH, vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER) })
   {
     if (source->GetChannels() & channel.first)
     {
@@ -214,11 +217,12 @@ bool vtkStylizeGBufferImagePath::CompositeChannelSource(
     return false;
   }
 
-  // Process 0 keeps the result in textures: depth, normal, position, direction.
+  // Process 0 keeps the result in textures: depth, normal, position, direction, linear depth.
   std::copy(own.Rect, own.Rect + 4, this->SourceRect);
-  const int slots[3] = { vtkStylizeGBufferPass::NORMAL_BUFFER,
-    vtkStylizeGBufferPass::POSITION_BUFFER, vtkStylizeGBufferPass::DIRECTION_BUFFER };
-  for (int i = 0; i < 4; ++i)
+  const int slots[SourceSlots - 1] = { vtkStylizeGBufferPass::NORMAL_BUFFER,
+    vtkStylizeGBufferPass::POSITION_BUFFER, vtkStylizeGBufferPass::DIRECTION_BUFFER,
+    vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER };
+  for (int i = 0; i < SourceSlots; ++i)
   {
     const float* data = i == 0 ? own.Depth.data() : nullptr;
     for (size_t c = 0; i > 0 && c < buffers.size(); ++c)
@@ -236,8 +240,10 @@ bool vtkStylizeGBufferImagePath::CompositeChannelSource(
       texture = vtkTextureObject::New();
     }
     texture->SetContext(renWin);
+    const int components =
+      i == 0 || slots[i - 1] == vtkStylizeGBufferPass::LINEAR_DEPTH_BUFFER ? 1 : 4;
     texture->Create2DFromRaw(
-      own.Rect[2], own.Rect[3], i == 0 ? 1 : 4, VTK_FLOAT, const_cast<float*>(data));
+      own.Rect[2], own.Rect[3], components, VTK_FLOAT, const_cast<float*>(data));
   }
   return true;
 }
@@ -270,8 +276,9 @@ void vtkStylizeGBufferImagePath::Reconstruct(const vtkRenderState* s,
   if (gbuffer->ChannelSourceUsed)
   {
     defines += "#define STYLIZE_CHANNEL_SOURCE\n";
-    const char* const names[4] = { nullptr, "NORMAL", "POSITION", "DIRECTION" };
-    for (int i = 1; i < 4; ++i)
+    const char* const names[SourceSlots] = { nullptr, "NORMAL", "POSITION", "DIRECTION",
+      "LINEAR_DEPTH" };
+    for (int i = 1; i < SourceSlots; ++i)
     {
       if (this->SourceTextures[i])
       {
@@ -336,6 +343,7 @@ void vtkStylizeGBufferImagePath::Reconstruct(const vtkRenderState* s,
       .Texture("stylizeSourceNormal", this->SourceTextures[1])
       .Texture("stylizeSourcePosition", this->SourceTextures[2])
       .Texture("stylizeSourceDirection", this->SourceTextures[3])
+      .Texture("stylizeSourceLinearDepth", this->SourceTextures[4])
       .Float4("stylizeSourceRect", r[0], r[1], r[2], r[3]);
     gbuffer->GetChannelSource()->SetDepthMappingUniforms(program);
   }

@@ -69,11 +69,13 @@ protected:
   vtkTextureObject* ColorTexture = nullptr;
   vtkTextureObject* DepthTexture = nullptr;
   // The channel source's channels composited over the processes (on process 0): stored depth,
-  // normal, position, direction, inside the rectangle SourceRect (x, y, width, height).
-  vtkTextureObject* Composited[4] = { nullptr, nullptr, nullptr, nullptr };
+  // normal, position, direction, linear depth, inside the rectangle SourceRect (x, y, width,
+  // height).
+  static constexpr int SourceSlots = 5;
+  vtkTextureObject* Composited[SourceSlots] = { nullptr, nullptr, nullptr, nullptr, nullptr };
   int SourceRect[4] = { 0, 0, 0, 0 };
   // The textures the channels come from: the source's own (one process) or Composited.
-  vtkTextureObject* SourceTextures[4] = { nullptr, nullptr, nullptr, nullptr };
+  vtkTextureObject* SourceTextures[SourceSlots] = { nullptr, nullptr, nullptr, nullptr, nullptr };
   vtkNew<vtkStylizeRankCompositor> Compositor;
   vtkNew<vtkMatrix4x4> Upload; // a matrix on its way to a shader (transposed)
   class vtkInternals;

@@ -356,12 +356,15 @@ void vtkStylizeStylePass::Render(const vtkRenderState* original)
   const double threshold =
     std::isfinite(this->VolumeOpacityThreshold) ? this->VolumeOpacityThreshold : 0.1;
   // (behind a compositor, ParaView's, the state reaches each rank's G-buffer pass: each rank
-  // draws the surfaces of its volumes' pieces)
+  // draws the surfaces of its volumes' pieces; a solid surface stores the depth where it looks
+  // solid when the G-buffer draws the props, or its channel source does and hands over their own
+  // linear depth)
+  vtkStylizeGBufferPass* gbuffer = this->Internals->GBuffer;
+  const bool solidDepth = !gbuffer->GetSceneImagePass() || gbuffer->GetChannelSource();
   const vtkRenderState* s = this->StylizeVolumes && !original->GetRenderer()->GetSelector()
     ? volumes.Begin(original, threshold, std::isfinite(this->VolumeHaze) ? this->VolumeHaze : 0.0,
-        this->VolumeHazeMode == HAZE_FOG, this->Internals->GBuffer->GetController(),
-        this->GetVolumeOutlineWidth(original->GetRenderer()),
-        this->Internals->GBuffer->GetSceneImagePass() == nullptr)
+        this->VolumeHazeMode == HAZE_FOG, gbuffer->GetController(),
+        this->GetVolumeOutlineWidth(original->GetRenderer()), solidDepth)
     : original;
   s = this->SeparateAnnotations(s);
   Frame frame;

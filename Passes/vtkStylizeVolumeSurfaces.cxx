@@ -660,7 +660,7 @@ vtkStylizeVolumeSurfaces::Proxy* vtkStylizeVolumeSurfaces::Update(vtkVolume* vol
 const vtkRenderState* vtkStylizeVolumeSurfaces::Begin(const vtkRenderState* s, double threshold,
   double haze, bool fog, vtkMultiProcessController* controller, double outline, bool solidDepth)
 {
-  this->SolidDepth = solidDepth && !controller;
+  this->SolidDepth = solidDepth;
 
   this->End();
   this->Count = 0;

@@ -70,8 +70,9 @@ public:
    * outline then left out (FOG_SHELL). `solidDepth`: with the fog, the solid surface carries
    * where its view rays look solid (vtkStylizeVolumeSolidCut::LooksSolidAt), the depth the
    * G-buffer stores for it, so that opaque geometry inside its material in front of that shows
-   * through as in VTK's picture: for a G-buffer that draws the props itself, without a
-   * controller (under ParaView's, 2 ranks and 1 disagreed: docs/gbuffer.md).
+   * through as in VTK's picture: for a G-buffer that draws the props itself, or that is rebuilt
+   * from an image whose channel source draws them (ParaView's ranks; the source hands over the
+   * surface's own linear depth: docs/gbuffer.md).
    */
   const vtkRenderState* Begin(const vtkRenderState* s, double threshold, double haze = 0.0,
     bool fog = false, vtkMultiProcessController* controller = nullptr, double outline = 0.0,

@@ -6,8 +6,10 @@
 // STYLIZE_CHANNEL_SOURCE: the processes' own G-buffers (vtkStylizeGBufferPass::ChannelSource,
 // composited by depth when there are several) hold the true channels inside stylizeSourceRect;
 // where their depth is the image's (the same surface) they replace the reconstruction:
-// STYLIZE_SOURCE_NORMAL, _POSITION and _DIRECTION say which they hold. Needs vtkStylizeDepthFS
-// (the source's depth may be logarithmic).
+// STYLIZE_SOURCE_NORMAL, _POSITION, _DIRECTION and _LINEAR_DEPTH say which they hold. Needs
+// vtkStylizeDepthFS (the source's depth may be logarithmic). The source's linear depth is the
+// surface's own where the stored depth is not (a volume's solid surface stores where its material
+// looks solid), and -1 on lines and points, as the geometry path writes it.
 uniform sampler2D stylizeImageColor;
 uniform sampler2D stylizeImageDepth;
 uniform mat4 stylizeInverseProjection; // normalized device coordinates -> view coordinates
@@ -28,6 +30,9 @@ uniform sampler2D stylizeSourcePosition;
 #endif
 #ifdef STYLIZE_SOURCE_DIRECTION
 uniform sampler2D stylizeSourceDirection;
+#endif
+#ifdef STYLIZE_SOURCE_LINEAR_DEPTH
+uniform sampler2D stylizeSourceLinearDepth;
 #endif
 #endif
 
@@ -137,6 +142,9 @@ void stylizeReconstruct()
 #endif
 #ifdef STYLIZE_SOURCE_DIRECTION
     stylizeOutDirection = texelFetch(stylizeSourceDirection, at, 0);
+#endif
+#ifdef STYLIZE_SOURCE_LINEAR_DEPTH
+    stylizeOutLinearDepth = vec4(texelFetch(stylizeSourceLinearDepth, at, 0).r, 0.0, 0.0, 0.0);
 #endif
   }
 #endif

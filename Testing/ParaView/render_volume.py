@@ -17,6 +17,8 @@ realdata.volumes' skull (Testing/RealData/volumes.py), 400x300. Writes OUTPUT_PR
   grid-<style>   the data axes grid on: vtk (Style None) and each style
   disk-<style>   ParaView's disk_out_ref simulation, an unstructured volume redistributed over
                  the ranks, seen across the cut between their pieces: vtk and each style
+  disk-streams-<style>   the same with streamlines of its flow running down into the hot dome
+                 (dark lines inside the volume's material): vtk, comic and lines
 and prints "pieces K" and "disk pieces K" (how many ranks hold part of each volume).
 """
 import sys
@@ -24,7 +26,7 @@ import sys
 import paraview.simple as simple
 from paraview.simple import (ColorBy, CreateView, ExodusIIReader, GetColorTransferFunction,
                              GetOpacityTransferFunction, MergeBlocks, RedistributeDataSet, Render,
-                             SaveScreenshot, Show, XMLImageDataReader)
+                             SaveScreenshot, Show, StreamTracer, XMLImageDataReader)
 from stylize_pv_scene import make_view
 
 prefix, data = sys.argv[1], sys.argv[2]
@@ -99,7 +101,7 @@ shot("bare")
 # temperature (the ramp of realdata.volumes' disk scene), seen across the cut between the ranks'
 # pieces; its surface must not be closed along that cut.
 disk = ExodusIIReader(FileName=[data + "/disk_out_ref.ex2"])
-disk.PointVariables = ["Temp"]
+disk.PointVariables = ["Temp", "V"]
 split = RedistributeDataSet(Input=MergeBlocks(Input=disk))
 split.UpdatePipeline()
 disk_display = Show(split, view)
@@ -123,4 +125,19 @@ view.CameraViewUp = [0.0, 0.0, 1.0]
 for style, label in enumerate(["vtk", "comic", "pixel", "sketch", "lines"]):
     view.Style = style
     shot("disk-" + label)
+# Streamlines of the flow (opaque dark lines) running down into the hot dome, inside the volume's
+# material; disk-streams-<style> for vtk, comic and lines.
+streams = StreamTracer(Input=split, SeedType="Point Cloud")
+streams.Vectors = ["POINTS", "V"]
+streams.SeedType.Center = [0.0, 0.0, 0.5]
+streams.SeedType.Radius = 4.0
+streams.SeedType.NumberOfPoints = 60
+streams.MaximumStreamlineLength = 20.0
+streams_display = Show(streams, view)
+streams_display.ColorArrayName = ["POINTS", ""]
+streams_display.AmbientColor = streams_display.DiffuseColor = [0.1, 0.3, 0.1]
+streams_display.LineWidth = 2.0
+for style, label in ((0, "vtk"), (1, "comic"), (4, "lines")):
+    view.Style = style
+    shot("disk-streams-" + label)
 print("rendered")
