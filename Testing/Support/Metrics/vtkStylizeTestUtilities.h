@@ -39,6 +39,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <map>
 #include <string>
@@ -380,9 +381,10 @@ inline vtkSmartPointer<vtkImageData> ReadPNG(const std::string& path)
 /**
  * Strict comparison: fails when the largest per-channel difference exceeds maxDiff (in 8-bit
  * levels) anywhere, or when more than maxFraction of the pixels differ by more than tol levels.
+ * With `enforce` false it prints the same line and does not fail.
  */
 inline bool StrictCompare(vtkImageData* a, vtkImageData* b, double tol, double maxFraction,
-  double maxDiff, const std::string& what)
+  double maxDiff, const std::string& what, bool enforce = true)
 {
   const double worst = vtkStylizeImageMetrics::MaximumDifference(a, b);
   const vtkIdType differing = vtkStylizeImageMetrics::CountDifferences(a, b, tol);
@@ -393,9 +395,29 @@ inline bool StrictCompare(vtkImageData* a, vtkImageData* b, double tol, double m
   std::printf("%s: max difference %.0f levels, %.4f%% of pixels beyond %.0f levels, PSNR %.1f dB\n",
     what.c_str(), worst, 100.0 * fraction, tol, psnr);
   const bool ok = worst >= 0 && worst <= maxDiff && fraction <= maxFraction;
-  STYLIZE_CHECK(ok, "%s: strict comparison failed (limits: max %.0f, %.3f%% beyond %.0f)",
-    what.c_str(), maxDiff, 100.0 * maxFraction, tol);
+  if (enforce)
+  {
+    STYLIZE_CHECK(ok, "%s: strict comparison failed (limits: max %.0f, %.3f%% beyond %.0f)",
+      what.c_str(), maxDiff, 100.0 * maxFraction, tol);
+  }
   return ok;
+}
+
+/**
+ * Whether `win` renders with the renderer the baselines come from (Mesa's llvmpipe, as in CI):
+ * the strict limits of the regression tests are set to its arithmetic. On another renderer (an
+ * NVIDIA GPU drew the sketches within a few levels at 0.3-5.7% of the pixels, docs/testing.md)
+ * they are printed and VTK's harness decides; VTKSTYLIZE_STRICT=1 applies them anyway.
+ */
+inline bool BaselineRenderer(vtkRenderWindow* win)
+{
+  const char* strict = std::getenv("VTKSTYLIZE_STRICT");
+  if (strict && std::string(strict) == "1")
+  {
+    return true;
+  }
+  const char* capabilities = win ? win->ReportCapabilities() : nullptr;
+  return capabilities && std::string(capabilities).find("llvmpipe") != std::string::npos;
 }
 
 /** Downloads every channel the G-buffer allocated in its last frame and checks it is finite. */
@@ -485,9 +507,12 @@ inline int RegressionVerdict(vtkRenderWindow* win, int argc, char* argv[], const
   auto baseline = ReadPNG(args.Baseline);
   if (baseline)
   {
+    const bool enforce = BaselineRenderer(win);
     auto img = Capture(win);
-    if (!StrictCompare(
-          img, baseline, tol, maxFraction, maxDiff, "strict comparison with " + args.Baseline))
+    if (!StrictCompare(img, baseline, tol, maxFraction, maxDiff,
+          "strict comparison with " + args.Baseline +
+            (enforce ? "" : " (printed, not checked: not the baselines' renderer)"),
+          enforce))
     {
       // the image that failed, beside VTK's harness's output, to look at or to become the baseline
       const std::string name = args.Baseline.substr(args.Baseline.find_last_of('/') + 1);
