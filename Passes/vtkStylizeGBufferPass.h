@@ -156,10 +156,9 @@ public:
    * The G-buffer pass that renders this process's geometry in the same frame, inside
    * SceneImagePass (see the class description). Before the image is rendered, the source is set
    * to this pass's NORMAL, POSITION, LINEAR_DEPTH and DIRECTION channels, position space and
-   * normal precision;
-   * in the image path its channels replace the reconstruction where its depth equals the
-   * image's. Ignored for a frame the source did not render, or rendered at another size (an
-   * interactive image reduction). Default nullptr: everything is reconstructed from the image.
+   * normal precision; in the image path its channels replace the reconstruction where its depth
+   * equals the image's. Ignored for a frame the source did not render, or rendered at another
+   * size (an interactive image reduction). Default nullptr: everything is reconstructed from the image.
    */
   vtkGetObjectMacro(ChannelSource, vtkStylizeGBufferPass);
   virtual void SetChannelSource(vtkStylizeGBufferPass* source);

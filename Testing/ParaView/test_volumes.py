@@ -148,7 +148,8 @@ for style in ("comic", "pixel", "sketch", "lines"):
 # over the dome (its pixels at least 48 levels darker with them than without, inside the dome's
 # region), the comic and the line art draw them dark (luminance below 100): at least 0.8 of those
 # pixels on 1 and on 2 ranks (the dome's solid surface hid them under ParaView until stop 72:
-# 0.28 and 0.35 there; the ranks' G-buffers store the depth where the dome looks solid).
+# 0.71 and 0.60 on 1 rank in a scratch build with the stored depth off; the ranks' G-buffers now
+# store the depth where the dome looks solid).
 def luminance(rgb):
     return rgb.astype(float) @ np.array([0.2126, 0.7152, 0.0722])
 
