@@ -158,7 +158,8 @@ public:
    * to this pass's NORMAL, POSITION, LINEAR_DEPTH and DIRECTION channels, position space and
    * normal precision; in the image path its channels replace the reconstruction where its depth
    * equals the image's. Ignored for a frame the source did not render, or rendered at another
-   * size (an interactive image reduction). Default nullptr: everything is reconstructed from the image.
+   * size (an interactive image reduction). Default nullptr: everything is reconstructed from the
+   * image.
    */
   vtkGetObjectMacro(ChannelSource, vtkStylizeGBufferPass);
   virtual void SetChannelSource(vtkStylizeGBufferPass* source);

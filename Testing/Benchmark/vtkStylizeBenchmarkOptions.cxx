@@ -20,6 +20,12 @@ const std::vector<SceneSpec>& AllScenes()
   return scenes;
 }
 
+const std::vector<SceneSpec>& VolumeScenes()
+{
+  static const std::vector<SceneSpec> scenes = { { "headsq", 0, 0, true } };
+  return scenes;
+}
+
 const std::vector<std::string>& AllConfigs()
 {
   static const std::vector<std::string> configs = { "plain", "sobel", "ssao", "edl",
@@ -56,9 +62,11 @@ void PrintHelp(const char* argv0)
     << "  --warmup N        untimed warm-up frames per case, at least 2 (default 2)\n"
     << "  --scenes LIST     subset of 10k,500k,2M (sphere triangle counts), bunny (a scanned\n"
     << "                    mesh, 69k triangles) and iso970k (a wavelet isosurface, 969k\n"
-    << "                    triangles); default: all\n"
+    << "                    triangles); default: all of these; also headsq (VTK's CT of a\n"
+    << "                    head as a GPU ray-cast volume, each style drawing it as a volume)\n"
     << "  --bunny FILE      the scanned mesh (default: the real-data set's bunny.ply, written\n"
     << "                    by the test realdata.setup)\n"
+    << "  --volume FILE     the volume scene's image (default: the real-data set's headsq.vti)\n"
     << "  --lights LIST     subset of light counts, e.g. 1,8,100,500 (any positive count)\n"
     << "  --configs LIST    subset of:";
   for (const auto& c : AllConfigs())
@@ -144,14 +152,15 @@ bool ParseScenes(const std::string& value, Options& opt)
   opt.Scenes.clear();
   for (const auto& name : SplitList(value))
   {
-    auto it = std::find_if(
-      AllScenes().begin(), AllScenes().end(), [&](const SceneSpec& s) { return s.Name == name; });
-    if (it == AllScenes().end())
+    auto named = [&](const SceneSpec& s) { return s.Name == name; };
+    auto it = std::find_if(AllScenes().begin(), AllScenes().end(), named);
+    auto volume = std::find_if(VolumeScenes().begin(), VolumeScenes().end(), named);
+    if (it == AllScenes().end() && volume == VolumeScenes().end())
     {
-      std::cerr << "Unknown scene '" << name << "' (10k, 500k, 2M, bunny, iso970k)\n";
+      std::cerr << "Unknown scene '" << name << "' (10k, 500k, 2M, bunny, iso970k, headsq)\n";
       return false;
     }
-    opt.Scenes.push_back(*it);
+    opt.Scenes.push_back(it != AllScenes().end() ? *it : *volume);
   }
   return true;
 }
@@ -191,6 +200,7 @@ bool ParseConfigs(const std::string& value, Options& opt)
 bool IsPathOption(const std::string& arg, Options& opt, std::string*& target)
 {
   target = arg == "--bunny" ? &opt.Bunny
+    : arg == "--volume"     ? &opt.Volume
     : arg == "--csv"        ? &opt.Csv
     : arg == "--markdown"   ? &opt.Markdown
     : arg == "--images"     ? &opt.Images

@@ -48,6 +48,10 @@ std::string SceneLabel(const std::string& name)
   {
     return "iso970k (isosurface)";
   }
+  if (name == "headsq")
+  {
+    return "headsq (CT volume)";
+  }
   return "sphere " + name;
 }
 

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <vector>
 
 namespace vtkstylizebenchmark
 {
@@ -126,12 +128,19 @@ void Report::WriteSketch(std::ostream& os) const
   }
 }
 
-// Flatness in triangle count: the added cost at the smallest and the largest scene.
+// Flatness in triangle count: the added cost at the smallest and the largest mesh scene (a
+// volume scene has no triangles).
 void Report::WriteFlatness(std::ostream& os) const
 {
   auto fewer = [this](const SceneSpec& a, const SceneSpec& b)
   { return this->Triangles(a.Name) < this->Triangles(b.Name); };
-  const auto& scenes = this->Opt.Scenes;
+  std::vector<SceneSpec> scenes;
+  std::copy_if(this->Opt.Scenes.begin(), this->Opt.Scenes.end(), std::back_inserter(scenes),
+    [](const SceneSpec& s) { return !s.Volume; });
+  if (scenes.size() < 2)
+  {
+    return;
+  }
   const SceneSpec& small = *std::min_element(scenes.begin(), scenes.end(), fewer);
   const SceneSpec& large = *std::max_element(scenes.begin(), scenes.end(), fewer);
   os << "\n### Is the added cost flat in triangle count?\n\n";

@@ -5,8 +5,10 @@
 #include "vtkStylizeBenchmarkReport.h"
 #include "vtkStylizeBenchmarkScenes.h"
 
+#include "vtkAbstractVolumeMapper.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPolyData.h"
@@ -15,6 +17,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkStylizeStylePass.h"
+#include "vtkVolume.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
@@ -44,6 +47,8 @@ struct Bench
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkPolyDataMapper> Mapper;
+  vtkSmartPointer<vtkActor> Actor;
+  vtkSmartPointer<vtkVolume> Volume; // the volume scenes' prop, in the renderer for them only
   vtkSmartPointer<vtkCamera> Initial;
   std::vector<double> Times;
   double Warmup = 0.0;
@@ -65,7 +70,8 @@ struct Bench
     this->Window->AddRenderer(this->Renderer);
     this->Mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     this->Mapper->ScalarVisibilityOff();
-    vtkNew<vtkActor> actor;
+    this->Actor = vtkSmartPointer<vtkActor>::New();
+    vtkActor* actor = this->Actor;
     actor->SetMapper(this->Mapper);
     actor->GetProperty()->SetColor(0.9, 0.75, 0.6);
     actor->GetProperty()->SetSpecular(0.3);
@@ -87,6 +93,41 @@ struct Bench
       this->Renderer->SetPass(this->Passes.Root);
     }
     this->Initial = vtkSmartPointer<vtkCamera>::New();
+    this->Volume = MakeVolumeProp();
+  }
+
+  /**
+   * Shows the mesh's actor, or the volume of `image` (a volume scene) in its place, and sets
+   * the scene's first view: the mesh's ResetCamera(), or the volume seen from the front at 30
+   * degrees as realdata.volumes sees headsq.
+   */
+  void ShowScene(vtkPolyData* mesh, vtkImageData* image)
+  {
+    this->Mapper->SetInputData(mesh);
+    if (this->Passes.SetMesh)
+    {
+      this->Passes.SetMesh(mesh);
+    }
+    this->Actor->SetVisibility(image ? 0 : 1);
+    this->Renderer->RemoveVolume(this->Volume);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    if (image)
+    {
+      this->Volume->GetMapper()->SetInputDataObject(image);
+      this->Renderer->AddVolume(this->Volume);
+      camera->SetFocalPoint(0.0, 0.0, 0.0);
+      camera->SetPosition(0.0, -1.0, 0.0);
+      camera->SetViewUp(0.0, 0.0, -1.0);
+    }
+    this->Renderer->ResetCamera();
+    if (image)
+    {
+      camera->Azimuth(30.0);
+      camera->Elevation(30.0);
+      camera->OrthogonalizeViewUp();
+      camera->Zoom(1.2);
+    }
+    this->Initial->DeepCopy(camera);
   }
 
   /** Frees every GL resource (passes included) while the context exists, then detaches. */
@@ -101,6 +142,8 @@ struct Bench
     this->Window->RemoveRenderer(this->Renderer);
     this->Passes = ConfigPasses();
     this->Mapper = nullptr;
+    this->Actor = nullptr;
+    this->Volume = nullptr;
     this->Renderer = nullptr;
     this->Window = nullptr;
   }
@@ -274,15 +317,11 @@ void RunAll(const Options& opt, const std::vector<vtkSmartPointer<vtkPolyData>>&
   {
     vtkPolyData* mesh = meshes[si];
     const Framing framing = FrameMesh(mesh, opt);
+    // (a volume scene's image, read again here: its mesh holds only its bounds)
+    vtkSmartPointer<vtkImageData> image = opt.Scenes[si].Volume ? ReadSceneVolume(opt) : nullptr;
     for (auto& b : benches)
     {
-      b->Mapper->SetInputData(mesh);
-      if (b->Passes.SetMesh)
-      {
-        b->Passes.SetMesh(mesh);
-      }
-      b->Renderer->ResetCamera();
-      b->Initial->DeepCopy(b->Renderer->GetActiveCamera());
+      b->ShowScene(mesh, image);
     }
     for (int lights : opt.Lights)
     {

@@ -5,15 +5,20 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkComicPass.h"
 #include "vtkContourFilter.h"
 #include "vtkEDLShading.h"
 #include "vtkFeatureEdges.h"
+#include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkImageData.h"
 #include "vtkLineArtPass.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPLYReader.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPixelArtPass.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
@@ -32,6 +37,9 @@
 #include "vtkStylizeStylePass.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkXMLImageDataReader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,8 +52,64 @@ namespace vtkstylizebenchmark
 //------------------------------------------------------------------------------------------------
 // Scenes
 
+vtkSmartPointer<vtkImageData> ReadSceneVolume(const Options& opt)
+{
+  vtkNew<vtkXMLImageDataReader> reader;
+  if (!reader->CanReadFile(opt.Volume.c_str()))
+  {
+    std::cerr << "Cannot read the volume " << opt.Volume
+              << " (run the test realdata.setup, or give --volume FILE)\n";
+    return nullptr;
+  }
+  reader->SetFileName(opt.Volume.c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+vtkSmartPointer<vtkVolume> MakeVolumeProp()
+{
+  vtkNew<vtkColorTransferFunction> colors;
+  colors->AddRGBPoint(0, 0.0, 0.0, 0.0);
+  colors->AddRGBPoint(500, 1.0, 0.5, 0.3);
+  colors->AddRGBPoint(1000, 1.0, 0.5, 0.3);
+  colors->AddRGBPoint(1150, 1.0, 1.0, 0.9);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(500, 0.15);
+  opacity->AddPoint(1000, 0.15);
+  opacity->AddPoint(1150, 0.85);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetInterpolationTypeToLinear();
+  property->ShadeOn();
+  property->SetColor(colors);
+  property->SetScalarOpacity(opacity);
+  vtkNew<vtkGPUVolumeRayCastMapper> mapper;
+  auto volume = vtkSmartPointer<vtkVolume>::New();
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  return volume;
+}
+
 vtkSmartPointer<vtkPolyData> MakeSceneMesh(const SceneSpec& scene, const Options& opt)
 {
+  if (scene.Volume)
+  {
+    vtkSmartPointer<vtkImageData> image = ReadSceneVolume(opt);
+    if (!image)
+    {
+      return nullptr;
+    }
+    double b[6];
+    image->GetBounds(b);
+    vtkNew<vtkPoints> corners;
+    for (int i = 0; i < 8; ++i)
+    {
+      corners->InsertNextPoint(b[i & 1], b[2 + ((i >> 1) & 1)], b[4 + ((i >> 2) & 1)]);
+    }
+    auto box = vtkSmartPointer<vtkPolyData>::New();
+    box->SetPoints(corners);
+    return box;
+  }
   vtkSmartPointer<vtkPolyData> raw;
   if (scene.Theta > 0)
   {

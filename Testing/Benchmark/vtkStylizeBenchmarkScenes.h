@@ -16,8 +16,10 @@
 #include <vector>
 
 class vtkActor;
+class vtkImageData;
 class vtkPolyData;
 class vtkRenderer;
+class vtkVolume;
 
 namespace vtkstylizebenchmark
 {
@@ -35,6 +37,21 @@ struct Framing
  * stderr) when the scanned mesh cannot be read.
  */
 vtkSmartPointer<vtkPolyData> MakeSceneMesh(const SceneSpec& scene, const Options& opt);
+
+/**
+ * A volume scene's image (Options::Volume), or nullptr and a line on stderr. Its "mesh" for
+ * MakeSceneMesh() is the eight corners of its bounds (no cells): the framing, lights and
+ * camera of every scene come from a mesh.
+ */
+vtkSmartPointer<vtkImageData> ReadSceneVolume(const Options& opt);
+
+/**
+ * The volume scenes' prop: VTK's GPU ray caster (vtkGPUVolumeRayCastMapper), linear
+ * interpolation, shaded, with the transfer functions of VTK's MedicalDemo4 example (skin at a
+ * sixth of full opacity, bone nearly opaque: realdata.volumes' headsq). Its mapper's input is
+ * set per scene.
+ */
+vtkSmartPointer<vtkVolume> MakeVolumeProp();
 
 Framing FrameMesh(vtkPolyData* mesh, const Options& opt);
 

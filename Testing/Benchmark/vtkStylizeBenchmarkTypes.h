@@ -16,9 +16,10 @@ namespace vtkstylizebenchmark
 {
 struct SceneSpec
 {
-  std::string Name; // "10k", "500k", "2M", "bunny", "iso970k"
-  int Theta;        // spheres: vtkSphereSource resolutions, 2 * Theta * (Phi - 1) triangles;
-  int Phi;          // 0 for the real scenes
+  std::string Name;    // "10k", "500k", "2M", "bunny", "iso970k", "headsq"
+  int Theta;           // spheres: vtkSphereSource resolutions, 2 * Theta * (Phi - 1) triangles;
+  int Phi;             // 0 for the real scenes
+  bool Volume = false; // a volume (GPU ray casting) instead of a mesh
 };
 
 /** The timed frames of one (scene, light count, configuration) case, in milliseconds. */
