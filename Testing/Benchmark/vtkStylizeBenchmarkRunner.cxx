@@ -18,6 +18,7 @@
 #include "vtkRenderer.h"
 #include "vtkStylizeStylePass.h"
 #include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
@@ -109,8 +110,16 @@ struct Bench
       this->Passes.SetMesh(mesh);
     }
     this->Actor->SetVisibility(image ? 0 : 1);
+    // (a mesh after a volume scene is seen along VTK's default direction, not the volume's)
+    const bool hadVolume = this->Renderer->GetVolumes()->IsItemPresent(this->Volume) != 0;
     this->Renderer->RemoveVolume(this->Volume);
     vtkCamera* camera = this->Renderer->GetActiveCamera();
+    if (hadVolume && !image)
+    {
+      camera->SetFocalPoint(0.0, 0.0, 0.0);
+      camera->SetPosition(0.0, 0.0, 1.0);
+      camera->SetViewUp(0.0, 1.0, 0.0);
+    }
     if (image)
     {
       this->Volume->GetMapper()->SetInputDataObject(image);
