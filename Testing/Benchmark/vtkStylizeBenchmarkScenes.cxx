@@ -52,16 +52,33 @@ namespace vtkstylizebenchmark
 //------------------------------------------------------------------------------------------------
 // Scenes
 
+namespace
+{
+/**
+ * Points `reader` at the real-data file `path` (`what` it holds, the `option` that names another);
+ * false, with a line on stderr, when the reader cannot read it.
+ */
+template <class Reader>
+bool OpenDataFile(Reader* reader, const std::string& path, const char* what, const char* option)
+{
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    std::cerr << "Cannot read " << what << " " << path << " (run the test realdata.setup, or give "
+              << option << " FILE)\n";
+    return false;
+  }
+  reader->SetFileName(path.c_str());
+  return true;
+}
+}
+
 vtkSmartPointer<vtkImageData> ReadSceneVolume(const Options& opt)
 {
   vtkNew<vtkXMLImageDataReader> reader;
-  if (!reader->CanReadFile(opt.Volume.c_str()))
+  if (!OpenDataFile(reader.Get(), opt.Volume, "the volume", "--volume"))
   {
-    std::cerr << "Cannot read the volume " << opt.Volume
-              << " (run the test realdata.setup, or give --volume FILE)\n";
     return nullptr;
   }
-  reader->SetFileName(opt.Volume.c_str());
   reader->Update();
   return reader->GetOutput();
 }
@@ -123,13 +140,10 @@ vtkSmartPointer<vtkPolyData> MakeSceneMesh(const SceneSpec& scene, const Options
   if (scene.Name == "bunny")
   {
     vtkNew<vtkPLYReader> reader;
-    if (!reader->CanReadFile(opt.Bunny.c_str()))
+    if (!OpenDataFile(reader.Get(), opt.Bunny, "the scanned mesh", "--bunny"))
     {
-      std::cerr << "Cannot read the scanned mesh " << opt.Bunny
-                << " (run the test realdata.setup, or give --bunny FILE)\n";
       return nullptr;
     }
-    reader->SetFileName(opt.Bunny.c_str());
     vtkNew<vtkPolyDataNormals> normals;
     normals->SetInputConnection(reader->GetOutputPort());
     normals->SplittingOff();
