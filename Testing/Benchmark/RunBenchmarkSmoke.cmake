@@ -1,14 +1,16 @@
-# Runs vtkStylizeBenchmark --quick and checks that it exits 0, writes a non-empty CSV and
-# Markdown file and prints no VTK error. Usage:
-#   cmake -DBENCHMARK=<exe> -DCSV=<file> -DMARKDOWN=<file> -P RunBenchmarkSmoke.cmake
+# Runs vtkStylizeBenchmark --quick (then ARGS, more options separated by spaces) and checks that
+# it exits 0, writes a non-empty CSV and Markdown file and prints no VTK error. Usage:
+#   cmake -DBENCHMARK=<exe> -DCSV=<file> -DMARKDOWN=<file> [-DARGS="<option> <value> ..."]
+#     -P RunBenchmarkSmoke.cmake
 foreach (var IN ITEMS BENCHMARK CSV MARKDOWN)
   if (NOT DEFINED ${var})
     message(FATAL_ERROR "${var} is not set")
   endif ()
 endforeach ()
 file(REMOVE "${CSV}" "${MARKDOWN}")
+separate_arguments(args UNIX_COMMAND "${ARGS}")
 execute_process(
-  COMMAND "${BENCHMARK}" --quick --csv "${CSV}" --markdown "${MARKDOWN}"
+  COMMAND "${BENCHMARK}" --quick ${args} --csv "${CSV}" --markdown "${MARKDOWN}"
   RESULT_VARIABLE result
   OUTPUT_VARIABLE out
   ERROR_VARIABLE err)

@@ -106,7 +106,15 @@ std::string ReportHeader(const Options& opt, const RunInfo& info)
             "moved into the unit sphere's box; one actor (Phong, specular 0.3), framed by "
             "ResetCamera() as the unit sphere, which covers about "
          << Fixed(info.CoveredPixels / 1000.0, 0) << "k pixels ("
-         << Fixed(100.0 * info.CoveredPixels / opt.Width / opt.Height, 1) << "% of the image)\n";
+         << Fixed(100.0 * info.CoveredPixels / opt.Width / opt.Height, 1) << "% of the image)";
+  if (std::any_of(
+        opt.Scenes.begin(), opt.Scenes.end(), [](const SceneSpec& s) { return s.Volume; }))
+  {
+    header << "; the volume scene headsq: VTK's CT of a head (" << opt.Volume
+           << ") drawn by vtkGPUVolumeRayCastMapper with MedicalDemo4's transfer functions, "
+              "shaded, seen from the front at 30 degrees (no mesh: its triangle count is 0)";
+  }
+  header << "\n";
   header << "- Lights: 1 = VTK's default headlight; more = scene lights on a golden-angle "
             "spiral around the object (1/3 directional, 1/3 point, 1/3 spot), white, "
             "intensity 1.5 / count; the same for every configuration\n";
