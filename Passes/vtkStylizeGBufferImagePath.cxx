@@ -104,7 +104,13 @@ void vtkStylizeGBufferImagePath::RenderImage(const vtkRenderState* s,
   using Utilities = vtkStylizeShaderUtilities;
   Utilities::EnsureScreenTexture(this->ColorTexture, renWin, w, h,
     gbuffer->GetPrecision() == vtkStylizeGBufferPass::FULL ? GL_RGBA32F : GL_RGBA16F);
-  Utilities::EnsureScreenTexture(this->DepthTexture, renWin, w, h, GL_DEPTH_COMPONENT32F);
+  // The depth in the window's own format: VTK's GPU ray caster (ParaView's VTK) blits the bound
+  // depth into a texture of that format, and a blit between depth formats fails (its rays then
+  // pass through opaque geometry: a volume the style leaves plain, drawn into this image).
+  const int depthFormat = renWin->GetStencilCapable() ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT32F;
+  Utilities::EnsureScreenTexture(
+    this->DepthTexture, renWin, w, h, depthFormat, depthFormat != this->DepthFormat);
+  this->DepthFormat = depthFormat;
   if (!this->FrameBuffer)
   {
     this->FrameBuffer = vtkOpenGLFramebufferObject::New();

@@ -68,6 +68,7 @@ protected:
   vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
   vtkTextureObject* ColorTexture = nullptr;
   vtkTextureObject* DepthTexture = nullptr;
+  int DepthFormat = 0; // DepthTexture's: the window's own (see RenderImage())
   // The channel source's channels composited over the processes (on process 0): stored depth,
   // normal, position, direction, linear depth, inside the rectangle SourceRect (x, y, width,
   // height).

@@ -42,6 +42,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -208,6 +209,7 @@ vtkStylizeGBufferPass::vtkStylizeGBufferPass()
   vtkNew<vtkTranslucentPass> annotationTranslucent;
   annotations->AddItem(annotationOpaque);
   annotations->AddItem(annotationTranslucent);
+  annotations->AddItem(volumetric); // (the volumes a channel source left out)
   this->AnnotationSequence->SetPasses(annotations);
   this->ShaderStageTime.Modified();
 }
@@ -649,16 +651,27 @@ struct ScopedRendererViewport
 //------------------------------------------------------------------------------
 void vtkStylizeGBufferPass::RenderAnnotations(const vtkRenderState* s)
 {
-  if (this->AfterProps.empty())
+  vtkRenderer* ren = s->GetRenderer();
+  std::vector<vtkProp*> props = this->AfterProps;
+  if (this->Controller && this->Controller->GetNumberOfProcesses() > 1 && this->ChannelSource &&
+    this->ChannelSource->GetLeaveOutVolumes() && !ren->GetSelector())
+  {
+    // the volumes the channel sources left out, each process's pieces composited over process
+    // 0's picture in visibility order (every process takes part, with volumes or not)
+    std::vector<vtkProp*> volumes;
+    auto volume = [](vtkProp* prop) { return prop && prop->IsA("vtkVolume"); };
+    std::copy_if(props.begin(), props.end(), std::back_inserter(volumes), volume);
+    props.erase(std::remove_if(props.begin(), props.end(), volume), props.end());
+    this->Internals->PlainVolumes->Render(s, volumes, this->VolumeSequence, this->Controller);
+  }
+  if (props.empty())
   {
     return;
   }
   // the annotations, as VTK draws them, over the stylized picture (depth-tested against it)
-  vtkRenderer* ren = s->GetRenderer();
   ScopedRendererViewport viewport(ren);
   vtkRenderState annotations(ren);
-  annotations.SetPropArrayAndCount(
-    this->AfterProps.data(), static_cast<int>(this->AfterProps.size()));
+  annotations.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   annotations.SetFrameBuffer(s->GetFrameBuffer());
   this->AnnotationSequence->Render(&annotations);
   this->NumberOfRenderedProps += this->AnnotationSequence->GetNumberOfRenderedProps();
@@ -721,16 +734,18 @@ bool vtkStylizeGBufferPass::RenderTranslucentLayer(
 //------------------------------------------------------------------------------
 void vtkStylizeGBufferPass::Render(const vtkRenderState* state)
 {
-  // (LeaveOutAnnotations: the state without them; a hardware selection keeps them pickable)
+  // (LeaveOutAnnotations, LeaveOutVolumes: the state without them; a hardware selection keeps
+  // them pickable)
   std::vector<vtkProp*> props;
   vtkRenderState scene(state->GetRenderer());
   const vtkRenderState* s = state;
-  if (this->LeaveOutAnnotations && !state->GetRenderer()->GetSelector())
+  if ((this->LeaveOutAnnotations || this->LeaveOutVolumes) && !state->GetRenderer()->GetSelector())
   {
     for (int i = 0; i < state->GetPropArrayCount(); ++i)
     {
       vtkProp* prop = state->GetPropArray()[i];
-      if (!vtkStylizeStylePass::IsAnnotation(prop))
+      if (!(this->LeaveOutAnnotations && vtkStylizeStylePass::IsAnnotation(prop)) &&
+        !(this->LeaveOutVolumes && prop && prop->IsA("vtkVolume")))
       {
         props.push_back(prop);
       }
@@ -808,6 +823,7 @@ void vtkStylizeGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
   this->Internals->CompositeQuad.Release(w);
   this->Internals->ImagePath->ReleaseGraphicsResources(w);
   this->Internals->Peeler->ReleaseGraphicsResources(w);
+  this->Internals->PlainVolumes->ReleaseGraphicsResources(w);
   this->FreeTextures(w);
   if (this->SceneImagePass)
   {

@@ -238,17 +238,19 @@ public:
   void RenderAfterGeometry(const vtkRenderState* s);
 
   /**
-   * Renders the annotations a style leaves plain (SetAfterProps()) over the output, as VTK draws
-   * them, depth-tested against it (RenderAfterGeometry() does, after the translucent geometry;
-   * over a scene from an image, the only thing it draws).
+   * Renders the props a style leaves plain (SetAfterProps(): annotations, and volumes left out of
+   * a channel source's picture) over the output, as VTK draws them, depth-tested against it
+   * (RenderAfterGeometry() does, after the translucent geometry; over a scene from an image, the
+   * only thing it draws).
    */
   void RenderAnnotations(const vtkRenderState* s);
 
 #ifndef __VTK_WRAP__
   /**
-   * Props RenderAfterGeometry() draws as VTK does (VTK's lighting, opaque then translucent, then
-   * their overlay), depth-tested against the stylized picture, after the volumes: the
-   * annotations a style leaves plain (vtkStylizeStylePass::PlainAnnotations). Not owned: valid
+   * Props RenderAfterGeometry() draws as VTK does (VTK's lighting, opaque, translucent and
+   * volumetric, then their overlay), depth-tested against the stylized picture, after the
+   * volumes: the annotations a style leaves plain (vtkStylizeStylePass::PlainAnnotations), and
+   * the volumes a channel source left out of its picture (LeaveOutVolumes). Not owned: valid
    * until the frame ends. Default: none.
    */
   void SetAfterProps(const std::vector<vtkProp*>& props)
@@ -304,6 +306,18 @@ public:
    */
   vtkSetMacro(LeaveOutAnnotations, bool);
   vtkGetMacro(LeaveOutAnnotations, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether Render() leaves out the volumes still in the render state (those a style leaves to
+   * VTK: StylizeVolumes off, or STYLIZE_VOLUME 0; the others stand in it as surfaces), so that a
+   * style processing this pass's picture draws them over its own, as VTK draws them
+   * (ParaView's view; on several processes each one's pieces, composited in visibility order:
+   * vtkStylizePlainVolumes). A hardware selection (picking) draws them. Default off.
+   */
+  vtkSetMacro(LeaveOutVolumes, bool);
+  vtkGetMacro(LeaveOutVolumes, bool);
   ///@}
 
   ///@{
@@ -466,6 +480,7 @@ protected:
   vtkSequencePass* VolumeSequence = nullptr; // AfterSequence without the translucent geometry
   bool DrawTranslucent = true;
   bool LeaveOutAnnotations = false;
+  bool LeaveOutVolumes = false;
   bool BuiltLayer = false; // the shaders test a translucent layer's depths
   vtkRenderPass* OverlayPass = nullptr;
   vtkSequencePass* AnnotationSequence = nullptr; // opaque and translucent, VTK's lighting

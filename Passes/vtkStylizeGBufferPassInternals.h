@@ -14,6 +14,7 @@
 #include "vtkStylizeGBufferClearPass.h"
 #include "vtkStylizeGBufferImagePath.h"
 #include "vtkStylizeGBufferPass.h"
+#include "vtkStylizePlainVolumes.h"
 #include "vtkStylizeShaderUtilities.h"
 
 class vtkStylizeGBufferPass::vtkInternals
@@ -22,6 +23,7 @@ public:
   vtkNew<vtkStylizeGBufferClearPass> ClearPass;
   vtkNew<vtkStylizeDepthPeeler> Peeler;
   vtkNew<vtkStylizeGBufferImagePath> ImagePath;
+  vtkNew<vtkStylizePlainVolumes> PlainVolumes; // left out by a channel source, on several ranks
   vtkStylizeScreenQuad CompositeQuad;
   vtkNew<vtkMatrix4x4> InverseView;
   vtkNew<vtkMatrix4x4> View;

@@ -62,6 +62,11 @@ void vtkStylizeShaderUtilities::EnsureScreenTexture(vtkTextureObject*& tex,
     tex->AllocateDepth(w, h, vtkTextureObject::Float32);
     return;
   }
+  if (internalFormat == GL_DEPTH24_STENCIL8)
+  {
+    tex->AllocateDepthStencil(w, h);
+    return;
+  }
   const int comps = (internalFormat == GL_R32F || internalFormat == GL_R16F) ? 1 : 4;
   tex->SetInternalFormat(internalFormat);
   tex->SetFormat(comps == 1 ? GL_RED : GL_RGBA);

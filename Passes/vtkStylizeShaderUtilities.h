@@ -40,8 +40,8 @@ public:
 
   /**
    * Makes `tex` a w x h texture with nearest filtering and clamped edges. internalFormat is a
-   * float colour format (GL_R32F / GL_R16F: one channel; others: RGBA) or
-   * GL_DEPTH_COMPONENT32F. An existing texture is resized; it is recreated when it belongs to
+   * float colour format (GL_R32F / GL_R16F: one channel; others: RGBA), GL_DEPTH_COMPONENT32F
+   * or GL_DEPTH24_STENCIL8. An existing texture is resized; it is recreated when it belongs to
    * another context or when `recreate` is true (its format changed).
    */
   static void EnsureScreenTexture(vtkTextureObject*& tex, vtkOpenGLRenderWindow* renWin, int w,

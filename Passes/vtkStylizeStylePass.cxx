@@ -389,13 +389,19 @@ const vtkRenderState* vtkStylizeStylePass::SeparateAnnotations(const vtkRenderSt
   // (behind a compositor: when the processes' own G-buffer pass left them out of its picture,
   // ParaView's view on one process)
   vtkStylizeGBufferPass* source = in.GBuffer->GetChannelSource();
-  const bool plain = !this->DelegatePass || (source && source->GetLeaveOutAnnotations());
-  if (this->PlainAnnotations && plain && !s->GetRenderer()->GetSelector())
+  const bool plain =
+    this->PlainAnnotations && (!this->DelegatePass || (source && source->GetLeaveOutAnnotations()));
+  // (the volumes left to VTK that the channel source left out of its picture: drawn over the
+  // style's, as VTK draws them when the style renders the geometry itself)
+  const bool volumes = source && source->GetLeaveOutVolumes();
+  if ((plain || volumes) && !s->GetRenderer()->GetSelector())
   {
     for (int i = 0; i < s->GetPropArrayCount(); ++i)
     {
       vtkProp* prop = s->GetPropArray()[i];
-      (IsAnnotation(prop) ? in.Annotations : in.SceneProps).push_back(prop);
+      const bool after =
+        (plain && IsAnnotation(prop)) || (volumes && prop && prop->IsA("vtkVolume"));
+      (after ? in.Annotations : in.SceneProps).push_back(prop);
     }
   }
   in.GBuffer->SetAfterProps(in.Annotations);

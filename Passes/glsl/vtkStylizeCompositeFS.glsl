@@ -13,3 +13,10 @@ void stylizeComposite()
   gl_FragData[0] = texture(stylizeColorTexture, texCoord);
   gl_FragDepth = stylizeWindowDepth(depth);
 }
+
+// The volumes a style leaves to VTK, drawn by the processes and composited over each other
+// (premultiplied colour in stylizeColorTexture), blended over the output by the caller.
+void stylizeCompositeLayer()
+{
+  gl_FragData[0] = texture(stylizeColorTexture, texCoord);
+}

@@ -1,0 +1,110 @@
+/**
+ * @class   vtkStylizePlainVolumes
+ * @brief   Draws the volumes a style leaves to VTK over the style's picture, across processes.
+ *
+ * On one process the style draws such volumes (vtkStylizeStylePass::STYLIZE_VOLUME 0, or
+ * StylizeVolumes off) over its picture as VTK draws them. Behind a compositor of several
+ * processes (ParaView's view on several ranks) each holds a piece of such a volume and the
+ * picture is on process 0; depth compositing would keep none of a volume, which writes no
+ * depth. Render() does, on every process at once (collective):
+ *
+ * 1. process 0's depth (the composited scene's) to every process;
+ * 2. each process draws its pieces with VTK's mapper into a layer of its own, premultiplied
+ *    colour over transparent black, against that depth (in the window's depth format, which
+ *    VTK's GPU ray caster copies the depth from);
+ * 3. the layers go to process 0, which puts them over each other in visibility order (the
+ *    pieces' bounding boxes seen from the camera: each process's pieces are one box of a
+ *    partition such as a reader's extents or a k-d split) and blends the result over its
+ *    picture.
+ */
+
+#ifndef vtkStylizePlainVolumes_h
+#define vtkStylizePlainVolumes_h
+
+#include "vtkNew.h" // for vtkNew
+#include "vtkObject.h"
+#include "vtkStylizePassesModule.h"    // for export macro
+#include "vtkStylizeRankCompositor.h"  // for vtkNew<vtkStylizeRankCompositor>
+#include "vtkStylizeShaderUtilities.h" // for vtkStylizeScreenQuad
+
+#include <array>  // for std::array
+#include <vector> // for std::vector
+
+class vtkMultiProcessController;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkProp;
+class vtkRenderPass;
+class vtkRenderState;
+class vtkRenderer;
+class vtkTextureObject;
+class vtkWindow;
+
+class VTKSTYLIZEPASSES_NO_EXPORT vtkStylizePlainVolumes : public vtkObject
+{
+public:
+  static vtkStylizePlainVolumes* New();
+  vtkTypeMacro(vtkStylizePlainVolumes, vtkObject);
+
+  /**
+   * Draws `volumes` (this process's) with `volumePass` (VTK's volumetric pass) over the
+   * picture in the bound framebuffer of process 0, as described above. Every process of
+   * `controller` calls it for the same frame, with or without volumes of its own; it does
+   * nothing when no process has any.
+   */
+  void Render(const vtkRenderState* s, const std::vector<vtkProp*>& volumes,
+    vtkRenderPass* volumePass, vtkMultiProcessController* controller);
+
+  /**
+   * Whether the box `a` (xmin, xmax, ymin, ymax, zmin, zmax) lies in front of `b` seen from a
+   * camera at `eye` (perspective) or looking along `direction` (parallel): on the camera's side
+   * of the plane between them along the axis where they are farthest apart, or, where they
+   * overlap on every axis by more than a quarter of their sizes, the nearer by its centre.
+   */
+  static bool InFront(const double a[6], const double b[6], bool parallel, const double eye[3],
+    const double direction[3]);
+
+  /** Frees the layer's textures, framebuffer and quad. */
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+protected:
+  vtkStylizePlainVolumes() = default;
+  ~vtkStylizePlainVolumes() override;
+
+private:
+  vtkStylizePlainVolumes(const vtkStylizePlainVolumes&) = delete;
+  void operator=(const vtkStylizePlainVolumes&) = delete;
+
+  /** A process's layer: its rectangle inside the viewport, RGBA inside it, its pieces' box. */
+  struct VolumeLayer
+  {
+    vtkStylizeRankCompositor::Part Pixels;
+    std::array<double, 6> Box = { { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 } };
+  };
+
+  /** Step 1: process 0's depth over the viewport (rows bottom to top) on every process. */
+  std::vector<float> ShareDepth(vtkOpenGLRenderWindow* renWin, vtkMultiProcessController* c);
+  /** Step 2: this process's volumes against `depth`, read back as RGBA over the viewport. */
+  std::vector<float> DrawLayer(const vtkRenderState* s, const std::vector<vtkProp*>& volumes,
+    vtkRenderPass* volumePass, const std::vector<float>& depth);
+  /**
+   * Step 3: the layers to process 0, over each other in visibility order: the result over the
+   * viewport there, nothing on the other processes.
+   */
+  std::vector<float> CompositeLayers(
+    vtkRenderer* ren, VolumeLayer& own, vtkMultiProcessController* controller);
+  /** Step 4: the composited layers blended over the bound framebuffer (premultiplied). */
+  void BlendOver(vtkOpenGLRenderWindow* renWin, const std::vector<float>& over);
+
+  int Viewport[4] = { 0, 0, 0, 0 }; // the renderer's, this frame (x, y, width, height)
+
+  vtkNew<vtkStylizeRankCompositor> Compositor;
+  vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
+  vtkTextureObject* Color = nullptr; // the process's layer (premultiplied colour)
+  vtkTextureObject* Depth = nullptr; // process 0's depth, in the window's format
+  int DepthFormat = 0;
+  vtkTextureObject* Layer = nullptr; // the layers composited, on process 0
+  vtkStylizeScreenQuad Quad;
+};
+
+#endif
