@@ -4,13 +4,17 @@
 #include "vtkBoundingBox.h"
 #include "vtkCallbackCommand.h"
 #include "vtkComicPass.h"
+#include "vtkCompositeRepresentation.h"
 #include "vtkContext2DScalarBarActor.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkLineArtPass.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDefaultPass.h"
+#include "vtkPVLODVolume.h"
 #include "vtkPVProgressHandler.h"
 #include "vtkPVSession.h"
 #include "vtkPVSynchronizedRenderer.h"
@@ -24,6 +28,8 @@
 #include "vtkStylizeFigureWriter.h"
 #include "vtkStylizeGBufferPass.h"
 #include "vtkStylizeLightingPass.h"
+#include "vtkStylizeStylePass.h"
+#include "vtkVolumeRepresentation.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
@@ -132,6 +138,59 @@ void vtkPVStylizeView::SetPatternsAnchored(int anchored)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVStylizeView::AddPlainVolumeDisplay(vtkPVDataRepresentation* display)
+{
+  if (display)
+  {
+    this->PlainVolumeDisplays.emplace_back(display);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::RemoveAllPlainVolumeDisplays()
+{
+  this->PlainVolumeDisplays.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVStylizeView::MarkPlainVolumes()
+{
+  vtkInformationIntegerKey* key = vtkStylizeStylePass::STYLIZE_VOLUME();
+  std::vector<vtkWeakPointer<vtkVolumeRepresentation>> keyed;
+  for (vtkPVDataRepresentation* display : this->PlainVolumeDisplays)
+  {
+    auto* composite = vtkCompositeRepresentation::SafeDownCast(display);
+    auto* volume = vtkVolumeRepresentation::SafeDownCast(
+      composite ? composite->GetActiveRepresentation() : display);
+    vtkVolume* actor = volume ? volume->GetActor() : nullptr;
+    if (!actor)
+    {
+      continue;
+    }
+    if (!actor->GetPropertyKeys())
+    {
+      vtkNew<vtkInformation> keys;
+      actor->SetPropertyKeys(keys);
+    }
+    if (!actor->GetPropertyKeys()->Has(key) || actor->GetPropertyKeys()->Get(key) != 0)
+    {
+      actor->GetPropertyKeys()->Set(key, 0);
+    }
+    keyed.emplace_back(volume);
+  }
+  for (vtkVolumeRepresentation* volume : this->PlainVolumes)
+  {
+    vtkVolume* actor = volume ? volume->GetActor() : nullptr;
+    if (actor && actor->GetPropertyKeys() &&
+      std::find(keyed.begin(), keyed.end(), volume) == keyed.end())
+    {
+      actor->GetPropertyKeys()->Remove(key);
+    }
+  }
+  this->PlainVolumes = std::move(keyed);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVStylizeView::EncodeAnimation(const char* pattern, int fps, const char* output)
 {
   this->FigureResult.clear();
@@ -188,6 +247,8 @@ vtkPVStylizeView::vtkPVStylizeView()
 //------------------------------------------------------------------------------
 vtkPVStylizeView::~vtkPVStylizeView()
 {
+  this->RemoveAllPlainVolumeDisplays();
+  this->MarkPlainVolumes(); // (takes the keys off)
   if (this->SynchronizedRenderers)
   {
     this->SynchronizedRenderers->SetImageProcessingPass(nullptr);
@@ -381,10 +442,11 @@ void vtkPVStylizeView::ConfigurePasses()
   vtkRenderPass* rankPass = style ? static_cast<vtkRenderPass*>(this->RankGBuffer)
                                   : (lighting ? this->LightingPass.GetPointer() : nullptr);
   this->SynchronizedRenderers->SetRenderPass(rankPass);
+  // A style needs the composited depth (IceT pastes it back only when asked); ParaView's own
+  // frames do not ask (with ordered compositing, which carries no depth, IceT reports an error).
+  this->SynchronizedRenderers->SetUseDepthBuffer(style != nullptr);
   if (style)
   {
-    // The composited depth is needed (IceT pastes it back only when asked).
-    this->SynchronizedRenderers->SetUseDepthBuffer(true);
     // After compositing, the style takes the ranks' own normals, positions and directions
     // (composited by depth across the ranks) instead of rebuilding them from the depth.
     style->GetGBufferPass()->SetChannelSource(this->RankGBuffer);
@@ -399,6 +461,10 @@ void vtkPVStylizeView::ConfigurePasses()
     // G-buffer leaves them out of the composited picture and the style draws rank 0's over it
     // (ParaView gives every rank's grid the whole data's bounds).
     this->RankGBuffer->SetLeaveOutAnnotations(style->GetPlainAnnotations());
+    // Volumes the style leaves to ParaView (StylizeVolumes off, a display's StylizeVolume off):
+    // the style draws them over its picture, as in VTK (on several ranks each rank's pieces,
+    // composited in visibility order: depth compositing would keep none of them).
+    this->RankGBuffer->SetLeaveOutVolumes(true);
     if (severalRanks && style->GetTranslucentLayers() == 0 && this->DataNeedsOrderedCompositing &&
       !this->WarnedUnlayered)
     {
@@ -492,6 +558,7 @@ std::vector<vtkProp*> vtkPVStylizeView::HideColorLegends()
 void vtkPVStylizeView::Render(bool interactive, bool skip_rendering)
 {
   this->ConfigurePasses();
+  this->MarkPlainVolumes();
   // Ordered compositing (what ParaView does on several ranks for translucent geometry and
   // volumes) blends the ranks' images without their depth, and a style needs the composited
   // depth: under a style the ranks are composited by depth, translucent surfaces by the style's

@@ -38,6 +38,7 @@
 #include "vtkSmartPointer.h"              // for vtkSmartPointer
 #include "vtkStylizeLightingPass.h"       // for vtkStylizeLightingPass::Models
 #include "vtkStylizeParaViewViewModule.h" // for export macro
+#include "vtkWeakPointer.h"               // for vtkWeakPointer
 
 #include <string> // for std::string
 #include <vector> // for std::vector
@@ -47,6 +48,7 @@ class vtkCommand;
 class vtkComicPass;
 class vtkImageData;
 class vtkPixelArtPass;
+class vtkPVDataRepresentation;
 class vtkProp;
 class vtkSketchPass;
 class vtkLineArtPass;
@@ -54,6 +56,7 @@ class vtkStylizeGBufferPass;
 class vtkStylizeLightingPass;
 class vtkStylizeStylePass;
 class vtkRenderPass;
+class vtkVolumeRepresentation;
 
 class VTKSTYLIZEPARAVIEWVIEW_EXPORT vtkPVStylizeView : public vtkPVRenderView
 {
@@ -175,6 +178,19 @@ public:
    */
   void EncodeAnimation(const char* pattern, int fps, const char* output);
 
+  ///@{
+  /**
+   * The volumes each style leaves to ParaView. A display added here (ParaView's composite
+   * representation, or a volume representation itself) has, while its active representation
+   * is a Volume, that volume's vtkStylizeStylePass::STYLIZE_VOLUME key set to 0 at each render
+   * (drawn as ParaView draws it, over the stylized picture); the key comes off when it leaves
+   * the list. The view's internal PlainVolumeDisplays property calls them: vtkSMStylizeViewProxy
+   * lists there, before each render, the displays whose StylizeVolume is off.
+   */
+  void AddPlainVolumeDisplay(vtkPVDataRepresentation* display);
+  void RemoveAllPlainVolumeDisplays();
+  ///@}
+
 protected:
   friend class vtkPVStylizeViewFigureSource;
 
@@ -241,6 +257,11 @@ protected:
   vtkSmartPointer<vtkCommand> ProgressForward;    // the style's progress to the reporter
   bool ProgressRegistered = false;
   bool ProgressReported = false; // this frame passed on progress below 1
+  /** Sets the STYLIZE_VOLUME key of the plain displays' active volumes, takes it off others. */
+  void MarkPlainVolumes();
+
+  std::vector<vtkWeakPointer<vtkPVDataRepresentation>> PlainVolumeDisplays;
+  std::vector<vtkWeakPointer<vtkVolumeRepresentation>> PlainVolumes; // keyed by the last frame
 
 private:
   vtkPVStylizeView(const vtkPVStylizeView&) = delete;

@@ -4,8 +4,10 @@
 #include "vtkObjectFactory.h"
 #include "vtkRenderWindow.h"
 #include "vtkSMPropertyHelper.h"
+#include "vtkSMProxyProperty.h"
 
 #include <algorithm>
+#include <vector>
 
 vtkStandardNewMacro(vtkSMStylizeViewProxy);
 
@@ -86,4 +88,42 @@ vtkImageData* vtkSMStylizeViewProxy::CaptureWindowInternal(int magX, int magY)
   scale.Set(one, 2);
   this->UpdateVTKObjects();
   return image;
+}
+
+//------------------------------------------------------------------------------
+void vtkSMStylizeViewProxy::Update()
+{
+  this->UpdatePlainVolumes();
+  this->Superclass::Update();
+}
+
+//------------------------------------------------------------------------------
+void vtkSMStylizeViewProxy::UpdatePlainVolumes()
+{
+  auto* shown = vtkSMProxyProperty::SafeDownCast(this->GetProperty("Representations"));
+  auto* plain = vtkSMProxyProperty::SafeDownCast(this->GetProperty("PlainVolumeDisplays"));
+  if (!shown || !plain)
+  {
+    return;
+  }
+  std::vector<vtkSMProxy*> displays;
+  for (unsigned int i = 0; i < shown->GetNumberOfProxies(); ++i)
+  {
+    vtkSMProxy* display = shown->GetProxy(i);
+    vtkSMProperty* stylize = display ? display->GetProperty("StylizeVolume") : nullptr;
+    if (stylize && vtkSMPropertyHelper(stylize).GetAsInt() == 0)
+    {
+      displays.push_back(display);
+    }
+  }
+  bool same = displays.size() == plain->GetNumberOfProxies();
+  for (unsigned int i = 0; same && i < displays.size(); ++i)
+  {
+    same = plain->GetProxy(i) == displays[i];
+  }
+  if (!same)
+  {
+    plain->SetProxies(static_cast<unsigned int>(displays.size()), displays.data());
+    this->UpdateProperty("PlainVolumeDisplays");
+  }
 }

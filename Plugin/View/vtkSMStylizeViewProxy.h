@@ -23,6 +23,12 @@
  * then restored, when it is at most MaxOnePieceSide pixels a side and MaxOnePiecePixels in all;
  * otherwise it tiles as ParaView.
  *
+ * A display's StylizeVolume (a property this plugin gives ParaView's representations with a
+ * Volume type) leaves its volume to ParaView in every style: before each render (Update()) this
+ * proxy lists the displays with StylizeVolume off in the view's internal PlainVolumeDisplays
+ * property, pushed to every rank (vtkPVStylizeView::AddPlainVolumeDisplay()) when the list
+ * changes.
+ *
  * It behaves as vtkSMRenderViewProxy in every other way.
  */
 
@@ -45,6 +51,9 @@ public:
   /** As vtkSMProxy; after a transparent-background capture, also releases the background. */
   int LoadXMLState(vtkPVXMLElement* element, vtkSMProxyLocator* locator) override;
 
+  /** As vtkSMViewProxy; first lists the volumes left to ParaView (PlainVolumeDisplays). */
+  void Update() override;
+
   /** The largest side of a screenshot rendered in one piece, pixels. */
   static constexpr int MaxOnePieceSide = 8192;
   /** The most pixels of a screenshot rendered in one piece (8K UHD fits). */
@@ -64,6 +73,12 @@ protected:
   void PushFreezeBackground(bool freeze);
 
   bool BackgroundFrozen = false;
+
+  /**
+   * Sets the view's PlainVolumeDisplays to the shown displays whose StylizeVolume is 0, and
+   * pushes it when that changed.
+   */
+  void UpdatePlainVolumes();
 
 private:
   vtkSMStylizeViewProxy(const vtkSMStylizeViewProxy&) = delete;

@@ -14,6 +14,13 @@ realdata.volumes' skull (Testing/RealData/volumes.py), 400x300. Writes OUTPUT_PR
   haze    the comic with VolumeHaze 0.5 in HAZE_SHELL (the tissue below the opacity threshold as
           a translucent surface)
   solid, solid-lines   the comic and the line art with VolumeHaze 0 (the solid part alone)
+  plain-comic, plain-lines   the comic and the line art with the display's StylizeVolume off
+          (the volume left to ParaView); restyled: the comic with it on again
+  sphere-vtk, sphere-plain-comic, sphere-plain-lines   an opaque sphere inside the skull, partly
+          behind its bone: Style None, and the comic and the line art with StylizeVolume off;
+          sphere-alone: the sphere without the volume (Style None)
+  top-vtk, top-plain-lines   seen from above, across the cut between the pieces: Style None,
+          and the line art with StylizeVolume off
   grid-<style>   the data axes grid on: vtk (Style None) and each style
   disk-<style>   ParaView's disk_out_ref simulation, an unstructured volume redistributed over
                  the ranks, seen across the cut between their pieces: vtk and each style
@@ -25,8 +32,9 @@ import sys
 
 import paraview.simple as simple
 from paraview.simple import (ColorBy, CreateView, ExodusIIReader, GetColorTransferFunction,
-                             GetOpacityTransferFunction, MergeBlocks, RedistributeDataSet, Render,
-                             SaveScreenshot, Show, StreamTracer, XMLImageDataReader)
+                             GetOpacityTransferFunction, Hide, MergeBlocks, RedistributeDataSet,
+                             Render, SaveScreenshot, Show, Sphere, StreamTracer,
+                             XMLImageDataReader)
 from stylize_pv_scene import make_view
 
 prefix, data = sys.argv[1], sys.argv[2]
@@ -80,6 +88,34 @@ view.Style = 4
 view.LineArtVolumeHaze = 0.0
 shot("solid-lines")
 view.LineArtVolumeHaze = 1.0
+# The volume left to ParaView (the display's StylizeVolume off) in the comic and the line art,
+# then stylized again; then with an opaque sphere inside the skull, partly behind its bone.
+display.StylizeVolume = 0
+for style, label in ((1, "plain-comic"), (4, "plain-lines")):
+    view.Style = style
+    shot(label)
+display.StylizeVolume = 1
+view.Style = 1
+shot("restyled")
+box = reader.GetDataInformation().GetBounds()
+sphere = Sphere(Center=[0.75 * box[0] + 0.25 * box[1], 0.55 * box[2] + 0.45 * box[3],
+                        0.5 * (box[4] + box[5])],
+                Radius=0.2 * (box[1] - box[0]), ThetaResolution=48, PhiResolution=48)
+sphere_display = Show(sphere, view)
+sphere_display.ColorArrayName = ["POINTS", ""]
+sphere_display.AmbientColor = sphere_display.DiffuseColor = [0.2, 0.4, 0.9]
+view.Style = 0
+shot("sphere-vtk")
+display.StylizeVolume = 0
+for style, label in ((1, "sphere-plain-comic"), (4, "sphere-plain-lines")):
+    view.Style = style
+    shot(label)
+display.StylizeVolume = 1
+display.Visibility = 0
+view.Style = 0
+shot("sphere-alone")
+display.Visibility = 1
+Hide(sphere, view)
 view.Style = 0
 background = list(view.Background)
 for label, color in (("white", [1.0, 1.0, 1.0]), ("black", [0.0, 0.0, 0.0])):
@@ -92,6 +128,20 @@ for style, label in enumerate(["vtk", "comic", "pixel", "sketch", "lines"]):
     view.Style = style
     shot("grid-" + label)
 display.DataAxesGrid.GridAxesVisibility = 0
+# Seen from above, across the cut between the ranks' pieces (the volume is read in slabs along
+# z): ParaView's picture, and the line art with the volume left to ParaView.
+camera = [list(view.CameraPosition), list(view.CameraFocalPoint), list(view.CameraViewUp)]
+view.CameraPosition = [0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]), 4.0 * box[5]]
+view.CameraFocalPoint = [0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]), 0.5 * box[5]]
+view.CameraViewUp = [0.0, 1.0, 0.0]
+view.ResetCamera()
+view.Style = 0
+shot("top-vtk")
+display.StylizeVolume = 0
+view.Style = 4
+shot("top-plain-lines")
+display.StylizeVolume = 1
+view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = camera
 view.Style = 0
 display.Visibility = 0
 shot("bare")
@@ -125,6 +175,11 @@ view.CameraViewUp = [0.0, 0.0, 1.0]
 for style, label in enumerate(["vtk", "comic", "pixel", "sketch", "lines"]):
     view.Style = style
     shot("disk-" + label)
+# left to ParaView: on 2 ranks the pieces of a k-d split composited in visibility order
+disk_display.StylizeVolume = 0
+view.Style = 4
+shot("disk-plain-lines")
+disk_display.StylizeVolume = 1
 # Streamlines of the flow (opaque dark lines) running down into the hot dome, inside the volume's
 # material; disk-streams-<style> for vtk, comic and lines.
 streams = StreamTracer(Input=split, SeedType="Point Cloud")

@@ -216,6 +216,17 @@ def run():
           % display.Representation)
     check(display.GetProperty("StylizeSubjectFactor") is not None,
           "display property StylizeSubjectFactor exists")
+    # the Wavelet as a Volume: its Stylize Volume property, on, shown with Volume only
+    volume = Show(wavelet, view)
+    volume.SetRepresentationType("Volume")
+    stylize = volume.GetProperty("StylizeVolume")
+    check(stylize is not None and volume.StylizeVolume == 1,
+          "a Volume display's StylizeVolume exists and is on")
+    decorator = stylize.SMProperty.GetHints().FindNestedElementByName(
+        "PropertyWidgetDecorator") if stylize and stylize.SMProperty.GetHints() else None
+    check(decorator is not None and decorator.GetAttribute("property") == "Representation" and
+          decorator.GetAttribute("value") == "Volume", "StylizeVolume is shown with Volume only")
+    Hide(wavelet, view)
     view.CameraPosition = [30.0, -45.0, 25.0]
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 0.0, 1.0]

@@ -27,6 +27,13 @@ along the cut between the pieces: its 2-rank pictures hold no ink beyond 1 px of
 pictures' (at most 2% of it, or 40 pixels) and differ at most at 1.5% of the pixels. With
 streamlines running down into its hot dome, the comic and the line art draw them dark where
 ParaView's picture shows them over the dome (at least 0.8 of those pixels, 1 and 2 ranks).
+With the display's StylizeVolume off, the comic and the line art leave the volume as ParaView
+draws it (at least 0.95 of its region within 16 levels, 1 and 2 ranks; the disk's line art too,
+and the skull from above, its 2 ranks' pieces put over each other in visibility order), and on
+again the comic
+is its default picture; with an opaque sphere inside the skull they draw the volume over the
+stylized sphere where ParaView's picture hides the sphere behind bone (at least 0.9 of those
+pixels within 16 levels of ParaView's, 1 and 2 ranks).
 Prints a table (the images are in RANKS_DIR).
 """
 import os
@@ -120,6 +127,66 @@ for label, default in (("haze", "comic"), ("solid", "comic"), ("solid-lines", "l
         failures.append("%s: %.4f of the %s's picture changed" % (label, drawn, default))
     if split > 0.005:
         failures.append("%s: 2 ranks differ from 1 at %.2f%% of the pixels" % (label, 100 * split))
+# A display's StylizeVolume off leaves its volume to ParaView in every style (the opt-out per
+# volume): in the volume's region the comic and the line art show ParaView's picture (at least
+# 0.95 of the pixels within 16 levels), on 1 rank and on 2; on again, the comic is its default
+# picture (at most 0.5% of the pixels more than 16 levels apart).
+for ranks, prefix in ((1, one), (2, two)):
+    vtk = image(prefix, "vtk").astype(int)
+    for label in ("plain-comic", "plain-lines"):
+        left = float(np.mean(np.abs(image(prefix, label).astype(int) - vtk).max(axis=2)[region]
+                             <= 16))
+        print("%d rank(s) %s: %.3f of the volume's region as ParaView draws it" % (ranks, label,
+                                                                                 left))
+        if left < 0.95:
+            failures.append("%d rank(s) %s: %.3f of the volume's region left as ParaView draws "
+                            "it" % (ranks, label, left))
+    # (seen from above, the skull's 2 slabs overlap in the picture: put over each other in
+    # visibility order, the upper in front)
+    top = image(prefix, "top-vtk").astype(int)
+    top_region = np.abs(top - bare[0, 0].astype(int)).sum(axis=2) > 24
+    left = float(np.mean(np.abs(image(prefix, "top-plain-lines").astype(int) - top)
+                         .max(axis=2)[top_region] <= 16))
+    print("%d rank(s) top-plain-lines: %.3f of the volume's region as ParaView draws it"
+          % (ranks, left))
+    if left < 0.95:
+        failures.append("%d rank(s) top-plain-lines: %.3f of the volume's region left as "
+                        "ParaView draws it" % (ranks, left))
+    # (the disk's pieces on 2 ranks, a k-d split, put over each other in visibility order)
+    disk_vtk = image(prefix, "disk-vtk").astype(int)
+    disk_region = np.abs(disk_vtk - image(prefix, "bare").astype(int)).sum(axis=2) > 24
+    left = float(np.mean(np.abs(image(prefix, "disk-plain-lines").astype(int) - disk_vtk)
+                         .max(axis=2)[disk_region] <= 16))
+    print("%d rank(s) disk-plain-lines: %.3f of the disk's region as ParaView draws it"
+          % (ranks, left))
+    if left < 0.95:
+        failures.append("%d rank(s) disk-plain-lines: %.3f of the disk's region left as ParaView "
+                        "draws it" % (ranks, left))
+    again = float(np.mean(np.abs(image(prefix, "restyled").astype(int) -
+                                 image(prefix, "comic").astype(int)).max(axis=2) > 16))
+    if again > 0.005:
+        failures.append("%d rank(s): StylizeVolume on again differs from the comic at %.2f%% of "
+                        "the pixels" % (ranks, 100 * again))
+# An opaque sphere inside the skull, partly behind its bone, the volume left to ParaView: where
+# ParaView's picture shows none of the sphere through the bone (the sphere's footprint where the
+# picture is within 8 levels of the one without it), the comic and the line art show the volume
+# as ParaView does (at least 0.9 of those pixels within 16 levels): the style draws the volume
+# over its picture, as in VTK (on 2 ranks each rank's piece, composited in visibility order; in
+# the ranks' pictures before the style, depth compositing kept none of it: 0.004 of the region
+# and 0.000 of these pixels in the line art).
+for ranks, prefix in ((1, one), (2, two)):
+    with_sphere = image(prefix, "sphere-vtk").astype(int)
+    footprint = np.abs(image(prefix, "sphere-alone").astype(int) -
+                       image(prefix, "bare").astype(int)).sum(axis=2) > 24
+    hidden = footprint & (np.abs(with_sphere - image(prefix, "vtk").astype(int)).max(axis=2) <= 8)
+    for label in ("sphere-plain-comic", "sphere-plain-lines"):
+        shown = float(np.mean(np.abs(image(prefix, label).astype(int) - with_sphere).max(axis=2)
+                              [hidden] <= 16)) if hidden.any() else 0.0
+        print("%d rank(s) %s: the volume over the sphere as ParaView draws it at %.3f of %d pixels"
+              % (ranks, label, shown, hidden.sum()))
+        if hidden.sum() < 200 or shown < 0.9:
+            failures.append("%d rank(s) %s: the volume over the sphere as ParaView draws it at "
+                            "%.3f of %d pixels" % (ranks, label, shown, hidden.sum()))
 # The unstructured volume split over 2 ranks (disk_out_ref redistributed): its pieces must not be
 # closed along the cut between them, which the sketch and the line art drew as a line across the
 # volume: the 2-rank picture's ink (no channel above 64) farther than 1 px from the 1-rank
