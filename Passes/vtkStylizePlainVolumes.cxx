@@ -93,59 +93,6 @@ vtkStylizePlainVolumes::~vtkStylizePlainVolumes()
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizePlainVolumes::InFront(const double a[6], const double b[6], bool parallel,
-  const double eye[3], const double direction[3])
-{
-  int axis = 0;
-  bool aLow = true;
-  double gap = -VTK_DOUBLE_MAX;
-  for (int k = 0; k < 3; ++k)
-  {
-    const double below = b[2 * k] - a[2 * k + 1]; // a below b along k
-    const double above = a[2 * k] - b[2 * k + 1]; // a above b
-    if (below > gap)
-    {
-      gap = below;
-      axis = k;
-      aLow = true;
-    }
-    if (above > gap)
-    {
-      gap = above;
-      axis = k;
-      aLow = false;
-    }
-  }
-  const double sizeA = a[2 * axis + 1] - a[2 * axis];
-  const double sizeB = b[2 * axis + 1] - b[2 * axis];
-  if (gap > -0.25 * std::min(sizeA, sizeB))
-  {
-    // (pieces of a partition share a layer of cells at most: the plane between them)
-    const double plane =
-      aLow ? 0.5 * (a[2 * axis + 1] + b[2 * axis]) : 0.5 * (b[2 * axis + 1] + a[2 * axis]);
-    const bool lowInFront = parallel ? direction[axis] > 0.0 : eye[axis] < plane;
-    return aLow == lowInFront;
-  }
-  double da = 0.0, db = 0.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    const double ca = 0.5 * (a[2 * k] + a[2 * k + 1]);
-    const double cb = 0.5 * (b[2 * k] + b[2 * k + 1]);
-    if (parallel)
-    {
-      da += ca * direction[k];
-      db += cb * direction[k];
-    }
-    else
-    {
-      da += (ca - eye[k]) * (ca - eye[k]);
-      db += (cb - eye[k]) * (cb - eye[k]);
-    }
-  }
-  return da < db;
-}
-
-//------------------------------------------------------------------------------
 void vtkStylizePlainVolumes::Render(const vtkRenderState* s, const std::vector<vtkProp*>& volumes,
   vtkRenderPass* volumePass, vtkMultiProcessController* controller)
 {
@@ -325,8 +272,9 @@ std::vector<float> vtkStylizePlainVolumes::CompositeLayers(
   // (insertion: front first; a partition's boxes order consistently)
   for (size_t i = 1; i < layers.size(); ++i)
   {
-    for (size_t j = i;
-         j > 0 && InFront(layers[j].Box.data(), layers[j - 1].Box.data(), parallel, eye, direction);
+    for (size_t j = i; j > 0 &&
+         vtkStylizeRankCompositor::InFront(
+           layers[j].Box.data(), layers[j - 1].Box.data(), parallel, eye, direction);
          --j)
     {
       std::swap(layers[j], layers[j - 1]);

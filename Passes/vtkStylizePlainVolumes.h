@@ -13,9 +13,9 @@
  *    colour over transparent black, against that depth (in the window's depth format, which
  *    VTK's GPU ray caster copies the depth from);
  * 3. the layers go to process 0, which puts them over each other in visibility order (the
- *    pieces' bounding boxes seen from the camera: each process's pieces are one box of a
- *    partition such as a reader's extents or a k-d split) and blends the result over its
- *    picture.
+ *    pieces' bounding boxes seen from the camera, vtkStylizeRankCompositor::InFront(): each
+ *    process's pieces are one box of a partition such as a reader's extents or a k-d split)
+ *    and blends the result over its picture.
  */
 
 #ifndef vtkStylizePlainVolumes_h
@@ -54,15 +54,6 @@ public:
    */
   void Render(const vtkRenderState* s, const std::vector<vtkProp*>& volumes,
     vtkRenderPass* volumePass, vtkMultiProcessController* controller);
-
-  /**
-   * Whether the box `a` (xmin, xmax, ymin, ymax, zmin, zmax) lies in front of `b` seen from a
-   * camera at `eye` (perspective) or looking along `direction` (parallel): on the camera's side
-   * of the plane between them along the axis where they are farthest apart, or, where they
-   * overlap on every axis by more than a quarter of their sizes, the nearer by its centre.
-   */
-  static bool InFront(const double a[6], const double b[6], bool parallel, const double eye[3],
-    const double direction[3]);
 
   /** Frees the layer's textures, framebuffer and quad. */
   void ReleaseGraphicsResources(vtkWindow* w);

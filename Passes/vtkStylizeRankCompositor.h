@@ -6,7 +6,9 @@
  * depth and each channel. Reduce() sends every process's part to process 0, which keeps the
  * nearest surface at every pixel (a binary tree, log2(N) steps; ties go to the lower process);
  * BroadcastDepth() gives process 0's rectangle and depth to every process. The G-buffer's own
- * textures are read into parts and written back from them by vtkStylizeGBufferPass.
+ * textures are read into parts and written back from them by vtkStylizeGBufferPass. InFront()
+ * orders the processes' pieces of a volume for compositing them over each other
+ * (vtkStylizePlainVolumes).
  */
 
 #ifndef vtkStylizeRankCompositor_h
@@ -73,6 +75,15 @@ public:
 
   /** Whether rect lies inside a w x h image (an empty rectangle does). */
   static bool InsideImage(const int rect[4], int w, int h);
+
+  /**
+   * Whether the box `a` (xmin, xmax, ymin, ymax, zmin, zmax) lies in front of `b` seen from a
+   * camera at `eye` (perspective) or looking along `direction` (parallel): on the camera's side
+   * of the plane between them along the axis where they are farthest apart, or, where they
+   * overlap on every axis by more than a quarter of their sizes, the nearer by its centre.
+   */
+  static bool InFront(const double a[6], const double b[6], bool parallel, const double eye[3],
+    const double direction[3]);
 
 protected:
   vtkStylizeRankCompositor() = default;

@@ -87,6 +87,26 @@ inline int Run(vtkMultiProcessController* controller)
   vtkStylizeRankCompositor::UnionRect(a, empty, u);
   check(u[0] == 0 && u[1] == 0 && u[2] == 4 && u[3] == 4, "UnionRect with an empty rect");
   check(vtkStylizeRankCompositor::InsideImage(b, 8, 8), "InsideImage inside");
+  // InFront: two slabs of a partition along z sharing a layer of cells, seen from above and
+  // below (perspective: the eye's side of the plane between them; parallel: the direction),
+  // side by side along x, and a box inside another (the nearer centre)
+  using C = vtkStylizeRankCompositor;
+  const double lower[6] = { 0, 1, 0, 1, 0, 0.55 }, upper[6] = { 0, 1, 0, 1, 0.5, 1 };
+  const double above[3] = { 0.5, 0.5, 5 }, below[3] = { 0.5, 0.5, -5 };
+  const double down[3] = { 0, 0, -1 }, up[3] = { 0, 0, 1 };
+  check(
+    C::InFront(upper, lower, false, above, down) && !C::InFront(lower, upper, false, above, down),
+    "InFront: the upper slab first from above");
+  check(C::InFront(lower, upper, false, below, up) && !C::InFront(upper, lower, false, below, up),
+    "InFront: the lower slab first from below");
+  check(C::InFront(upper, lower, true, below, down) && C::InFront(lower, upper, true, above, up),
+    "InFront: parallel projection follows the direction, not the position");
+  const double left[6] = { 0, 1, 0, 1, 0, 1 }, right[6] = { 1, 2, 0, 1, 0, 1 };
+  const double side[3] = { 5, 0.5, 0.5 }, west[3] = { -1, 0, 0 };
+  check(C::InFront(right, left, false, side, west), "InFront: side by side, the eye's side");
+  const double outer[6] = { 0, 4, 0, 4, 0, 4 }, inner[6] = { 1, 3, 1, 3, 0, 2.5 };
+  check(C::InFront(inner, outer, false, below, up) && !C::InFront(inner, outer, false, above, down),
+    "InFront: overlapping boxes, the nearer centre");
   const int out[4] = { 6, 0, 4, 4 }, negative[4] = { -1, 0, 2, 2 };
   check(!vtkStylizeRankCompositor::InsideImage(out, 8, 8), "InsideImage past the width");
   check(!vtkStylizeRankCompositor::InsideImage(negative, 8, 8), "InsideImage negative origin");
