@@ -72,6 +72,15 @@ def shot(label):
     SaveScreenshot("%s-%s.png" % (prefix, label), view, ImageResolution=SIZE)
 
 
+def plain_shots(shown, shots):
+    """The (style, label) shots with the display `shown` left to ParaView (StylizeVolume off)."""
+    shown.StylizeVolume = 0
+    for style, label in shots:
+        view.Style = style
+        shot(label)
+    shown.StylizeVolume = 1
+
+
 view.PixelArtPalette = 2
 for style, label in enumerate(["vtk", "comic", "pixel", "sketch", "lines"]):
     view.Style = style
@@ -90,11 +99,7 @@ shot("solid-lines")
 view.LineArtVolumeHaze = 1.0
 # The volume left to ParaView (the display's StylizeVolume off) in the comic and the line art,
 # then stylized again; then with an opaque sphere inside the skull, partly behind its bone.
-display.StylizeVolume = 0
-for style, label in ((1, "plain-comic"), (4, "plain-lines")):
-    view.Style = style
-    shot(label)
-display.StylizeVolume = 1
+plain_shots(display, ((1, "plain-comic"), (4, "plain-lines")))
 view.Style = 1
 shot("restyled")
 box = reader.GetDataInformation().GetBounds()
@@ -106,11 +111,7 @@ sphere_display.ColorArrayName = ["POINTS", ""]
 sphere_display.AmbientColor = sphere_display.DiffuseColor = [0.2, 0.4, 0.9]
 view.Style = 0
 shot("sphere-vtk")
-display.StylizeVolume = 0
-for style, label in ((1, "sphere-plain-comic"), (4, "sphere-plain-lines")):
-    view.Style = style
-    shot(label)
-display.StylizeVolume = 1
+plain_shots(display, ((1, "sphere-plain-comic"), (4, "sphere-plain-lines")))
 display.Visibility = 0
 view.Style = 0
 shot("sphere-alone")
@@ -137,10 +138,7 @@ view.CameraViewUp = [0.0, 1.0, 0.0]
 view.ResetCamera()
 view.Style = 0
 shot("top-vtk")
-display.StylizeVolume = 0
-view.Style = 4
-shot("top-plain-lines")
-display.StylizeVolume = 1
+plain_shots(display, ((4, "top-plain-lines"),))
 view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = camera
 view.Style = 0
 display.Visibility = 0
@@ -176,10 +174,7 @@ for style, label in enumerate(["vtk", "comic", "pixel", "sketch", "lines"]):
     view.Style = style
     shot("disk-" + label)
 # left to ParaView: on 2 ranks the pieces of a k-d split composited in visibility order
-disk_display.StylizeVolume = 0
-view.Style = 4
-shot("disk-plain-lines")
-disk_display.StylizeVolume = 1
+plain_shots(disk_display, ((4, "disk-plain-lines"),))
 # Streamlines of the flow (opaque dark lines) running down into the hot dome, inside the volume's
 # material; disk-streams-<style> for vtk, comic and lines.
 streams = StreamTracer(Input=split, SeedType="Point Cloud")

@@ -127,6 +127,18 @@ for label, default in (("haze", "comic"), ("solid", "comic"), ("solid-lines", "l
         failures.append("%s: %.4f of the %s's picture changed" % (label, drawn, default))
     if split > 0.005:
         failures.append("%s: 2 ranks differ from 1 at %.2f%% of the pixels" % (label, 100 * split))
+
+
+def left_as_paraview(ranks, prefix, label, reference, region):
+    """Fails unless `label` is within 16 levels of `reference` at 0.95 of `region`'s pixels."""
+    left = float(np.mean(np.abs(image(prefix, label).astype(int) - reference).max(axis=2)[region]
+                         <= 16))
+    print("%d rank(s) %s: %.3f of the volume's region as ParaView draws it" % (ranks, label, left))
+    if left < 0.95:
+        failures.append("%d rank(s) %s: %.3f of the volume's region left as ParaView draws it"
+                        % (ranks, label, left))
+
+
 # A display's StylizeVolume off leaves its volume to ParaView in every style (the opt-out per
 # volume): in the volume's region the comic and the line art show ParaView's picture (at least
 # 0.95 of the pixels within 16 levels), on 1 rank and on 2; on again, the comic is its default
@@ -134,34 +146,15 @@ for label, default in (("haze", "comic"), ("solid", "comic"), ("solid-lines", "l
 for ranks, prefix in ((1, one), (2, two)):
     vtk = image(prefix, "vtk").astype(int)
     for label in ("plain-comic", "plain-lines"):
-        left = float(np.mean(np.abs(image(prefix, label).astype(int) - vtk).max(axis=2)[region]
-                             <= 16))
-        print("%d rank(s) %s: %.3f of the volume's region as ParaView draws it" % (ranks, label,
-                                                                                 left))
-        if left < 0.95:
-            failures.append("%d rank(s) %s: %.3f of the volume's region left as ParaView draws "
-                            "it" % (ranks, label, left))
+        left_as_paraview(ranks, prefix, label, vtk, region)
     # (seen from above, the skull's 2 slabs overlap in the picture: put over each other in
-    # visibility order, the upper in front)
+    # visibility order, the upper in front; the disk's pieces on 2 ranks are a k-d split)
     top = image(prefix, "top-vtk").astype(int)
-    top_region = np.abs(top - bare[0, 0].astype(int)).sum(axis=2) > 24
-    left = float(np.mean(np.abs(image(prefix, "top-plain-lines").astype(int) - top)
-                         .max(axis=2)[top_region] <= 16))
-    print("%d rank(s) top-plain-lines: %.3f of the volume's region as ParaView draws it"
-          % (ranks, left))
-    if left < 0.95:
-        failures.append("%d rank(s) top-plain-lines: %.3f of the volume's region left as "
-                        "ParaView draws it" % (ranks, left))
-    # (the disk's pieces on 2 ranks, a k-d split, put over each other in visibility order)
+    left_as_paraview(ranks, prefix, "top-plain-lines", top,
+                     np.abs(top - bare[0, 0].astype(int)).sum(axis=2) > 24)
     disk_vtk = image(prefix, "disk-vtk").astype(int)
-    disk_region = np.abs(disk_vtk - image(prefix, "bare").astype(int)).sum(axis=2) > 24
-    left = float(np.mean(np.abs(image(prefix, "disk-plain-lines").astype(int) - disk_vtk)
-                         .max(axis=2)[disk_region] <= 16))
-    print("%d rank(s) disk-plain-lines: %.3f of the disk's region as ParaView draws it"
-          % (ranks, left))
-    if left < 0.95:
-        failures.append("%d rank(s) disk-plain-lines: %.3f of the disk's region left as ParaView "
-                        "draws it" % (ranks, left))
+    left_as_paraview(ranks, prefix, "disk-plain-lines", disk_vtk,
+                     np.abs(disk_vtk - image(prefix, "bare").astype(int)).sum(axis=2) > 24)
     again = float(np.mean(np.abs(image(prefix, "restyled").astype(int) -
                                  image(prefix, "comic").astype(int)).max(axis=2) > 16))
     if again > 0.005:
