@@ -107,23 +107,24 @@ void vtkStylizePlainVolumes::Render(const vtkRenderState* s, const std::vector<v
   }
   int* v = this->Viewport;
   ren->GetTiledSizeAndOrigin(&v[2], &v[3], &v[0], &v[1]);
-  const std::vector<float> depth = this->ShareDepth(renWin, controller);
+  this->ShareDepth(renWin, controller);
   VolumeLayer own;
-  Crop(this->DrawLayer(s, volumes, volumePass, depth), v[2], v[3], own.Pixels);
+  this->DrawLayer(s, volumes, volumePass);
+  Crop(this->Pixels, v[2], v[3], own.Pixels);
   own.Box = BoxOf(volumes);
-  const std::vector<float> over = this->CompositeLayers(ren, own, controller);
-  if (!over.empty())
+  if (this->CompositeLayers(ren, own, controller))
   {
-    this->BlendOver(renWin, over);
+    this->BlendOver(renWin);
   }
 }
 
 //------------------------------------------------------------------------------
-std::vector<float> vtkStylizePlainVolumes::ShareDepth(
+void vtkStylizePlainVolumes::ShareDepth(
   vtkOpenGLRenderWindow* renWin, vtkMultiProcessController* controller)
 {
   const int* v = this->Viewport;
-  Part depth;
+  Part& depth = this->Shared;
+  std::fill(depth.Rect, depth.Rect + 4, 0);
   if (controller->GetLocalProcessId() == 0)
   {
     const int rect[4] = { 0, 0, v[2], v[3] };
@@ -140,25 +141,26 @@ std::vector<float> vtkStylizePlainVolumes::ShareDepth(
   this->Compositor->SetController(controller);
   this->Compositor->BroadcastDepth(depth, v[2], v[3]);
   this->Compositor->SetController(nullptr);
-  std::vector<float> whole(static_cast<size_t>(v[2]) * v[3], 1.0f);
+  this->Depths.assign(static_cast<size_t>(v[2]) * v[3], 1.0f);
   for (int y = 0; y < depth.Rect[3]; ++y)
   {
     std::copy_n(&depth.Depth[static_cast<size_t>(y) * depth.Rect[2]], depth.Rect[2],
-      &whole[static_cast<size_t>(y + depth.Rect[1]) * v[2] + depth.Rect[0]]);
+      &this->Depths[static_cast<size_t>(y + depth.Rect[1]) * v[2] + depth.Rect[0]]);
   }
-  return whole;
 }
 
 //------------------------------------------------------------------------------
-std::vector<float> vtkStylizePlainVolumes::DrawLayer(const vtkRenderState* s,
-  const std::vector<vtkProp*>& volumes, vtkRenderPass* volumePass, const std::vector<float>& depth)
+void vtkStylizePlainVolumes::DrawLayer(
+  const vtkRenderState* s, const std::vector<vtkProp*>& volumes, vtkRenderPass* volumePass)
 {
   const int* v = this->Viewport;
-  std::vector<float> rgba(4 * static_cast<size_t>(v[2]) * v[3], 0.0f);
+  std::vector<float>& rgba = this->Pixels;
+  rgba.assign(4 * static_cast<size_t>(v[2]) * v[3], 0.0f);
   if (volumes.empty())
   {
-    return rgba;
+    return;
   }
+  const std::vector<float>& depth = this->Depths;
   vtkRenderer* ren = s->GetRenderer();
   auto* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
@@ -172,7 +174,8 @@ std::vector<float> vtkStylizePlainVolumes::DrawLayer(const vtkRenderState* s,
   this->Depth->Activate();
   if (format == GL_DEPTH24_STENCIL8)
   {
-    std::vector<GLuint> packed(depth.size());
+    std::vector<GLuint>& packed = this->Packed;
+    packed.resize(depth.size());
     for (size_t i = 0; i < depth.size(); ++i)
     {
       const double d = std::min(std::max(static_cast<double>(depth[i]), 0.0), 1.0);
@@ -218,11 +221,10 @@ std::vector<float> vtkStylizePlainVolumes::DrawLayer(const vtkRenderState* s,
     glReadPixels(v[0], v[1], v[2], v[3], GL_RGBA, GL_FLOAT, rgba.data());
   }
   fbo->RestorePreviousBindingsAndBuffers();
-  return rgba;
 }
 
 //------------------------------------------------------------------------------
-std::vector<float> vtkStylizePlainVolumes::CompositeLayers(
+bool vtkStylizePlainVolumes::CompositeLayers(
   vtkRenderer* ren, VolumeLayer& own, vtkMultiProcessController* controller)
 {
   const int vw = this->Viewport[2];
@@ -235,7 +237,7 @@ std::vector<float> vtkStylizePlainVolumes::CompositeLayers(
     {
       controller->Send(own.Pixels.Channels[0].data(), 4 * own.Pixels.Area(), 0, LayerTag + 2);
     }
-    return std::vector<float>();
+    return false;
   }
   std::vector<VolumeLayer> layers;
   layers.push_back(std::move(own));
@@ -262,7 +264,7 @@ std::vector<float> vtkStylizePlainVolumes::CompositeLayers(
     layers.end());
   if (layers.empty())
   {
-    return std::vector<float>();
+    return false;
   }
   vtkCamera* camera = ren->GetActiveCamera();
   const bool parallel = camera->GetParallelProjection() != 0;
@@ -281,7 +283,8 @@ std::vector<float> vtkStylizePlainVolumes::CompositeLayers(
     }
   }
   // premultiplied colours, front to back: what lies behind shows through what is in front
-  std::vector<float> over(4 * static_cast<size_t>(vw) * vh, 0.0f);
+  std::vector<float>& over = this->Over;
+  over.assign(4 * static_cast<size_t>(vw) * vh, 0.0f);
   for (const VolumeLayer& layer : layers)
   {
     const Part& p = layer.Pixels;
@@ -299,18 +302,17 @@ std::vector<float> vtkStylizePlainVolumes::CompositeLayers(
       }
     }
   }
-  return over;
+  return true;
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizePlainVolumes::BlendOver(
-  vtkOpenGLRenderWindow* renWin, const std::vector<float>& over)
+void vtkStylizePlainVolumes::BlendOver(vtkOpenGLRenderWindow* renWin)
 {
   const int* v = this->Viewport;
   vtkOpenGLState* ostate = renWin->GetState();
   vtkStylizeShaderUtilities::EnsureScreenTexture(this->Layer, renWin, v[2], v[3], GL_RGBA32F);
   this->Layer->Activate();
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, v[2], v[3], GL_RGBA, GL_FLOAT, over.data());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, v[2], v[3], GL_RGBA, GL_FLOAT, this->Over.data());
   static const std::string declarations = std::string(vtkStylizeDepthFS) + vtkStylizeCompositeFS;
   vtkShaderProgram* program =
     this->Quad.Prepare(renWin, declarations, "  stylizeCompositeLayer();\n");

@@ -73,21 +73,26 @@ private:
     std::array<double, 6> Box = { { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 } };
   };
 
-  /** Step 1: process 0's depth over the viewport (rows bottom to top) on every process. */
-  std::vector<float> ShareDepth(vtkOpenGLRenderWindow* renWin, vtkMultiProcessController* c);
-  /** Step 2: this process's volumes against `depth`, read back as RGBA over the viewport. */
-  std::vector<float> DrawLayer(const vtkRenderState* s, const std::vector<vtkProp*>& volumes,
-    vtkRenderPass* volumePass, const std::vector<float>& depth);
+  /** Step 1: process 0's depth over the viewport into Depths, on every process. */
+  void ShareDepth(vtkOpenGLRenderWindow* renWin, vtkMultiProcessController* c);
+  /** Step 2: this process's volumes against Depths, read back into Pixels (RGBA). */
+  void DrawLayer(
+    const vtkRenderState* s, const std::vector<vtkProp*>& volumes, vtkRenderPass* volumePass);
   /**
-   * Step 3: the layers to process 0, over each other in visibility order: the result over the
-   * viewport there, nothing on the other processes.
+   * Step 3: the layers to process 0, over each other in visibility order into Over. Returns
+   * whether Over holds any (false on the other processes).
    */
-  std::vector<float> CompositeLayers(
-    vtkRenderer* ren, VolumeLayer& own, vtkMultiProcessController* controller);
-  /** Step 4: the composited layers blended over the bound framebuffer (premultiplied). */
-  void BlendOver(vtkOpenGLRenderWindow* renWin, const std::vector<float>& over);
+  bool CompositeLayers(vtkRenderer* ren, VolumeLayer& own, vtkMultiProcessController* controller);
+  /** Step 4: Over blended over the bound framebuffer (premultiplied). */
+  void BlendOver(vtkOpenGLRenderWindow* renWin);
 
   int Viewport[4] = { 0, 0, 0, 0 }; // the renderer's, this frame (x, y, width, height)
+  // (kept from frame to frame, so that a frame allocates nothing at the same size)
+  vtkStylizeRankCompositor::Part Shared; // process 0's depth as broadcast
+  std::vector<float> Depths;             // that depth over the viewport, rows bottom to top
+  std::vector<unsigned int> Packed;      // the same as 24-bit depth and 8-bit stencil
+  std::vector<float> Pixels;             // this process's layer over the viewport (RGBA)
+  std::vector<float> Over;               // the layers composited, on process 0 (RGBA)
 
   vtkNew<vtkStylizeRankCompositor> Compositor;
   vtkOpenGLFramebufferObject* FrameBuffer = nullptr;
