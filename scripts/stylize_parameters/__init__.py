@@ -30,7 +30,9 @@ Plugin/View/StylizePasses.xml (a proxy per pass, a property per parameter: kind,
 domain, documentation), the blocks of Plugin/View/StylizeView.xml between its
 <!-- generated:exposed:PROXY begin/end --> markers (the view's <ExposedProperties>), and between
 <!-- generated:representation begin/end --> the Stylized Surface representation's per-actor
-lighting properties (those of vtkStylizeLightingPass that a SetActor*() helper overrides).
+lighting properties (those of vtkStylizeLightingPass that a SetActor*() helper overrides), and
+between <!-- generated:volume-displays begin/end --> the StylizeVolume property of ParaView's
+representations with a Volume type (XML_VOLUME_DISPLAYS).
 Object-valued parameters are not exposed, nor those in XML_SKIP (set by the view).
 
 Needs the build's python folder on PYTHONPATH (build/python and build/lib are tried when the

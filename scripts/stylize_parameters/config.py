@@ -67,6 +67,15 @@ XML_PROXIES = [
     ("LightingPass", "vtkStylizeLightingPass", "Lighting", "Lighting", "!0"),
 ]
 XML_ALL_STYLES = "1 2 3 4"
+# ParaView's representations with a Volume type: each gets the display property StylizeVolume
+# (its volume's vtkStylizeStylePass::STYLIZE_VOLUME, set by the view), shown with Volume only.
+XML_VOLUME_DISPLAYS = ("UniformGridRepresentation", "UnstructuredGridRepresentation",
+                       "StructuredGridRepresentation")
+XML_VOLUME_DISPLAY_TEXT = (
+    "Draw this volume in the Stylize view's style (with the style's StylizeVolumes on): off "
+    "leaves it to ParaView, drawn as ParaView draws it over the stylized picture "
+    "(vtkStylizeStylePass::STYLIZE_VOLUME 0 on its volume, set by the view on every rank). "
+    "Default on.")
 # Where a setting's 0 stands for a choice made for the user, the panel's label says so (a bare 0
 # in the field reads as zero): (class, parameter) -> what 0 means, as the label's suffix shows it.
 # The generator warns of a setting whose default is 0 and whose comment explains a 0 ("0:",

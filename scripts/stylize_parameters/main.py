@@ -12,6 +12,7 @@ from .config import (CLASSES, CLI_TABLE, DESCRIPTION, DIFF_LINES, OUTPUT, README
 from .markdown import BLOCK, render_parameters, render_readme
 from .model import describe_class, import_vtkstylize
 from .paraview_xml import (render_xml_filters, render_xml_passes, render_xml_representation,
+                          render_xml_volume_displays,
                            render_xml_view, xml_exposed)
 
 
@@ -51,6 +52,7 @@ def view_outputs(by_class, errors):
     with open(os.path.join(ROOT, XML_VIEW)) as f:
         xml_view = render_xml_view(f.read(), exposed, errors)
     xml_view = render_xml_representation(xml_view, by_class["vtkStylizeLightingPass"], errors)
+    xml_view = render_xml_volume_displays(xml_view, errors)
     return [(XML_PASSES, xml_passes), (XML_VIEW, xml_view)]
 
 

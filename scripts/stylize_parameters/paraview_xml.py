@@ -1,7 +1,7 @@
 """The ParaView plugin's server-manager XML: Plugin/View/StylizePasses.xml (a proxy per pass),
 Plugin/View/StylizeFilters.xml (the Filters module's filters and sources), and the generated
 blocks of Plugin/View/StylizeView.xml (the view's exposed properties, the Stylized Surface
-representation's per-actor lighting properties)."""
+representation's per-actor lighting properties, the volume displays' StylizeVolume)."""
 import math
 import re
 import textwrap
@@ -9,8 +9,8 @@ from xml.sax.saxutils import escape
 
 from .config import (XML_ADVANCED_NAME, XML_ADVANCED_RULE, XML_ADVANCED_TEXT, XML_FILTER_PROXIES,
                      XML_GROUP, XML_INT_TYPES, XML_MODEL_SOURCES, XML_PROXIES, XML_SKIP,
-                     XML_SLIDER_RATIO, XML_SOURCE_PROXIES, XML_SOURCES, XML_VIEW, XML_WIDTH,
-                     XML_ZERO_MEANS)
+                     XML_SLIDER_RATIO, XML_SOURCE_PROXIES, XML_SOURCES, XML_VIEW,
+                     XML_VOLUME_DISPLAY_TEXT, XML_VOLUME_DISPLAYS, XML_WIDTH, XML_ZERO_MEANS)
 from .values import enum_symbol, fmt_num, plain
 
 
@@ -444,3 +444,33 @@ def render_xml_representation(view_xml, lighting, errors):
     body = "".join(line + "\n" for p in lighting.params if p.per_actor
                    for line in xml_property(lighting, p, errors))
     return view_xml[:m.start(2)] + body + view_xml[m.end(2):]
+
+
+XML_VOLUME_BLOCK = re.compile(
+    r"([ \t]*<!-- generated:volume-displays begin -->\n)(.*?)"
+    r"([ \t]*<!-- generated:volume-displays end -->)", re.S)
+
+
+def render_xml_volume_displays(view_xml, errors):
+    """StylizeVolume on each of ParaView's representations with a Volume type (one extension
+    each, the same property), shown with the Volume representation only."""
+    m = XML_VOLUME_BLOCK.search(view_xml)
+    if not m:
+        errors.append("%s: no <!-- generated:volume-displays begin/end --> markers" % XML_VIEW)
+        return view_xml
+    body = []
+    for name in XML_VOLUME_DISPLAYS:
+        body += ['    <Extension name="%s">' % name,
+                 '      <IntVectorProperty name="StylizeVolume" number_of_elements="1" '
+                 'default_values="1">',
+                 '        <BooleanDomain name="bool" />',
+                 '        <Documentation>']
+        body += wrap_xml_text(xml_text(XML_VOLUME_DISPLAY_TEXT), " " * 10).split("\n")
+        body += ['        </Documentation>',
+                 '        <Hints>',
+                 '          <PropertyWidgetDecorator type="GenericDecorator" mode="visibility"',
+                 '              property="Representation" value="Volume" />',
+                 '        </Hints>',
+                 '      </IntVectorProperty>',
+                 '    </Extension>']
+    return view_xml[:m.start(2)] + "".join(line + "\n" for line in body) + view_xml[m.end(2):]
